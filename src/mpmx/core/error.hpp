@@ -1,0 +1,20 @@
+#pragma once
+// Errors mpmx reports to a user: what, where, why. Thrown, caught once in the CLI.
+#include <stdexcept>
+#include <string>
+
+namespace mpmx {
+
+// Bad input: a deck key, a potential file line, a command-line value.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The simulation itself went wrong (NaN, particle left the grid): the run stops.
+class RunError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace mpmx

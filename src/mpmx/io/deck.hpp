@@ -1,0 +1,107 @@
+#pragma once
+// A TOML deck read into typed values with every error named: the key, the value, the
+// reason, the line. Keys a reader never asked for are reported as unknown (with the
+// closest known key as a hint) when the reader calls Deck::finish().
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace mpmx::io {
+
+class Deck;
+
+// A view of one table of the deck ("" is the root). Getters record the key as known;
+// a wrong type or an out-of-range value is recorded as an error, and a usable
+// fallback is returned so that reading goes on and every error is reported at once.
+class Section {
+ public:
+  Section(Deck* deck, const toml::table* table, std::string path);
+
+  const std::string& path() const { return path_; }
+  bool present() const { return table_ != nullptr; }
+  bool has(std::string_view key) const;
+
+  double number(std::string_view key);                     // required
+  double number(std::string_view key, double fallback);    // optional
+  std::int64_t integer(std::string_view key);
+  std::int64_t integer(std::string_view key, std::int64_t fallback);
+  bool boolean(std::string_view key, bool fallback);
+  std::string string(std::string_view key);
+  std::string string(std::string_view key, std::string fallback);
+  // A string that must be one of `allowed` (the error lists them).
+  std::string choice(std::string_view key, const std::vector<std::string>& allowed);
+  std::string choice(std::string_view key, const std::vector<std::string>& allowed,
+                     std::string fallback);
+  std::vector<double> numbers(std::string_view key);                      // required
+  std::vector<double> numbers(std::string_view key, std::vector<double> fallback);
+  std::vector<std::string> strings(std::string_view key, std::vector<std::string> fallback);
+
+  Section table(std::string_view key);            // required sub-table
+  Section optional_table(std::string_view key);   // absent -> present() == false
+  // Array of tables ([[key]]): one Section each.
+  std::vector<Section> tables(std::string_view key);
+
+  // Range checks: record "key = value: reason" unless ok.
+  void check(bool ok, std::string_view key, std::string_view reason);
+  void positive(std::string_view key, double value);
+  void non_negative(std::string_view key, double value);
+  // An error not tied to one key of this table.
+  void error(std::string_view reason);
+
+  std::string key_path(std::string_view key) const;
+  std::string value_text(std::string_view key) const;
+
+ private:
+  const toml::node* get(std::string_view key);
+  void type_error(std::string_view key, const toml::node& node, std::string_view want);
+  void missing(std::string_view key, std::string_view want);
+
+  Deck* deck_;
+  const toml::table* table_;
+  std::string path_;
+};
+
+class Deck {
+ public:
+  // Parses the file; a syntax error throws InputError naming file, line and column.
+  static Deck from_file(const std::string& file);
+  static Deck from_string(std::string_view text, std::string name = "deck");
+
+  Deck(Deck&&) noexcept;
+  Deck& operator=(Deck&&) noexcept;
+  ~Deck();
+
+  Section root();
+  const toml::table& table() const { return *table_; }
+  const std::string& name() const { return name_; }
+
+  // Adds "unknown key" errors for keys nobody read, then throws InputError listing
+  // every error (one per line) if there is any.
+  void finish();
+
+  void add_error(const toml::node* where, std::string message);
+  void mark_known(const std::string& path);
+  const std::vector<std::string>& errors() const { return errors_; }
+
+ private:
+  Deck() = default;
+  void collect_unknown(const toml::table& t, const std::string& prefix);
+
+  std::unique_ptr<toml::table> table_;
+  std::string name_;
+  std::set<std::string> known_;
+  std::vector<std::string> errors_;
+};
+
+// Text of a TOML value as a user wrote it, for messages.
+std::string describe(const toml::node& node);
+
+}  // namespace mpmx::io

@@ -1,0 +1,38 @@
+#pragma once
+// run.json: one JSON document per run (the deck echoed, version, timings, conservation,
+// error norms), built as a TOML table and written atomically so a reader never sees
+// half a file.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace mpmx::io {
+
+class RunRecord {
+ public:
+  // Sets a value at a dotted path ("errors.velocity.l1"), creating tables on the way.
+  void set(std::string_view dotted, double value);
+  void set(std::string_view dotted, std::int64_t value);
+  void set(std::string_view dotted, int value) { set(dotted, static_cast<std::int64_t>(value)); }
+  void set(std::string_view dotted, bool value);
+  void set(std::string_view dotted, std::string value);
+  void set(std::string_view dotted, const char* value) { set(dotted, std::string(value)); }
+  void set(std::string_view dotted, const std::vector<double>& values);
+  void set(std::string_view dotted, toml::table table);
+
+  const toml::table& table() const { return root_; }
+  std::string json() const;
+  // Writes DIR/run.json via a temporary file and rename.
+  void write(const std::string& path) const;
+
+ private:
+  toml::table& parent_of(std::string_view dotted, std::string& leaf);
+  toml::table root_;
+};
+
+// Writes `text` to `path` atomically (temporary file in the same folder, then rename).
+void write_file_atomic(const std::string& path, std::string_view text);
+
+}  // namespace mpmx::io
