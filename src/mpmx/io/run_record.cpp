@@ -59,6 +59,13 @@ void RunRecord::set(std::string_view dotted, toml::table table) {
   parent_of(dotted, leaf).insert_or_assign(leaf, std::move(table));
 }
 
+void RunRecord::append(std::string_view dotted, toml::table table) {
+  std::string leaf;
+  toml::table& parent = parent_of(dotted, leaf);
+  if (!parent.contains(leaf) || !parent[leaf].is_array()) parent.insert_or_assign(leaf, toml::array{});
+  parent[leaf].as_array()->push_back(std::move(table));
+}
+
 std::string RunRecord::json() const {
   std::ostringstream os;
   os << toml::json_formatter{root_};

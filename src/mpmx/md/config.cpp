@@ -1,0 +1,117 @@
+#include "mpmx/md/config.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+
+namespace mpmx::md {
+
+MdConfig read_md_config(io::Deck& deck) {
+  MdConfig c;
+  c.deck_file = deck.name();
+  const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
+  auto root = deck.root();
+
+  auto pot = root.table("potential");
+  c.potential.style = pot.choice("style", {"eam", "lj", "sutton_chen"}, "eam");
+  if (c.potential.style == "eam") {
+    const std::string file = pot.string("file");
+    if (!file.empty()) {
+      try {
+        c.potential.file = resolve_potential_file(file, deck_dir);
+      } catch (const InputError& e) {
+        pot.check(false, "file", e.what());
+      }
+    }
+    c.potential.elements = pot.strings("elements", {});
+  } else {
+    c.potential.epsilon = pot.number("epsilon");
+    pot.positive("epsilon", c.potential.epsilon);
+    c.potential.cutoff = pot.number("cutoff");
+    pot.positive("cutoff", c.potential.cutoff);
+    c.potential.mass = pot.number("mass");
+    pot.positive("mass", c.potential.mass);
+    if (c.potential.style == "lj") {
+      c.potential.sigma = pot.number("sigma");
+      pot.positive("sigma", c.potential.sigma);
+      c.potential.shift = pot.boolean("shift", false);
+    } else {
+      c.potential.a = pot.number("a");
+      pot.positive("a", c.potential.a);
+      c.potential.c = pot.number("c");
+      pot.positive("c", c.potential.c);
+      c.potential.n = static_cast<int>(pot.integer("n"));
+      pot.check(c.potential.n > 0, "n", "must be a positive integer");
+      c.potential.m = static_cast<int>(pot.integer("m"));
+      pot.check(c.potential.m > 0, "m", "must be a positive integer");
+    }
+  }
+
+  auto lat = root.table("lattice");
+  lat.choice("type", {"fcc"}, "fcc");
+  c.lattice_constant = lat.number("constant");
+  lat.positive("constant", c.lattice_constant);
+  const auto cells = lat.numbers("cells");
+  if (cells.size() == 3 || cells.size() == 1) {
+    for (int d = 0; d < 3; ++d) {
+      const double v = cells[cells.size() == 3 ? d : 0];
+      lat.check(v >= 1 && v == static_cast<int>(v) && v <= 1000, "cells",
+                "each entry must be a whole number of unit cells from 1 to 1000");
+      c.cells[d] = static_cast<int>(v);
+    }
+  } else {
+    lat.check(false, "cells", "expected [nx, ny, nz] or [n]");
+  }
+  c.strain_x = lat.number("strain_x", 0.0);
+  lat.check(c.strain_x > -0.5 && c.strain_x < 0.5, "strain_x", "must lie in (-0.5, 0.5)");
+
+  auto th = root.optional_table("thermal");
+  c.temperature = th.number("temperature", 0.0);
+  th.non_negative("temperature", c.temperature);
+  const auto seed = th.integer("seed", 1);
+  th.check(seed >= 0, "seed", "must be >= 0");
+  c.seed = static_cast<std::uint64_t>(seed);
+
+  auto run = root.table("run");
+  c.dt = run.number("dt");
+  run.positive("dt", c.dt);
+  run.check(c.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
+  c.steps = run.integer("steps");
+  run.check(c.steps >= 0, "steps", "must be >= 0");
+  c.thermo = run.integer("thermo", 100);
+  run.check(c.thermo >= 1, "thermo", "must be >= 1");
+  run.choice("ensemble", {"nve"}, "nve");
+  c.options.skin = run.number("skin", 1.0);
+  run.non_negative("skin", c.options.skin);
+  c.options.mixed_precision = run.choice("precision", {"double", "mixed"}, "double") == "mixed";
+  c.options.deformation =
+      run.choice("deformation", {"boundary", "affine"}, "boundary") == "affine" ? Deformation::affine
+                                                                                : Deformation::boundary;
+  const bool has_rate = run.has("strain_rate_per_s");
+  const bool has_grad = run.has("velocity_gradient_per_ps");
+  run.check(!(has_rate && has_grad), "strain_rate_per_s",
+            "give either strain_rate_per_s or velocity_gradient_per_ps, not both");
+  if (has_rate) c.velocity_gradient[0] = run.number("strain_rate_per_s") * 1e-12;
+  if (has_grad) {
+    const auto g = run.numbers("velocity_gradient_per_ps");
+    if (g.size() == 9) std::copy(g.begin(), g.end(), c.velocity_gradient.begin());
+    else run.check(false, "velocity_gradient_per_ps", "expected 9 numbers (row-major dv_i/dx_j)");
+  }
+  c.streaming = run.boolean("streaming_start", false);
+
+  auto scan = root.optional_table("scan");
+  if (scan.present()) {
+    c.scan_from = scan.number("lattice_from");
+    scan.positive("lattice_from", c.scan_from);
+    c.scan_to = scan.number("lattice_to");
+    scan.check(c.scan_to > c.scan_from, "lattice_to", "must exceed lattice_from");
+    c.scan_points = static_cast<int>(scan.integer("points", 41));
+    scan.check(c.scan_points >= 3 && c.scan_points <= 100000, "points", "must be from 3 to 100000");
+  }
+  deck.finish();
+  return c;
+}
+
+}  // namespace mpmx::md

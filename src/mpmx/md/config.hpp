@@ -1,0 +1,38 @@
+#pragma once
+// The MD-only deck (`mpmx md DECK`): potential, lattice, temperature, integration,
+// deformation and output, read with every error named (key, value, reason).
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mpmx/io/deck.hpp"
+#include "mpmx/md/box.hpp"
+#include "mpmx/md/potential/potential.hpp"
+#include "mpmx/md/system.hpp"
+
+namespace mpmx::md {
+
+struct MdConfig {
+  PotentialSpec potential;
+  std::array<int, 3> cells{5, 5, 5};
+  double lattice_constant = 3.615;  // Angstrom
+  double strain_x = 0.0;            // initial engineering strain (section 6.2)
+  double temperature = 0.0;         // K, target; atoms start at twice it (section 6.2)
+  std::uint64_t seed = 1;
+  double dt = 0.001;                // ps
+  std::int64_t steps = 0;
+  std::int64_t thermo = 100;        // steps between thermo rows
+  Mat3 velocity_gradient{};         // 1/ps
+  bool streaming = false;           // start with the streaming velocity of the gradient
+  SystemOptions options;
+  // Optional lattice-constant scan (M1): energy per atom at `scan_points` values.
+  double scan_from = 0, scan_to = 0;
+  int scan_points = 0;
+  std::string deck_file;
+};
+
+// Reads and validates; throws InputError listing every problem (Deck::finish()).
+MdConfig read_md_config(io::Deck& deck);
+
+}  // namespace mpmx::md

@@ -1,0 +1,26 @@
+#pragma once
+// What a potential writes: forces on locals and ghosts (folded into the owners by the
+// caller), the total energy and the pair virial W_ab = sum over pairs of
+// r_ab,a r_ab,b f_ab/r (eq. 2.25 first line, potential part, times the volume).
+#include <array>
+#include <vector>
+
+namespace mpmx::md {
+
+using Sym6 = std::array<double, 6>;  // xx, yy, zz, xy, xz, yz
+
+struct ForceWork {
+  std::vector<double> fx, fy, fz;    // size nall
+  std::vector<double> rho, fp;       // EAM density and F'(rho), size nall
+  bool per_atom = false;             // also fill energy_atom and virial_atom
+  std::vector<double> energy_atom;   // size nall
+  std::vector<double> virial_atom;   // 6 * nall, half of each pair to each atom
+  void reset(int nall);
+};
+
+struct ForceSums {
+  double energy = 0;  // eV
+  Sym6 virial{};      // eV
+};
+
+}  // namespace mpmx::md

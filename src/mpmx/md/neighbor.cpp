@@ -1,0 +1,172 @@
+#include "mpmx/md/neighbor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+
+namespace mpmx::md {
+
+namespace {
+// Lexicographic sign of an image shift: picks one of (i, image n of j) and
+// (j, image -n of i) when i == j.
+bool positive(int a, int b, int c) { return a > 0 || (a == 0 && (b > 0 || (b == 0 && c > 0))); }
+}  // namespace
+
+void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) {
+  cutoff = rc;
+  skin = sk;
+  const double rs = rc + sk;
+  nlocal = static_cast<int>(atoms.size());
+  x.assign(atoms.x.begin(), atoms.x.end());
+  y.assign(atoms.y.begin(), atoms.y.end());
+  z.assign(atoms.z.begin(), atoms.z.end());
+  type.assign(atoms.type.begin(), atoms.type.end());
+  owner.resize(nlocal);
+  for (int i = 0; i < nlocal; ++i) owner[i] = i;
+  n1.assign(nlocal, 0);
+  n2.assign(nlocal, 0);
+  n3.assign(nlocal, 0);
+  max_n1_ = max_n2_ = max_n3_ = 0;
+
+  // Ghosts: every image within rs of the fundamental box (eqs. 5.10-5.17 with the
+  // sliding offsets of the upper-triangular box).
+  for (int i = 0; i < nlocal; ++i) {
+    const double xi = atoms.x[i], yi = atoms.y[i], zi = atoms.z[i];
+    const int c0 = static_cast<int>(std::ceil((-rs - zi) / box.lz));
+    const int c1 = static_cast<int>(std::floor((box.lz + rs - zi) / box.lz));
+    for (int c = c0; c <= c1; ++c) {
+      const double zc = zi + c * box.lz;
+      if (zc < -rs || zc >= box.lz + rs) continue;
+      const double yc0 = yi + c * box.yz;
+      const int b0 = static_cast<int>(std::ceil((-rs - yc0) / box.ly));
+      const int b1 = static_cast<int>(std::floor((box.ly + rs - yc0) / box.ly));
+      for (int b = b0; b <= b1; ++b) {
+        const double yc = yc0 + b * box.ly;
+        if (yc < -rs || yc >= box.ly + rs) continue;
+        const double xc0 = xi + c * box.xz + b * box.xy;
+        const int a0 = static_cast<int>(std::ceil((-rs - xc0) / box.lx));
+        const int a1 = static_cast<int>(std::floor((box.lx + rs - xc0) / box.lx));
+        for (int a = a0; a <= a1; ++a) {
+          if (a == 0 && b == 0 && c == 0) continue;
+          const double xc = xc0 + a * box.lx;
+          if (xc < -rs || xc >= box.lx + rs) continue;
+          if (std::abs(a) > 127 || std::abs(b) > 127 || std::abs(c) > 127)
+            throw RunError(fmt::format("box {} x {} x {} is too small for cutoff+skin {}", box.lx,
+                                       box.ly, box.lz, rs));
+          x.push_back(xc);
+          y.push_back(yc);
+          z.push_back(zc);
+          type.push_back(atoms.type[i]);
+          owner.push_back(i);
+          n1.push_back(static_cast<std::int8_t>(a));
+          n2.push_back(static_cast<std::int8_t>(b));
+          n3.push_back(static_cast<std::int8_t>(c));
+          max_n1_ = std::max(max_n1_, std::abs(a));
+          max_n2_ = std::max(max_n2_, std::abs(b));
+          max_n3_ = std::max(max_n3_, std::abs(c));
+        }
+      }
+    }
+  }
+  nall = static_cast<int>(x.size());
+
+  // Bins of edge >= rs over [-rs, L+rs) (no periodic wrap: ghosts are explicit).
+  const double ext[3] = {box.lx + 2 * rs, box.ly + 2 * rs, box.lz + 2 * rs};
+  int nb[3];
+  double inv[3];
+  for (int d = 0; d < 3; ++d) {
+    nb[d] = std::max(1, static_cast<int>(ext[d] / rs));
+    nb[d] = std::min(nb[d], 1024);
+    inv[d] = nb[d] / ext[d];
+  }
+  auto bin_of = [&](int k, int d) {
+    const double p = (d == 0 ? x[k] : d == 1 ? y[k] : z[k]) + rs;
+    return std::clamp(static_cast<int>(p * inv[d]), 0, nb[d] - 1);
+  };
+  const int nbins = nb[0] * nb[1] * nb[2];
+  bin_start_.assign(nbins + 1, 0);
+  std::vector<int> bin(nall);
+  for (int k = 0; k < nall; ++k) {
+    bin[k] = (bin_of(k, 2) * nb[1] + bin_of(k, 1)) * nb[0] + bin_of(k, 0);
+    ++bin_start_[bin[k] + 1];
+  }
+  for (int b = 0; b < nbins; ++b) bin_start_[b + 1] += bin_start_[b];
+  bin_atoms_.resize(nall);
+  {
+    std::vector<int> fill(bin_start_.begin(), bin_start_.end() - 1);
+    for (int k = 0; k < nall; ++k) bin_atoms_[fill[bin[k]]++] = k;
+  }
+
+  // Half list: keep (i, k) iff owner(k) > i, or owner(k) == i and k's image shift is
+  // positive, so each physical pair appears exactly once.
+  const double rs2 = rs * rs;
+  first.assign(nlocal + 1, 0);
+  list.clear();
+  list.reserve(static_cast<std::size_t>(nlocal) * 48);
+  for (int i = 0; i < nlocal; ++i) {
+    const int bx = bin_of(i, 0), by = bin_of(i, 1), bz = bin_of(i, 2);
+    for (int cz = std::max(0, bz - 1); cz <= std::min(nb[2] - 1, bz + 1); ++cz)
+      for (int cy = std::max(0, by - 1); cy <= std::min(nb[1] - 1, by + 1); ++cy)
+        for (int cx = std::max(0, bx - 1); cx <= std::min(nb[0] - 1, bx + 1); ++cx) {
+          const int b = (cz * nb[1] + cy) * nb[0] + cx;
+          for (int s = bin_start_[b]; s < bin_start_[b + 1]; ++s) {
+            const int k = bin_atoms_[s];
+            const int o = owner[k];
+            if (o < i || (o == i && !positive(n1[k], n2[k], n3[k]))) continue;
+            const double dx = x[i] - x[k], dy = y[i] - y[k], dz = z[i] - z[k];
+            if (dx * dx + dy * dy + dz * dz < rs2) list.push_back(k);
+          }
+        }
+    // Ascending entry order: locals first, then ghosts; deterministic.
+    std::sort(list.begin() + first[i], list.end());
+    first[i + 1] = static_cast<int>(list.size());
+  }
+
+  x0_.assign(atoms.x.begin(), atoms.x.end());
+  y0_.assign(atoms.y.begin(), atoms.y.end());
+  z0_.assign(atoms.z.begin(), atoms.z.end());
+  box0_ = box;
+  built_ = true;
+  ++builds;
+}
+
+void Neighbors::update_positions(const Atoms& atoms, const Box& box) {
+  std::copy(atoms.x.begin(), atoms.x.end(), x.begin());
+  std::copy(atoms.y.begin(), atoms.y.end(), y.begin());
+  std::copy(atoms.z.begin(), atoms.z.end(), z.begin());
+  for (int k = nlocal; k < nall; ++k) {
+    const int o = owner[k];
+    const int a = n1[k], b = n2[k], c = n3[k];
+    x[k] = atoms.x[o] + (a * box.lx + b * box.xy + c * box.xz);
+    y[k] = atoms.y[o] + (b * box.ly + c * box.yz);
+    z[k] = atoms.z[o] + c * box.lz;
+  }
+}
+
+bool Neighbors::needs_rebuild(const Atoms& atoms, const Box& box) const {
+  if (!built_ || static_cast<int>(atoms.size()) != nlocal) return true;
+  double d2max = 0;
+  for (int i = 0; i < nlocal; ++i) {
+    const double dx = atoms.x[i] - x0_[i], dy = atoms.y[i] - y0_[i], dz = atoms.z[i] - z0_[i];
+    d2max = std::max(d2max, dx * dx + dy * dy + dz * dz);
+  }
+  // Images also move with the box: |n1 da + n2 db + n3 dc| bounded term by term.
+  const double da = std::abs(box.lx - box0_.lx);
+  const double db = std::hypot(box.xy - box0_.xy, box.ly - box0_.ly);
+  const double dc = std::hypot(box.xz - box0_.xz, box.yz - box0_.yz, box.lz - box0_.lz);
+  const double image = max_n1_ * da + max_n2_ * db + max_n3_ * dc;
+  return std::sqrt(d2max) + image > 0.5 * skin;
+}
+
+void Neighbors::fold(std::vector<double>& a) const {
+  for (int k = nlocal; k < nall; ++k) a[owner[k]] += a[k];
+}
+
+void Neighbors::forward(std::vector<double>& a) const {
+  for (int k = nlocal; k < nall; ++k) a[k] = a[owner[k]];
+}
+
+}  // namespace mpmx::md

@@ -1,0 +1,49 @@
+#pragma once
+// Neighbours: ghost images of the atoms near the faces of the fundamental box (with the
+// sliding-image shifts of figs. 5.2-5.3), cell binning over the box plus ghosts, and a
+// half Verlet list with a skin (each pair once, Newton's third law, eq. 5.24). Rebuilt
+// when an atom or an image may have moved half the skin; correct for any box whose
+// edges exceed the cutoff plus skin... and smaller ones too, since an atom's own images
+// are ghosts like any other.
+#include <cstdint>
+#include <vector>
+
+#include "mpmx/md/atoms.hpp"
+#include "mpmx/md/box.hpp"
+
+namespace mpmx::md {
+
+class Neighbors {
+ public:
+  // Atoms must lie in the fundamental box (System wraps them first).
+  void build(const Atoms& atoms, const Box& box, double cutoff, double skin);
+  // Positions of locals and ghosts for the current atoms and box (every step).
+  void update_positions(const Atoms& atoms, const Box& box);
+  // True if some pair may have come within the cutoff unseen.
+  bool needs_rebuild(const Atoms& atoms, const Box& box) const;
+  bool built() const { return built_; }
+
+  // Sums ghost entries of a per-atom array (size nall) into their owners.
+  void fold(std::vector<double>& a) const;
+  // Copies owners' values to their ghosts.
+  void forward(std::vector<double>& a) const;
+
+  int nlocal = 0, nall = 0;
+  std::vector<double> x, y, z;  // locals then ghosts
+  std::vector<int> type;        // locals then ghosts
+  std::vector<int> owner;       // local index of each entry
+  std::vector<std::int8_t> n1, n2, n3;  // image indices of each entry (0 for locals)
+  std::vector<int> first;       // nlocal+1 offsets into `list`
+  std::vector<int> list;        // half list: neighbour entries of each local atom
+  double cutoff = 0, skin = 0;
+  std::int64_t builds = 0;
+
+ private:
+  bool built_ = false;
+  std::vector<double> x0_, y0_, z0_;  // local positions at build
+  Box box0_;                          // box at build
+  int max_n1_ = 0, max_n2_ = 0, max_n3_ = 0;
+  std::vector<int> bin_start_, bin_atoms_;
+};
+
+}  // namespace mpmx::md

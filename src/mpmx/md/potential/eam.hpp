@@ -1,0 +1,54 @@
+#pragma once
+// Tabulated EAM as LAMMPS evaluates it (pair_eam.cpp): every table turned into cubic
+// pieces with 7 coefficients per knot (value, and derivative coefficients scaled by
+// the grid spacing), looked up with p = r/dr + 1, m = int(p), clamped at the table
+// ends; F(rho) is continued linearly beyond the last rho knot.
+#include <string>
+#include <vector>
+
+#include "mpmx/md/forces.hpp"
+#include "mpmx/md/neighbor.hpp"
+#include "mpmx/md/potential/eam_file.hpp"
+
+namespace mpmx::md {
+
+class Eam {
+ public:
+  // `type_elements[t]` names the file element of atom type t (empty: all file elements
+  // in file order; funcfl files have one).
+  Eam(const EamTables& tables, const std::vector<std::string>& type_elements);
+
+  double cutoff() const { return cut_; }
+  int types() const { return static_cast<int>(map_.size()); }
+  const std::vector<double>& masses() const { return masses_; }
+  const std::vector<std::string>& type_names() const { return names_; }
+  const std::string& file() const { return file_; }
+
+  ForceSums compute(const Neighbors& nb, ForceWork& w) const;        // double
+  ForceSums compute_mixed(const Neighbors& nb, ForceWork& w) const;  // float pairs
+
+  // Energy of an isolated pair/density evaluation, for tests.
+  double pair_energy(double r, int ti, int tj) const;
+
+  template <class Real>
+  struct Tables;  // the kernel's view (defined in eam.cpp)
+
+ private:
+  std::string file_;
+  std::vector<int> map_;  // type -> file element
+  std::vector<double> masses_;
+  std::vector<std::string> names_;
+  int nrho_ = 0, nr_ = 0, ntypes_ = 0;
+  double rdr_ = 0, rdrho_ = 0, rhomax_ = 0, cut_ = 0;
+  // Splines flattened: [function][knot 0..n][7].
+  std::vector<double> frho_, rhor_, z2r_;
+  std::vector<float> rhor_f_, z2r_f_;
+  // Per type pair (ti * ntypes + tj): spline offsets (in doubles) of the density that
+  // j gives i, and of z2r; per type: F offset.
+  std::vector<int> rho_off_, z2r_off_, frho_off_;
+};
+
+// LAMMPS's interpolate(): 7 coefficients per knot for values f[1..n] on spacing delta.
+void eam_spline(int n, double delta, const std::vector<double>& f, double* out);
+
+}  // namespace mpmx::md

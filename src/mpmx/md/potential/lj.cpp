@@ -1,0 +1,61 @@
+#include "mpmx/md/potential/lj.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+
+namespace mpmx::md {
+
+LennardJones::LennardJones(double epsilon, double sigma, double cutoff, double mass, bool shift)
+    : eps_(epsilon), sigma_(sigma), cut_(cutoff), mass_(mass) {
+  if (!(epsilon > 0 && sigma > 0 && cutoff > 0 && mass > 0))
+    throw InputError(fmt::format("lennard-jones: epsilon {}, sigma {}, cutoff {}, mass {}: all "
+                                 "must be positive",
+                                 epsilon, sigma, cutoff, mass));
+  if (shift) shift_ = phi(cutoff);
+}
+
+double LennardJones::phi(double r) const {
+  const double s6 = std::pow(sigma_ / r, 6);
+  return 4 * eps_ * (s6 * s6 - s6) - shift_;
+}
+
+double LennardJones::dphi(double r) const {
+  const double s6 = std::pow(sigma_ / r, 6);
+  return -24 * eps_ * (2 * s6 * s6 - s6) / r;
+}
+
+ForceSums LennardJones::compute(const Neighbors& nb, ForceWork& w) const {
+  ForceSums s;
+  const double cutsq = cut_ * cut_, s2 = sigma_ * sigma_;
+  for (int i = 0; i < nb.nlocal; ++i) {
+    for (int q = nb.first[i]; q < nb.first[i + 1]; ++q) {
+      const int k = nb.list[q];
+      const double dx = nb.x[i] - nb.x[k], dy = nb.y[i] - nb.y[k], dz = nb.z[i] - nb.z[k];
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      if (rsq >= cutsq) continue;
+      const double sr2 = s2 / rsq, sr6 = sr2 * sr2 * sr2;
+      const double fpair = 24 * eps_ * (2 * sr6 * sr6 - sr6) / rsq;  // -phi'(r)/r
+      const double e = 4 * eps_ * (sr6 * sr6 - sr6) - shift_;
+      const double v6[6] = {dx * dx * fpair, dy * dy * fpair, dz * dz * fpair,
+                            dx * dy * fpair, dx * dz * fpair, dy * dz * fpair};
+      w.fx[i] += dx * fpair, w.fy[i] += dy * fpair, w.fz[i] += dz * fpair;
+      w.fx[k] -= dx * fpair, w.fy[k] -= dy * fpair, w.fz[k] -= dz * fpair;
+      s.energy += e;
+      for (int c = 0; c < 6; ++c) s.virial[c] += v6[c];
+      if (w.per_atom) {
+        w.energy_atom[i] += 0.5 * e;
+        w.energy_atom[k] += 0.5 * e;
+        for (int c = 0; c < 6; ++c) {
+          w.virial_atom[6 * i + c] += 0.5 * v6[c];
+          w.virial_atom[6 * k + c] += 0.5 * v6[c];
+        }
+      }
+    }
+  }
+  return s;
+}
+
+}  // namespace mpmx::md

@@ -1,0 +1,41 @@
+#include "mpmx/md/potential/sutton_chen.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/md/potential/eam_kernel.hpp"
+
+namespace mpmx::md {
+
+SuttonChen::SuttonChen(double epsilon, double a, double c, int n, int m, double cutoff, double mass)
+    : eps_(epsilon), a_(a), c_(c), n_(n), m_(m), cut_(cutoff), mass_(mass) {
+  if (!(epsilon > 0 && a > 0 && c > 0 && n > 0 && m > 0 && cutoff > 0 && mass > 0))
+    throw InputError(fmt::format("sutton-chen: epsilon {}, a {}, c {}, n {}, m {}, cutoff {}, "
+                                 "mass {}: all must be positive",
+                                 epsilon, a, c, n, m, cutoff, mass));
+}
+
+void SuttonChen::density(double r, int, int, double& at_i, double& at_j) const {
+  at_i = at_j = std::pow(a_ / r, m_);
+}
+
+void SuttonChen::embed(double rho, int, double& F, double& Fp) const {
+  const double s = std::sqrt(rho);
+  F = -eps_ * c_ * s;
+  Fp = s > 0 ? -0.5 * eps_ * c_ / s : 0.0;
+}
+
+void SuttonChen::pair(double r, int, int, double fpi, double fpj, double& phi, double& dedr) const {
+  const double an = std::pow(a_ / r, n_), am = std::pow(a_ / r, m_);
+  phi = eps_ * an;
+  const double dphi = -n_ * phi / r, drho = -m_ * am / r;
+  dedr = (fpi + fpj) * drho + dphi;
+}
+
+ForceSums SuttonChen::compute(const Neighbors& nb, ForceWork& w) const {
+  return eam_compute<double>(*this, nb, w);
+}
+
+}  // namespace mpmx::md

@@ -1,0 +1,75 @@
+#include "mpmx/md/stress.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mpmx/core/units.hpp"
+
+namespace mpmx::md {
+
+namespace {
+
+// Sums per group: mass, momentum, m v v, virial; then the stress of each group.
+struct Accum {
+  double m = 0, p[3] = {0, 0, 0}, mvv[6] = {0, 0, 0, 0, 0, 0}, w[6] = {0, 0, 0, 0, 0, 0};
+  void add(double mass, double vx, double vy, double vz) {
+    m += mass;
+    p[0] += mass * vx, p[1] += mass * vy, p[2] += mass * vz;
+    mvv[0] += mass * vx * vx, mvv[1] += mass * vy * vy, mvv[2] += mass * vz * vz;
+    mvv[3] += mass * vx * vy, mvv[4] += mass * vx * vz, mvv[5] += mass * vy * vz;
+  }
+  Mat3 stress(double volume) const {
+    // sum m (v - v~)(v - v~) = sum m v v - M v~ v~, v~ = P / M.
+    double k[6];
+    const double v[3] = {m > 0 ? p[0] / m : 0, m > 0 ? p[1] / m : 0, m > 0 ? p[2] / m : 0};
+    const int a[6] = {0, 1, 2, 0, 0, 1}, b[6] = {0, 1, 2, 1, 2, 2};
+    for (int c = 0; c < 6; ++c) k[c] = (mvv[c] - m * v[a[c]] * v[b[c]]) * units::mvv2e;
+    double s[6];
+    for (int c = 0; c < 6; ++c) s[c] = -(k[c] + w[c]) / volume;
+    return {s[0], s[3], s[4], s[3], s[1], s[5], s[4], s[5], s[2]};
+  }
+};
+
+template <class BinOf>
+std::vector<Mat3> binned(const Atoms& atoms, const std::vector<double>& mass,
+                         const std::vector<double>& w, int nbins, double bin_volume, BinOf bin_of) {
+  std::vector<Accum> acc(nbins);
+  for (std::size_t i = 0; i < atoms.size(); ++i) {
+    Accum& a = acc[bin_of(i)];
+    a.add(mass[atoms.type[i]], atoms.vx[i], atoms.vy[i], atoms.vz[i]);
+    for (int c = 0; c < 6; ++c) a.w[c] += w[6 * i + c];
+  }
+  std::vector<Mat3> out;
+  for (const auto& a : acc) out.push_back(a.stress(bin_volume));
+  return out;
+}
+
+int index_in(double u, double length, int n) {
+  const double f = u / length - std::floor(u / length);  // periodic wrap into [0, 1)
+  return std::clamp(static_cast<int>(f * n), 0, n - 1);
+}
+
+}  // namespace
+
+Mat3 box_stress(const Atoms& atoms, const std::vector<double>& mass, const Sym6& virial,
+                double volume) {
+  Accum a;
+  for (std::size_t i = 0; i < atoms.size(); ++i) a.add(mass[atoms.type[i]], atoms.vx[i], atoms.vy[i], atoms.vz[i]);
+  for (int c = 0; c < 6; ++c) a.w[c] = virial[c];
+  return a.stress(volume);
+}
+
+std::vector<Mat3> slab_stress(const Atoms& atoms, const std::vector<double>& mass,
+                              const std::vector<double>& w, const Box& box, int nbins) {
+  return binned(atoms, mass, w, nbins, box.volume() / nbins,
+                [&](std::size_t i) { return index_in(atoms.x[i], box.lx, nbins); });
+}
+
+std::vector<Mat3> column_stress(const Atoms& atoms, const std::vector<double>& mass,
+                                const std::vector<double>& w, const Box& box, int nx, int ny) {
+  return binned(atoms, mass, w, nx * ny, box.volume() / (nx * ny), [&](std::size_t i) {
+    return index_in(atoms.x[i], box.lx, nx) + nx * index_in(atoms.y[i], box.ly, ny);
+  });
+}
+
+}  // namespace mpmx::md

@@ -1,0 +1,28 @@
+#pragma once
+// Stress by eq. 2.25, first line: kinetic part about the mean velocity plus the pair
+// virial, sigma = -(1/V) [ sum m (v - v~)(v - v~) + 1/2 sum_ab r_ab f_ab ].
+// Cauchy sign: tension positive, compression negative (minus LAMMPS's pressure tensor).
+// Results in eV/Angstrom^3 (multiply by units::eV_per_A3_in_GPa for GPa).
+#include <vector>
+
+#include "mpmx/md/atoms.hpp"
+#include "mpmx/md/box.hpp"
+#include "mpmx/md/forces.hpp"
+
+namespace mpmx::md {
+
+// Atoms with on-step velocities (eq. 5.6) and positions in the fundamental box.
+Mat3 box_stress(const Atoms& atoms, const std::vector<double>& type_mass, const Sym6& virial,
+                double volume);
+
+// Stress in nbins slabs of equal width along x (1-D samples); virial_atom holds 6 per
+// atom (half of each pair to each atom). Each slab's kinetic part is about its own mean.
+std::vector<Mat3> slab_stress(const Atoms& atoms, const std::vector<double>& type_mass,
+                              const std::vector<double>& virial_atom, const Box& box, int nbins);
+
+// Stress in nx x ny columns over x and y (2-D samples), index ix + nx * iy.
+std::vector<Mat3> column_stress(const Atoms& atoms, const std::vector<double>& type_mass,
+                                const std::vector<double>& virial_atom, const Box& box, int nx,
+                                int ny);
+
+}  // namespace mpmx::md

@@ -1,0 +1,254 @@
+#include "mpmx/md/system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <istream>
+#include <numeric>
+#include <ostream>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/units.hpp"
+#include "mpmx/md/integrate.hpp"
+#include "mpmx/md/stress.hpp"
+#include "mpmx/md/thermal.hpp"
+
+namespace mpmx::md {
+
+System::System(Atoms atoms, Box box, Potential potential, SystemOptions options)
+    : atoms_(std::move(atoms)), box_(box), pot_(std::move(potential)), opt_(options) {
+  for (int t = 0; t < pot_.types(); ++t) mass_.push_back(pot_.mass(t));
+  for (std::size_t i = 0; i < atoms_.size(); ++i)
+    if (atoms_.type[i] < 0 || atoms_.type[i] >= pot_.types())
+      throw InputError(fmt::format("atom {} has type {}, the potential has {} type(s)", atoms_.id[i],
+                                   atoms_.type[i] + 1, pot_.types()));
+  if (!(opt_.skin >= 0)) throw InputError(fmt::format("skin = {}: must be >= 0", opt_.skin));
+  refresh();
+}
+
+void System::refresh() {
+  rebuild();
+  compute_forces();
+  valid_ = true;
+}
+
+void System::rebuild() {
+  box_.reduce_tilt();
+  wrap(atoms_, box_, g_, opt_.deformation == Deformation::boundary);
+  if (opt_.sort_atoms && atoms_.size() > 1) {
+    // Spatial order (bins of half the cutoff), ties by id: deterministic.
+    const double cell = std::max(0.5 * pot_.cutoff(), 1e-3);
+    const long nx = std::max(1L, static_cast<long>(box_.lx / cell));
+    const long ny = std::max(1L, static_cast<long>(box_.ly / cell));
+    std::vector<long> key(atoms_.size());
+    for (std::size_t i = 0; i < atoms_.size(); ++i) {
+      const long ix = std::min(nx - 1, static_cast<long>(atoms_.x[i] / box_.lx * nx));
+      const long iy = std::min(ny - 1, static_cast<long>(atoms_.y[i] / box_.ly * ny));
+      const long iz = static_cast<long>(atoms_.z[i] / cell);
+      key[i] = (iz * ny + iy) * nx + ix;
+    }
+    std::vector<std::size_t> order(atoms_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return key[a] != key[b] ? key[a] < key[b] : atoms_.id[a] < atoms_.id[b];
+    });
+    bool identity = true;
+    for (std::size_t k = 0; k < order.size(); ++k) identity = identity && order[k] == k;
+    if (!identity) atoms_.permute(order);
+  }
+  nb_.build(atoms_, box_, pot_.cutoff(), opt_.skin);
+}
+
+void System::compute_forces() {
+  work_.per_atom = opt_.per_atom;
+  work_.reset(nb_.nall);
+  sums_ = pot_.compute(nb_, work_, opt_.mixed_precision);
+  nb_.fold(work_.fx);
+  nb_.fold(work_.fy);
+  nb_.fold(work_.fz);
+  const std::size_t n = atoms_.size();
+  std::copy_n(work_.fx.begin(), n, atoms_.fx.begin());
+  std::copy_n(work_.fy.begin(), n, atoms_.fy.begin());
+  std::copy_n(work_.fz.begin(), n, atoms_.fz.begin());
+  if (opt_.per_atom) {
+    nb_.fold(work_.energy_atom);
+    for (int k = nb_.nlocal; k < nb_.nall; ++k)
+      for (int c = 0; c < 6; ++c) work_.virial_atom[6 * nb_.owner[k] + c] += work_.virial_atom[6 * k + c];
+  }
+  if (!std::isfinite(sums_.energy)) check_finite();
+}
+
+void System::check_finite() const {
+  for (std::size_t i = 0; i < atoms_.size(); ++i) {
+    const double vals[9] = {atoms_.x[i], atoms_.y[i], atoms_.z[i], atoms_.vx[i], atoms_.vy[i],
+                            atoms_.vz[i], atoms_.fx[i], atoms_.fy[i], atoms_.fz[i]};
+    static const char* names[9] = {"x", "y", "z", "vx", "vy", "vz", "fx", "fy", "fz"};
+    for (int c = 0; c < 9; ++c)
+      if (!std::isfinite(vals[c]))
+        throw RunError(fmt::format("MD step {}: atom {} has {} = {}", step_, atoms_.id[i], names[c], vals[c]));
+  }
+  throw RunError(fmt::format("MD step {}: potential energy is {}", step_, sums_.energy));
+}
+
+void System::thermalize(double target_K, std::uint64_t seed, std::uint64_t stream_id) {
+  rng_ = RngStream(seed, stream_id);
+  maxwell_velocities(atoms_, mass_, 2.0 * target_K, rng_);
+}
+
+void System::add_streaming_velocity(const Mat3& grad) {
+  const Mat3 g = is_upper_triangular(grad) ? grad : upper_triangular(grad);
+  const double cx = 0.5 * (box_.lx + box_.xy + box_.xz), cy = 0.5 * (box_.ly + box_.yz), cz = 0.5 * box_.lz;
+  for (std::size_t i = 0; i < atoms_.size(); ++i) {
+    const double x = atoms_.x[i] - cx, y = atoms_.y[i] - cy, z = atoms_.z[i] - cz;
+    atoms_.vx[i] += g[0] * x + g[1] * y + g[2] * z;
+    atoms_.vy[i] += g[4] * y + g[5] * z;
+    atoms_.vz[i] += g[8] * z;
+  }
+}
+
+void System::add_energy(double e) { inject_energy(atoms_, mass_, e, rng_); }
+
+void System::advance(int nsteps, const Mat3& grad, double dt) {
+  if (nsteps <= 0) return;
+  if (!(dt > 0)) throw InputError(fmt::format("MD time step dt = {}: must be positive", dt));
+  const Mat3 g = is_upper_triangular(grad) ? grad : upper_triangular(grad);  // eq. 5.20
+  if (!valid_) refresh();
+  g_ = g;
+  const bool affine = opt_.deformation == Deformation::affine;
+  const bool deforming = std::any_of(g.begin(), g.end(), [](double v) { return v != 0.0; });
+  kick(atoms_, mass_, dt, 0.5);  // eq. 5.4
+  for (int s = 0; s < nsteps; ++s) {
+    drift(atoms_, dt, g, affine && deforming);  // eq. 5.5
+    if (deforming) box_.deform(g, dt);          // eq. 5.7
+    if (nb_.needs_rebuild(atoms_, box_)) rebuild();
+    else nb_.update_positions(atoms_, box_);
+    compute_forces();
+    ++step_;
+    time_ += dt;
+    kick(atoms_, mass_, dt, s + 1 < nsteps ? 1.0 : 0.5);  // eq. 5.3; last: eq. 5.6
+  }
+}
+
+Atoms System::snapshot() const {
+  Atoms a = atoms_;
+  wrap(a, box_, g_, opt_.deformation == Deformation::boundary);
+  return a;
+}
+
+Mat3 System::stress() const {
+  if (opt_.deformation == Deformation::boundary && atoms_.size() > 0) {
+    return box_stress(snapshot(), mass_, sums_.virial, box_.volume());
+  }
+  return box_stress(atoms_, mass_, sums_.virial, box_.volume());
+}
+
+Mat3 System::stress_gpa() const {
+  Mat3 s = stress();
+  for (auto& v : s) v *= units::eV_per_A3_in_GPa;
+  return s;
+}
+
+std::vector<Mat3> System::slab_stress_gpa(int nbins) const {
+  if (!opt_.per_atom) throw RunError("binned stress needs SystemOptions::per_atom");
+  auto s = slab_stress(snapshot(), mass_, work_.virial_atom, box_, nbins);
+  for (auto& m : s)
+    for (auto& v : m) v *= units::eV_per_A3_in_GPa;
+  return s;
+}
+
+std::vector<Mat3> System::column_stress_gpa(int nx, int ny) const {
+  if (!opt_.per_atom) throw RunError("binned stress needs SystemOptions::per_atom");
+  auto s = column_stress(snapshot(), mass_, work_.virial_atom, box_, nx, ny);
+  for (auto& m : s)
+    for (auto& v : m) v *= units::eV_per_A3_in_GPa;
+  return s;
+}
+
+double System::kinetic_energy() const {
+  double ke = 0;
+  for (std::size_t i = 0; i < atoms_.size(); ++i)
+    ke += mass_[atoms_.type[i]] *
+          (atoms_.vx[i] * atoms_.vx[i] + atoms_.vy[i] * atoms_.vy[i] + atoms_.vz[i] * atoms_.vz[i]);
+  return 0.5 * ke * units::mvv2e;
+}
+
+double System::thermal_kinetic_energy() const { return md::thermal_kinetic_energy(atoms_, mass_); }
+double System::temperature() const { return kinetic_temperature(atoms_, mass_); }
+
+// ---- checkpoint ----
+
+namespace {
+constexpr char kMagic[8] = {'M', 'P', 'M', 'X', 'M', 'D', '0', '1'};
+template <class T>
+void put(std::ostream& o, const T& v) {
+  o.write(reinterpret_cast<const char*>(&v), sizeof(T));
+}
+template <class T>
+void get(std::istream& i, T& v) {
+  i.read(reinterpret_cast<char*>(&v), sizeof(T));
+  if (!i) throw InputError("MD checkpoint is truncated");
+}
+template <class T>
+void put_vec(std::ostream& o, const std::vector<T>& v) {
+  o.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
+}
+template <class T>
+void get_vec(std::istream& i, std::vector<T>& v, std::size_t n) {
+  v.resize(n);
+  i.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
+  if (!i) throw InputError("MD checkpoint is truncated");
+}
+}  // namespace
+
+void System::save(std::ostream& o) const {
+  o.write(kMagic, 8);
+  const std::uint64_t n = atoms_.size();
+  put(o, n);
+  put(o, box_);
+  put(o, step_);
+  put(o, time_);
+  put(o, g_);
+  put(o, rng_.state());
+  for (auto* v : {&atoms_.x, &atoms_.y, &atoms_.z, &atoms_.vx, &atoms_.vy, &atoms_.vz})
+    put_vec(o, *v);
+  put_vec(o, atoms_.type);
+  put_vec(o, atoms_.id);
+}
+
+System System::load(std::istream& in, Potential potential, SystemOptions options) {
+  char magic[8];
+  in.read(magic, 8);
+  if (!in || std::memcmp(magic, kMagic, 8) != 0) throw InputError("not an mpmx MD checkpoint");
+  std::uint64_t n;
+  get(in, n);
+  Box box;
+  get(in, box);
+  std::int64_t step;
+  double time;
+  Mat3 g;
+  std::array<std::uint64_t, 4> rng;
+  get(in, step);
+  get(in, time);
+  get(in, g);
+  get(in, rng);
+  Atoms a;
+  for (auto* v : {&a.x, &a.y, &a.z, &a.vx, &a.vy, &a.vz}) get_vec(in, *v, n);
+  get_vec(in, a.type, n);
+  get_vec(in, a.id, n);
+  a.fx.assign(n, 0.0);
+  a.fy.assign(n, 0.0);
+  a.fz.assign(n, 0.0);
+  System s(a, box, std::move(potential), options);
+  s.atoms_ = std::move(a);  // as saved, then wrapped with the saved gradient
+  s.box_ = box;
+  s.step_ = step;
+  s.time_ = time;
+  s.g_ = g;
+  s.rng_.set_state(rng);
+  s.refresh();
+  return s;
+}
+
+}  // namespace mpmx::md

@@ -1,0 +1,122 @@
+#pragma once
+// md::System: one self-contained periodic MD box, the unit the multiscale method keeps
+// in every material point (section 6.2). It owns its atoms, box, neighbour list, force
+// buffers and random stream; the potential is shared and immutable, so a System is
+// cheap to copy and many can advance independently on different threads.
+//
+//   System s(crystal.atoms, crystal.box, potential);
+//   s.thermalize(300.0, seed, point_id);          // section 6.2, Maxwell at 2T
+//   s.advance(n, velocity_gradient, dt);          // eqs. 5.3-5.8, 5.20
+//   Mat3 sigma = s.stress_gpa();                  // eq. 2.25, Cauchy, GPa
+//
+// Between calls the stored velocities are on-step velocities (eq. 5.6) and the forces
+// belong to the stored positions.
+#include <cstdint>
+#include <iosfwd>
+#include <vector>
+
+#include "mpmx/md/atoms.hpp"
+#include "mpmx/md/box.hpp"
+#include "mpmx/md/forces.hpp"
+#include "mpmx/md/lattice.hpp"
+#include "mpmx/md/neighbor.hpp"
+#include "mpmx/md/potential/potential.hpp"
+#include "mpmx/md/rng.hpp"
+
+namespace mpmx::md {
+
+enum class Deformation {
+  boundary,  // seed's scheme: the box deforms, atoms feel it through the images (eq. 5.8)
+  affine,    // atoms also follow the streaming motion G x (velocities are peculiar)
+};
+
+struct SystemOptions {
+  double skin = 1.0;                       // Angstrom
+  Deformation deformation = Deformation::boundary;
+  bool mixed_precision = false;            // float pair arithmetic, double sums
+  bool sort_atoms = true;                  // spatial sort at each neighbour rebuild
+  bool per_atom = false;                   // keep per-atom energy and virial (binned stress)
+};
+
+class System {
+ public:
+  System(Atoms atoms, Box box, Potential potential, SystemOptions options = {});
+  System(const Crystal& crystal, Potential potential, SystemOptions options = {})
+      : System(crystal.atoms, crystal.box, std::move(potential), options) {}
+
+  // Section 6.2: Maxwell speeds at twice `target_K`, isotropic directions, zero total
+  // momentum, from the stream (seed, stream_id) - the same on any thread count.
+  void thermalize(double target_K, std::uint64_t seed, std::uint64_t stream_id);
+  // Eq. 7.11 hook: adds `energy_eV` to the box as kinetic energy about the mean velocity.
+  void add_energy(double energy_eV);
+  // Adds the streaming velocity G (x - box centre) of a homogeneous deformation (G made
+  // upper triangular by eq. 5.20), so the box starts deforming as a continuum would.
+  void add_streaming_velocity(const Mat3& velocity_gradient);
+
+  // Advances n leapfrog steps of dt (ps) under the velocity gradient (1/ps, row-major
+  // dv_i/dx_j); a gradient with a lower triangle is made upper triangular by eq. 5.20.
+  void advance(int nsteps, const Mat3& velocity_gradient, double dt);
+  void advance(int nsteps, double dt) { advance(nsteps, Mat3{}, dt); }
+
+  // Eq. 2.25 for the whole box, Cauchy sign (compression negative).
+  Mat3 stress() const;      // eV/Angstrom^3
+  Mat3 stress_gpa() const;  // GPa
+  // Binned (needs options.per_atom): slabs along x, columns over x-y.
+  std::vector<Mat3> slab_stress_gpa(int nbins) const;
+  std::vector<Mat3> column_stress_gpa(int nx, int ny) const;
+
+  double potential_energy() const { return sums_.energy; }  // eV, total
+  double kinetic_energy() const;                            // eV, total, on-step velocities
+  double thermal_kinetic_energy() const;                    // eV, about the mean velocity
+  double temperature() const;                               // K, 3N-3 degrees of freedom
+  const Sym6& virial() const { return sums_.virial; }       // eV (pair virial sum)
+
+  const Atoms& atoms() const { return atoms_; }
+  // Mutable access: forces are recomputed before the next use.
+  Atoms& edit_atoms() {
+    valid_ = false;
+    return atoms_;
+  }
+  const Box& box() const { return box_; }
+  void set_box(const Box& b) {
+    box_ = b;
+    valid_ = false;
+  }
+  const Potential& potential() const { return pot_; }
+  const std::vector<double>& type_mass() const { return mass_; }
+  const SystemOptions& options() const { return opt_; }
+  std::int64_t step() const { return step_; }
+  double time() const { return time_; }
+  std::int64_t neighbor_builds() const { return nb_.builds; }
+  const Mat3& gradient() const { return g_; }
+  // Forces for the current state (recomputed if atoms or box were edited).
+  void refresh();
+
+  // Atoms with positions in the fundamental box and the velocities of those images.
+  Atoms snapshot() const;
+
+  // Checkpoint: the whole state in a portable binary form (bit-for-bit restart).
+  void save(std::ostream& out) const;
+  static System load(std::istream& in, Potential potential, SystemOptions options = {});
+
+ private:
+  void rebuild();
+  void compute_forces();
+  void check_finite() const;
+
+  Atoms atoms_;
+  Box box_;
+  Potential pot_;
+  SystemOptions opt_;
+  std::vector<double> mass_;
+  Neighbors nb_;
+  ForceWork work_;
+  ForceSums sums_;
+  RngStream rng_;
+  Mat3 g_{};
+  std::int64_t step_ = 0;
+  double time_ = 0;
+  bool valid_ = false;
+};
+
+}  // namespace mpmx::md

@@ -1,0 +1,70 @@
+#pragma once
+// A uniform background grid in Dim dimensions with node fields stored as arrays
+// (structure-of-arrays). Node storage carries one ghost layer on each side so that
+// the wide DDMP stencils (nodes c-1 .. c+2 of cell c) never need a bounds test; the
+// ghost nodes never carry mass, force or velocity.
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace mpmx::mpm {
+
+template <int Dim>
+struct Grid {
+  static constexpr int ghost = 1;
+
+  std::array<double, Dim> lower{};
+  std::array<double, Dim> upper{};
+  std::array<int, Dim> cells{};
+  std::array<double, Dim> dx{};
+  std::array<double, Dim> inv_dx{};
+  std::array<int, Dim> stride{};  // storage stride per dimension (with ghosts)
+  std::size_t storage = 0;        // nodes incl. ghosts
+
+  // Node fields (size `storage`).
+  std::vector<double> mass;
+  std::array<std::vector<double>, Dim> momentum;  // re-used as velocity v^n after the solve
+  std::array<std::vector<double>, Dim> velocity;  // v^n
+  std::array<std::vector<double>, Dim> velocity_L;  // Lagrangian v^L (eq. 3.12)
+  std::array<std::vector<double>, Dim> force;       // internal force (eq. 3.9/3.30)
+
+  Grid() = default;
+  Grid(std::array<double, Dim> lo, std::array<double, Dim> hi, std::array<int, Dim> n)
+      : lower(lo), upper(hi), cells(n) {
+    std::size_t s = 1;
+    for (int d = 0; d < Dim; ++d) {
+      dx[d] = (hi[d] - lo[d]) / n[d];
+      inv_dx[d] = 1.0 / dx[d];
+      stride[d] = static_cast<int>(s);
+      s *= static_cast<std::size_t>(n[d] + 1 + 2 * ghost);
+    }
+    storage = s;
+    mass.assign(storage, 0.0);
+    for (int d = 0; d < Dim; ++d) {
+      momentum[d].assign(storage, 0.0);
+      velocity[d].assign(storage, 0.0);
+      velocity_L[d].assign(storage, 0.0);
+      force[d].assign(storage, 0.0);
+    }
+  }
+
+  int nodes(int d) const { return cells[d] + 1; }
+  // Storage index of the node with grid indices idx (each in [-ghost, cells+ghost]).
+  std::size_t index(std::array<int, Dim> idx) const {
+    std::size_t s = 0;
+    for (int d = 0; d < Dim; ++d) s += static_cast<std::size_t>(idx[d] + ghost) * stride[d];
+    return s;
+  }
+  // Storage index of node i along x in 1-D.
+  std::size_t index1(int i) const { return static_cast<std::size_t>(i + ghost); }
+  double node_x(int i, int d = 0) const { return lower[d] + i * dx[d]; }
+  // Volume of the grid cell (V_j of eq. 3.28 for interior nodes).
+  double cell_volume() const {
+    double v = 1.0;
+    for (int d = 0; d < Dim; ++d) v *= dx[d];
+    return v;
+  }
+};
+
+}  // namespace mpmx::mpm

@@ -1,0 +1,96 @@
+#include "mpmx/mpm/output.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/mpm/reference.hpp"
+
+namespace mpmx::mpm {
+
+Output::Output(const std::string& dir, bool nodes, bool particles)
+    : dir_(dir), want_nodes_(nodes), want_particles_(particles) {}
+
+Output::~Output() {
+  for (std::FILE* f : {nodes_, particles_, energy_, front_})
+    if (f) std::fclose(f);
+}
+
+std::FILE* Output::open(const std::string& name, const char* header) {
+  const std::string path = dir_ + "/" + name;
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw RunError(fmt::format("cannot write {}", path));
+  std::fputs(header, f);
+  return f;
+}
+
+void Output::record(const State<1>& s, const NodalFields& nf, const Reference* ref) {
+  const auto& g = s.grid;
+  const auto& p = s.particles;
+  const double t = s.time;
+  const bool with_ref = ref && ref->valid(t);
+  auto ref_columns = [&](double x) {
+    if (!ref) return;
+    for (const auto& f : ref->fields()) {
+      if (with_ref)
+        fmt::format_to(std::back_inserter(buf_), ",{:.10g}", ref->value(f, x, t));
+      else
+        buf_ += ",";
+    }
+  };
+  auto ref_header = [&](std::string h) {
+    if (ref)
+      for (const auto& f : ref->fields()) h += ",ref_" + f;
+    return h + "\n";
+  };
+  if (want_nodes_) {
+    if (!nodes_)
+      nodes_ = open("nodes.csv",
+                    ref_header("time,node,x,mass,density,velocity,strain,stress,pressure,force").c_str());
+    buf_.clear();
+    for (int i = 0; i <= g.cells[0]; ++i) {
+      const std::size_t k = g.index1(i);
+      fmt::format_to(std::back_inserter(buf_), "{:.10g},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}",
+                     t, i, nf.x[i], nf.mass[i], nf.density[i], nf.velocity[i], nf.strain[i],
+                     nf.stress[i], -nf.stress[i], g.force[0][k]);
+      ref_columns(nf.x[i]);
+      buf_ += '\n';
+    }
+    std::fputs(buf_.c_str(), nodes_);
+    std::fflush(nodes_);
+  }
+  if (want_particles_) {
+    if (!particles_)
+      particles_ = open("particles.csv",
+                        ref_header("time,particle,x,mass,volume,density,velocity,strain,stress,pressure").c_str());
+    buf_.clear();
+    for (std::size_t q = 0; q < p.size(); ++q) {
+      fmt::format_to(std::back_inserter(buf_), "{:.10g},{},{:.12g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}",
+                     t, q, p.x[0][q], p.mass[q], p.volume[q], p.density(q), p.v[0][q],
+                     p.strain[0][q], p.stress[0][q], -p.stress[0][q]);
+      ref_columns(p.x[0][q]);
+      buf_ += '\n';
+    }
+    std::fputs(buf_.c_str(), particles_);
+    std::fflush(particles_);
+  }
+}
+
+void Output::energy(std::int64_t step, double t, double kinetic, double internal, double momentum,
+                    double boundary_impulse, double ref_total) {
+  if (!energy_)
+    energy_ = open("energy.csv", "step,time,kinetic,internal,total,momentum,boundary_impulse,ref_total\n");
+  fmt::print(energy_, "{},{:.10g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},", step, t, kinetic,
+             internal, kinetic + internal, momentum, boundary_impulse);
+  if (std::isfinite(ref_total)) fmt::print(energy_, "{:.12g}", ref_total);
+  std::fputc('\n', energy_);
+}
+
+void Output::front(double t, double x, double ref_x) {
+  if (!front_) front_ = open("front.csv", "time,front,ref_front\n");
+  fmt::print(front_, "{:.10g},{:.10g},{:.10g}\n", t, x, ref_x);
+  std::fflush(front_);
+}
+
+}  // namespace mpmx::mpm

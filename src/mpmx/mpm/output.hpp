@@ -1,0 +1,41 @@
+#pragma once
+// The tables a 1-D run writes: particles.csv and nodes.csv at the recorded times
+// (ADMPM's columns and more, plus ref_<field> where a reference exists), energy.csv
+// over time, front.csv for shock-front cases. Rows of one record are written and
+// flushed together, so a stopped run leaves whole records only.
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mpmx/mpm/nodal_fields.hpp"
+#include "mpmx/mpm/state.hpp"
+
+namespace mpmx::mpm {
+
+class Reference;
+
+class Output {
+ public:
+  Output(const std::string& dir, bool nodes, bool particles);
+  ~Output();
+  Output(const Output&) = delete;
+  Output& operator=(const Output&) = delete;
+
+  void record(const State<1>& s, const NodalFields& nf, const Reference* ref);
+  void energy(std::int64_t step, double t, double kinetic, double internal, double momentum,
+              double boundary_impulse, double ref_total);
+  void front(double t, double x, double ref_x);
+
+ private:
+  std::FILE* open(const std::string& name, const char* header);
+  std::string dir_;
+  std::FILE* nodes_ = nullptr;
+  std::FILE* particles_ = nullptr;
+  std::FILE* energy_ = nullptr;
+  std::FILE* front_ = nullptr;
+  bool want_nodes_, want_particles_;
+  std::string buf_;
+};
+
+}  // namespace mpmx::mpm

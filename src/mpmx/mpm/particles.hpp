@@ -1,0 +1,69 @@
+#pragma once
+// Material points in structure-of-arrays form. Tensors are stored by component
+// (row-major Dim x Dim), one array each, so loops over particles vectorise.
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace mpmx::mpm {
+
+template <int Dim>
+struct Particles {
+  static constexpr int tensor = Dim * Dim;
+
+  std::size_t size() const { return mass.size(); }
+
+  std::array<std::vector<double>, Dim> x;        // position
+  std::array<std::vector<double>, Dim> v;        // velocity
+  std::vector<double> mass;
+  std::vector<double> volume;                    // current volume, dV/dt = V div v
+  std::vector<double> volume0;                   // initial volume
+  std::array<std::vector<double>, Dim> length;   // particle domain edge (GIMP/CPDI/sub-points)
+  std::array<std::vector<double>, tensor> strain;       // integrated strain
+  std::array<std::vector<double>, tensor> stress;       // Cauchy stress (tension positive)
+  std::array<std::vector<double>, tensor> grad_v;       // velocity gradient at v^{n+1/2} (eq. 4.10)
+  std::vector<double> viscous_pressure;          // artificial viscosity q (>= 0), ch. 6
+  std::vector<double> entropy;                   // adiabatic gas: p / rho^gamma per particle
+
+  void resize(std::size_t n) {
+    for (int d = 0; d < Dim; ++d) {
+      x[d].assign(n, 0.0);
+      v[d].assign(n, 0.0);
+      length[d].assign(n, 0.0);
+    }
+    mass.assign(n, 0.0);
+    volume.assign(n, 0.0);
+    volume0.assign(n, 0.0);
+    for (int c = 0; c < tensor; ++c) {
+      strain[c].assign(n, 0.0);
+      stress[c].assign(n, 0.0);
+      grad_v[c].assign(n, 0.0);
+    }
+    viscous_pressure.assign(n, 0.0);
+    entropy.assign(n, 0.0);
+  }
+
+  double density(std::size_t p) const { return mass[p] / volume[p]; }
+};
+
+// Per-particle node weights of the current step: node storage index, shape value
+// S_ip and (modified) gradient G_ip for `width` entries per particle. Entries past a
+// particle's true support carry zero weights, so p2g and g2p are one loop shape for
+// every scheme.
+template <int Dim>
+struct Stencil {
+  int width = 0;
+  std::vector<int> node;                     // [p * width + k]
+  std::vector<double> S;                     // [p * width + k]
+  std::array<std::vector<double>, Dim> G;    // [d][p * width + k]
+
+  void reset(std::size_t particles, int w) {
+    width = w;
+    const std::size_t n = particles * static_cast<std::size_t>(w);
+    node.assign(n, 0);
+    S.assign(n, 0.0);
+    for (int d = 0; d < Dim; ++d) G[d].assign(n, 0.0);
+  }
+};
+
+}  // namespace mpmx::mpm

@@ -1,0 +1,17 @@
+#pragma once
+// The nodal solve: Lagrangian velocity v^L = v^n + dt f/m (eqs. 3.10, 3.12) with the
+// boundary nodes held to their prescribed velocity, and the per-step conservation
+// tallies (boundary impulse and work, force balance eq. 4.7, nodal mass).
+#include "mpmx/mpm/state.hpp"
+
+namespace mpmx::mpm {
+
+void solve_grid(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& tally);
+
+// V^{n+1} = V^n (1 + dt div v); the domain length follows when the scheme tracks it.
+void update_volumes(Particles<1>& p, double dt, bool track_length);
+
+// W += dt sum_p V_p (sigma_p - q_p) : grad v_p  (the energy the stress absorbs, eq. 4.11).
+void account_stress_work(const Particles<1>& p, double dt, bool small_strain, Tallies& tally);
+
+}  // namespace mpmx::mpm

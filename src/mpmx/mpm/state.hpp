@@ -1,0 +1,41 @@
+#pragma once
+// Everything one continuum run advances: grid, particles, the step's stencil, the
+// scheme and material chosen once, boundaries, and running conservation tallies.
+#include <cstdint>
+#include <memory>
+
+#include "mpmx/material/material.hpp"
+#include "mpmx/mpm/bcs.hpp"
+#include "mpmx/mpm/grid.hpp"
+#include "mpmx/mpm/particles.hpp"
+#include "mpmx/mpm/shape/scheme.hpp"
+
+namespace mpmx::mpm {
+
+// Running sums over the steps taken (S4 of the validation catalog).
+struct Tallies {
+  double boundary_impulse = 0.0;   // momentum the boundary nodes added
+  double boundary_work = 0.0;      // energy the boundary nodes added
+  double stress_work = 0.0;        // sum V sigma:grad v dt (eq. 4.11)
+  double max_force_sum = 0.0;      // max over steps of |sum_i f_i| / sum_i |f_i|  (eq. 4.7)
+  double node_mass = 0.0;          // sum of nodal masses at the last step (eq. 3.11)
+};
+
+template <int Dim>
+struct State {
+  Grid<Dim> grid;
+  Particles<Dim> particles;
+  Stencil<Dim> stencil;
+  std::unique_ptr<ShapeEvaluator> shape;
+  std::unique_ptr<material::Material<Dim>> material;
+  Boundaries boundary;
+  bool move = true;
+  bool small_strain = false;  // force and work integrals over V0 (ADMPM's geometrically linear form)
+  bool midpoint_gradient = true;  // grad v at v^{n+1/2} (eq. 4.10) or at v^L
+  double viscosity = 0.0;
+  double time = 0.0;
+  std::int64_t step = 0;
+  Tallies tallies;
+};
+
+}  // namespace mpmx::mpm
