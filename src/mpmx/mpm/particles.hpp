@@ -57,12 +57,19 @@ struct Stencil {
   std::vector<double> S;                     // [p * width + k]
   std::array<std::vector<double>, Dim> G;    // [d][p * width + k]
 
-  void reset(std::size_t particles, int w) {
+  // Sizes the arrays; zero-fills them unless the caller writes every entry.
+  void reset(std::size_t particles, int w, bool zero = true) {
     width = w;
     const std::size_t n = particles * static_cast<std::size_t>(w);
-    node.assign(n, 0);
-    S.assign(n, 0.0);
-    for (int d = 0; d < Dim; ++d) G[d].assign(n, 0.0);
+    if (zero) {
+      node.assign(n, 0);
+      S.assign(n, 0.0);
+      for (int d = 0; d < Dim; ++d) G[d].assign(n, 0.0);
+    } else {
+      node.resize(n);
+      S.resize(n);
+      for (int d = 0; d < Dim; ++d) G[d].resize(n);
+    }
   }
 };
 

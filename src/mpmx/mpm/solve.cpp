@@ -44,19 +44,21 @@ void solve_grid(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& 
   tally.node_mass = mass_sum;
 }
 
-void update_volumes(Particles<1>& p, double dt, bool track_length) {
+void work_and_volumes(Particles<1>& p, double dt, bool small_strain, bool track_length,
+                      Tallies& tally) {
   const std::size_t n = p.size();
-  for (std::size_t q = 0; q < n; ++q) p.volume[q] *= 1.0 + dt * p.grad_v[0][q];
-  if (track_length)
-    for (std::size_t q = 0; q < n; ++q) p.length[0][q] *= 1.0 + dt * p.grad_v[0][q];
-}
-
-void account_stress_work(const Particles<1>& p, double dt, bool small_strain, Tallies& tally) {
   double w = 0.0;
-  const std::size_t n = p.size();
-  const std::vector<double>& vol = small_strain ? p.volume0 : p.volume;
-  for (std::size_t q = 0; q < n; ++q)
-    w += vol[q] * (p.stress[0][q] - p.viscous_pressure[q]) * p.grad_v[0][q];
+  double* __restrict V = p.volume.data();
+  const double* __restrict V0 = p.volume0.data();
+  const double* __restrict sig = p.stress[0].data();
+  const double* __restrict qv = p.viscous_pressure.data();
+  const double* __restrict L = p.grad_v[0].data();
+  for (std::size_t q = 0; q < n; ++q) {
+    w += (small_strain ? V0[q] : V[q]) * (sig[q] - qv[q]) * L[q];
+    V[q] *= 1.0 + dt * L[q];
+  }
+  if (track_length)
+    for (std::size_t q = 0; q < n; ++q) p.length[0][q] *= 1.0 + dt * L[q];
   tally.stress_work += dt * w;
 }
 

@@ -8,10 +8,10 @@ namespace mpmx::mpm {
 
 void solve_grid(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& tally);
 
-// V^{n+1} = V^n (1 + dt div v); the domain length follows when the scheme tracks it.
-void update_volumes(Particles<1>& p, double dt, bool track_length);
-
-// W += dt sum_p V_p (sigma_p - q_p) : grad v_p  (the energy the stress absorbs, eq. 4.11).
-void account_stress_work(const Particles<1>& p, double dt, bool small_strain, Tallies& tally);
+// W += dt sum_p V_p (sigma_p - q_p) : grad v_p (the energy the stress absorbs, eq. 4.11,
+// over V0 for small strain), then V^{n+1} = V^n (1 + dt div v) and, when the scheme
+// tracks it, the domain length likewise.
+void work_and_volumes(Particles<1>& p, double dt, bool small_strain, bool track_length,
+                      Tallies& tally);
 
 }  // namespace mpmx::mpm

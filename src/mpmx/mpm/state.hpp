@@ -8,6 +8,7 @@
 #include "mpmx/mpm/bcs.hpp"
 #include "mpmx/mpm/grid.hpp"
 #include "mpmx/mpm/particles.hpp"
+#include "mpmx/mpm/shape/linear_fused.hpp"
 #include "mpmx/mpm/shape/scheme.hpp"
 
 namespace mpmx::mpm {
@@ -26,6 +27,7 @@ struct State {
   Grid<Dim> grid;
   Particles<Dim> particles;
   Stencil<Dim> stencil;
+  shape::LinearCells linear_cells;  // the fused original-MPM path keeps only these
   std::unique_ptr<ShapeEvaluator> shape;
   std::unique_ptr<material::Material<Dim>> material;
   Boundaries boundary;
@@ -34,6 +36,7 @@ struct State {
   bool midpoint_gradient = true;  // grad v at v^{n+1/2} (eq. 4.10) or at v^L
   double viscosity = 0.0;
   double time = 0.0;
+  double finite_check = 0.0;  // sum of new v and x of the last step: NaN/Inf shows here
   std::int64_t step = 0;
   Tallies tallies;
 };

@@ -11,12 +11,20 @@ namespace mpmx::mpm {
 void step(State<1>& s, double dt) {
   auto& g = s.grid;
   auto& p = s.particles;
-  (*s.shape)(g, p, s.stencil);                        // nearest nodes afresh, S_ip, G_ip
-  p2g(p, s.stencil, s.small_strain, g);               // m_i, v_i^n (eq. 3.16), f_i
-  solve_grid(g, s.boundary, s.time, dt, s.tallies);   // v^L (eq. 3.12) with boundaries
-  g2p(g, s.stencil, dt, s.move, s.midpoint_gradient, p);  // v_p, x_p, grad v
-  account_stress_work(p, dt, s.small_strain, s.tallies);  // eq. 4.11, before sigma changes
-  update_volumes(p, dt, tracks_domain(s.shape->options().scheme));  // dV/dt = V div v
+  const Scheme scheme = s.shape->options().scheme;
+  if (scheme == Scheme::mpm) {                        // fused hat + transfers, same algorithm
+    shape::p2g_linear(g, p, s.small_strain, s.linear_cells, g);
+    solve_grid(g, s.boundary, s.time, dt, s.tallies);
+    s.finite_check = shape::g2p_linear(g, s.linear_cells, dt, s.move, s.midpoint_gradient, p);
+  } else {
+    (*s.shape)(g, p, s.stencil);                      // nearest nodes afresh, S_ip, G_ip
+    p2g(p, s.stencil, s.small_strain, g);             // m_i, v_i^n (eq. 3.16), f_i
+    solve_grid(g, s.boundary, s.time, dt, s.tallies); // v^L (eq. 3.12) with boundaries
+    s.finite_check = g2p(g, s.stencil, dt, s.move, s.midpoint_gradient, p);  // v_p, x_p, grad v
+  }
+  // Stress work of the step (eq. 4.11, with the stress the forces used), then
+  // dV/dt = V div v and the domain length where the scheme tracks it.
+  work_and_volumes(p, dt, s.small_strain, tracks_domain(scheme), s.tallies);
   s.material->update_stress(p, dt);
   artificial_viscosity(*s.material, s.viscosity, p);
   s.time += dt;
