@@ -1,0 +1,126 @@
+// Continuum deck validation: each kind of bad input names the key, the value and the
+// reason; `mpmx check` exits non-zero and `mpmx run` writes nothing on a bad deck.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/io/mpm_deck.hpp"
+
+namespace {
+
+const char* kGood = R"(
+[case]
+id = "T"
+[grid]
+upper = 1.0
+cells = 10
+[particles]
+per_cell = 2
+[scheme]
+name = "ddmp"
+[material]
+model = "linear_elastic"
+youngs_modulus = 1.0
+[time]
+dt = 1e-3
+end = 0.1
+)";
+
+std::string error_of(const std::string& text) {
+  try {
+    mpmx::io::read_mpm_deck_text(text, "t.toml");
+  } catch (const mpmx::InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return s.replace(at, from.size(), to);
+}
+
+#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
+
+}  // namespace
+
+TEST(MpmDeck, GoodDeckReads) {
+  const auto c = mpmx::io::read_mpm_deck_text(kGood);
+  EXPECT_EQ(c.cells, 10);
+  EXPECT_EQ(c.steps(), 100);
+}
+
+TEST(MpmDeck, MisspelledKey) {
+  EXPECT_HAS(error_of(replace(kGood, "per_cell", "per_cel")),
+             "unknown key 'particles.per_cel' (did you mean 'per_cell'?)");
+}
+
+TEST(MpmDeck, WrongType) {
+  EXPECT_HAS(error_of(replace(kGood, "cells = 10", "cells = 10.5")),
+             "key 'grid.cells' = 10.5: expected an integer, got a number");
+}
+
+TEST(MpmDeck, MissingValue) {
+  EXPECT_HAS(error_of(replace(kGood, "youngs_modulus = 1.0", "")),
+             "key 'material.youngs_modulus' is missing");
+}
+
+TEST(MpmDeck, NegativeDensity) {
+  EXPECT_HAS(error_of(replace(kGood, "youngs_modulus = 1.0", "youngs_modulus = 1.0\ndensity = -2.0")),
+             "key 'material.density' = -2: must be positive");
+}
+
+TEST(MpmDeck, ZeroCells) {
+  EXPECT_HAS(error_of(replace(kGood, "cells = 10", "cells = 0")),
+             "key 'grid.cells' = 0: must be at least 1");
+}
+
+TEST(MpmDeck, TimeStepAboveCfl) {
+  EXPECT_HAS(error_of(replace(replace(kGood, "dt = 1e-3", "dt = 0.2"), "end = 0.1", "end = 0.4")),
+             "key 'time.dt' = 0.2: exceeds the CFL limit");
+}
+
+TEST(MpmDeck, UnknownScheme) {
+  EXPECT_HAS(error_of(replace(kGood, "\"ddmp\"", "\"gimp\"")),
+             "key 'scheme.name' = \"gimp\": not one of mpm, ugimp, cpgimp, cpdi, ddmp, ddmp_subpoints");
+}
+
+TEST(MpmDeck, SubpointsOnlyWithSubpointScheme) {
+  EXPECT_HAS(error_of(replace(kGood, "name = \"ddmp\"", "name = \"ddmp\"\nsubpoints = 8")),
+             "only ddmp_subpoints uses sub-points");
+}
+
+TEST(MpmDeck, EndNotWholeSteps) {
+  EXPECT_HAS(error_of(replace(kGood, "end = 0.1", "end = 0.10005")),
+             "key 'time.end' = 0.10005: is not a whole number of steps");
+}
+
+TEST(MpmDeck, EveryErrorAtOnceWithLines) {
+  const std::string e = error_of(replace(replace(kGood, "cells = 10", "cells = -1"), "per_cell = 2",
+                                         "per_cell = 2\ncolour = \"red\""));
+  EXPECT_HAS(e, "t.toml:6: key 'grid.cells' = -1");
+  EXPECT_HAS(e, "unknown key 'particles.colour'");
+}
+
+TEST(MpmCli, CheckFailsAndRunWritesNothing) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "mpmx_deck_cli_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path deck = dir / "bad.toml";
+  std::ofstream(deck) << replace(kGood, "cells = 10", "cells = 0");
+  const std::string bin = MPMX_BINARY;
+  const int check = std::system((bin + " check " + deck.string() + " >/dev/null 2>&1").c_str());
+  EXPECT_NE(check, 0);
+  const fs::path out = dir / "out";
+  const int run = std::system((bin + " run " + deck.string() + " --out " + out.string() + " >/dev/null 2>&1").c_str());
+  EXPECT_NE(run, 0);
+  EXPECT_FALSE(fs::exists(out));
+  std::ofstream(deck) << kGood;
+  EXPECT_EQ(std::system((bin + " check " + deck.string() + " >/dev/null").c_str()), 0);
+  fs::remove_all(dir);
+}
