@@ -1,0 +1,31 @@
+// Micro-benchmarks of the MD engine: one force evaluation and one leapfrog step of fcc
+// Cu (Cu_mishin1) at 500 and 32,000 atoms, double and mixed precision.
+#include <benchmark/benchmark.h>
+
+#include "mpmx/md/lattice.hpp"
+#include "mpmx/md/system.hpp"
+
+using namespace mpmx::md;
+
+namespace {
+System make(int cells, bool mixed) {
+  PotentialSpec spec;
+  spec.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
+  SystemOptions o;
+  o.mixed_precision = mixed;
+  System s(fcc(cells, cells, cells, 3.615), Potential(spec), o);
+  s.thermalize(300, 1, 0);
+  s.advance(20, 0.001);
+  return s;
+}
+
+void BM_MdStep(benchmark::State& state) {
+  System s = make(static_cast<int>(state.range(0)), state.range(1) != 0);
+  for (auto _ : state) s.advance(10, 0.001);
+  state.counters["atom_steps_per_s"] =
+      benchmark::Counter(static_cast<double>(s.atoms().size()) * 10 * state.iterations(), benchmark::Counter::kIsRate);
+}
+}  // namespace
+
+BENCHMARK(BM_MdStep)->Args({5, 0})->Args({5, 1})->Args({20, 0})->Args({20, 1})->Unit(benchmark::kMillisecond);
+BENCHMARK_MAIN();
