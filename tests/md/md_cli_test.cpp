@@ -1,0 +1,159 @@
+// `mpmx md DECK --out DIR`: run.json names, thermo CSV, and deck errors that name the
+// key, the value and the reason (exit status 2).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <regex>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status;
+  std::string output;
+};
+
+Result run(const std::string& args) {
+  const std::string cmd = std::string(MPMX_BINARY) + " " + args + " 2>&1";
+  Result r{0, {}};
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  while (std::fgets(buf, sizeof buf, p)) r.output += buf;
+  const int st = pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+fs::path write_deck(const std::string& name, const std::string& text) {
+  const auto dir = fs::temp_directory_path() / "mpmx_md_cli_test";
+  fs::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+const std::string kGood = R"(
+[potential]
+style = "eam"
+file = "Cu_mishin1.eam.alloy"
+elements = ["Cu"]
+[lattice]
+constant = 3.615
+cells = [3, 3, 3]
+[thermal]
+temperature = 300.0
+seed = 4
+[run]
+dt = 0.001
+steps = 40
+thermo = 10
+strain_rate_per_s = 1e9
+)";
+
+}  // namespace
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+double json_number(const std::string& json, const std::string& key) {
+  std::smatch m;
+  const std::regex re("\"" + key + "\" : ([-+0-9.eE]+)");
+  if (!std::regex_search(json, m, re)) return std::nan("");
+  return std::stod(m[1]);
+}
+
+TEST(MdCli, RunWritesRunJsonAndThermo) {
+  const auto deck = write_deck("good.toml", kGood);
+  const auto out = deck.parent_path() / "out_good";
+  fs::remove_all(out);
+  const auto r = run("md " + deck.string() + " --out " + out.string() + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string json = slurp(out / "run.json");
+  EXPECT_EQ(json_number(json, "atoms"), 108);
+  EXPECT_EQ(json_number(json, "steps"), 40);
+  EXPECT_GT(json_number(json, "wall_seconds"), 0);
+  EXPECT_GT(json_number(json, "atom_steps_per_second"), 0);
+  EXPECT_NEAR(json_number(json, "potential_energy_per_atom"), -3.5, 0.05);
+  // stress_gpa: a 3x3 array of numbers.
+  EXPECT_TRUE(std::regex_search(json, std::regex("\"stress_gpa\" : \\[\\s*\\[[^\\]]+\\],\\s*\\[[^\\]]+\\],\\s*\\[[^\\]]+\\]\\s*\\]")))
+      << json;
+  EXPECT_NE(json.find("\"deck\""), std::string::npos);
+  const std::string csv = slurp(out / "thermo.csv");
+  EXPECT_EQ(csv.rfind("step,time_ps,pe_per_atom_eV", 0), 0u);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 5);  // header + steps 0,10,20,30,40
+}
+
+TEST(MdCli, CheckValidatesOnly) {
+  const auto deck = write_deck("check.toml", kGood);
+  const auto r = run("md " + deck.string() + " --check");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("ok"), std::string::npos);
+}
+
+TEST(MdCli, BadDeckNamesKeyValueReason) {
+  std::string text = kGood;
+  text.replace(text.find("dt = 0.001"), 10, "dt = -0.5");
+  text.replace(text.find("cells = [3, 3, 3]"), 17, "cells = [3, 0, 3]\nwidth = 2");
+  text.replace(text.find("Cu_mishin1.eam.alloy"), 20, "Nope.eam.alloy");
+  const auto deck = write_deck("bad.toml", text);
+  const auto r = run("md " + deck.string() + " --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("run.dt"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("-0.5"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("lattice.cells"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("lattice.width"), std::string::npos) << r.output;  // unknown key
+  EXPECT_NE(r.output.find("potential file 'Nope.eam.alloy' not found"), std::string::npos) << r.output;
+}
+
+TEST(MdCli, MalformedPotentialFileIsAnInputError) {
+  const auto pot = write_deck("Broken.eam.alloy", "c\nc\nc\n1 Cu\n100 0.01 100 0.01 5.0\n29 63.55 3.6 fcc\n1 2 3\n");
+  std::string text = kGood;
+  text.replace(text.find("Cu_mishin1.eam.alloy"), 20, "Broken.eam.alloy");
+  const auto deck = write_deck("broken.toml", text);
+  const auto r = run("md " + deck.string() + " --out " + (deck.parent_path() / "out_broken").string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("Broken.eam.alloy:7: file ends early: expected 100 values of F(rho) of Cu, found 3"),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(MdCli, BenchAndExampleDecksAreValid) {
+  for (const char* d : {"bench/md_cu500.toml", "bench/md_cu32000.toml", "examples/MD_bar_release.toml"}) {
+    const auto r = run(std::string("md ") + MPMX_SOURCE_DIR + "/" + d + " --check");
+    EXPECT_EQ(r.status, 0) << d << r.output;
+  }
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(MPMX_SOURCE_DIR) / "examples")) {
+    const auto name = e.path().filename().string();
+    if (name.size() < 3 || name[0] != 'M' || !std::isdigit(static_cast<unsigned char>(name[1]))) continue;
+    const auto r = run("md " + e.path().string() + " --check");
+    EXPECT_EQ(r.status, 0) << name << r.output;
+    ++n;
+  }
+  EXPECT_GE(n, 5);
+}
+
+TEST(MdCli, BarDeckWritesBinnedStressOverTime) {
+  std::string text = kGood;
+  text += "[bar]\ncells_x = 8\ncells_yz = 2\nstrain_left = -0.01\nbins = 8\noutput_every = 20\n";
+  const auto deck = write_deck("bar.toml", text);
+  const auto out = deck.parent_path() / "out_bar";
+  fs::remove_all(out);
+  const auto r = run("md " + deck.string() + " --out " + out.string() + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string csv = slurp(out / "bar_stress.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 8);  // steps 0, 20, 40 x 8 bins
+  EXPECT_EQ(json_number(slurp(out / "run.json"), "atoms"), 128);
+}
