@@ -1,6 +1,7 @@
 // `mpmx md DECK --out DIR`: run.json names, thermo CSV, and deck errors that name the
 // key, the value and the reason (exit status 2).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -34,7 +35,15 @@ Result run(const std::string& args) {
 }
 
 fs::path write_deck(const std::string& name, const std::string& text) {
-  const auto dir = fs::temp_directory_path() / "mpmx_md_cli_test";
+  const auto dir = fs::temp_directory_path() / ("mpmx_md_cli_test_" + std::to_string(getpid()));
+  // Removed when the test process ends.
+  static const struct Cleanup {
+    fs::path d;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(d, ec);
+    }
+  } cleanup{dir};
   fs::create_directories(dir);
   std::ofstream(dir / name) << text;
   return dir / name;
@@ -55,6 +64,7 @@ seed = 4
 dt = 0.001
 steps = 40
 thermo = 10
+dump_every = 20
 strain_rate_per_s = 1e9
 )";
 
@@ -93,6 +103,12 @@ TEST(MdCli, RunWritesRunJsonAndThermo) {
   const std::string csv = slurp(out / "thermo.csv");
   EXPECT_EQ(csv.rfind("step,time_ps,pe_per_atom_eV", 0), 0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 5);  // header + steps 0,10,20,30,40
+  const std::string dump = slurp(out / "dump.lammpstrj");
+  std::size_t frames = 0;
+  for (std::size_t p = dump.find("ITEM: TIMESTEP"); p != std::string::npos; p = dump.find("ITEM: TIMESTEP", p + 1))
+    ++frames;
+  EXPECT_EQ(frames, 3u);  // steps 0, 20, 40
+  EXPECT_NE(dump.find("ITEM: ATOMS id type x y z vx vy vz"), std::string::npos);
 }
 
 TEST(MdCli, CheckValidatesOnly) {

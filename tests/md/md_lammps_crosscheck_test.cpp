@@ -5,6 +5,7 @@
 // leapfrog started with eq. 5.4 from the same on-step velocities give the same
 // positions (the half-step velocity of leapfrog is Verlet's mid-step velocity).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -164,7 +165,7 @@ void crosscheck(const Case& cs) {
   const double dt = 0.001;
   const int steps = 100;
   System sys = make_system(cs, 42 + cs.cells);
-  const auto dir = fs::temp_directory_path() / ("mpmx_m2_" + cs.name);
+  const auto dir = fs::temp_directory_path() / ("mpmx_m2_" + cs.name + "_" + std::to_string(getpid()));
   fs::remove_all(dir);
   const LammpsResult L = run_lammps(cs, sys, dir, steps, dt);
   const std::size_t n = sys.atoms().size();
@@ -223,6 +224,7 @@ void crosscheck(const Case& cs) {
   EXPECT_LT(v_rel, 1e-8);
   EXPECT_LT(pe_rel, 1e-8);
   EXPECT_LT(ke_rel, 1e-8);
+  if (!::testing::Test::HasFailure()) fs::remove_all(dir);  // keep it for a failure's post-mortem
 }
 
 }  // namespace

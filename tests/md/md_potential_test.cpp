@@ -1,6 +1,7 @@
 // EAM/LJ/Sutton-Chen: file readers (and their error messages), forces as minus the
 // energy gradient, Newton's third law (eq. 5.24), virial as the strain derivative.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -29,7 +30,15 @@ std::string read_text(const std::string& p) {
 }
 
 std::string temp_file(const std::string& name, const std::string& text) {
-  const auto dir = fs::temp_directory_path() / "mpmx_md_potential_test";
+  const auto dir = fs::temp_directory_path() / ("mpmx_md_potential_test_" + std::to_string(getpid()));
+  // Removed when the test process ends.
+  static const struct Cleanup {
+    fs::path d;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove_all(d, ec);
+    }
+  } cleanup{dir};
   fs::create_directories(dir);
   const auto p = dir / name;
   std::ofstream(p) << text;
@@ -226,4 +235,28 @@ TEST(Stress, VirialIsStrainDerivativeOfEnergy) {
     const double dE = (energy(h) - energy(-h)) / (2 * h);
     EXPECT_NEAR(sigma[3 * a + b], dE / sys.box().volume(), 2e-7) << a << b;
   }
+}
+
+// Mixed precision (float pair arithmetic, double sums): energy within 1e-5 relative,
+// forces within 1e-4 of the largest, and still energy-conserving dynamics.
+TEST(EamForces, MixedPrecisionAgreesWithDouble) {
+  PotentialSpec s;
+  s.file = kPot + "Cu_mishin1.eam.alloy";
+  Potential pot(s);
+  const Crystal c = perturbed(5, 3.615, 9);
+  SystemOptions o;
+  System d(c, pot, o);
+  o.mixed_precision = true;
+  System m(c, pot, o);
+  EXPECT_NEAR(m.potential_energy() / d.potential_energy(), 1.0, 1e-5);
+  double fmax = 0, diff = 0;
+  for (std::size_t i = 0; i < d.atoms().size(); ++i) {
+    fmax = std::max(fmax, std::abs(d.atoms().fx[i]));
+    diff = std::max(diff, std::abs(d.atoms().fx[i] - m.atoms().fx[i]));
+  }
+  EXPECT_LT(diff, 1e-4 * fmax);
+  m.thermalize(300, 1, 1);
+  const double e0 = m.potential_energy() + m.kinetic_energy();
+  m.advance(500, 0.001);
+  EXPECT_NEAR((m.potential_energy() + m.kinetic_energy() - e0) / m.atoms().size(), 0.0, 5e-5);
 }

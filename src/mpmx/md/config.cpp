@@ -73,6 +73,8 @@ MdConfig read_md_config(io::Deck& deck) {
   const auto seed = th.integer("seed", 1);
   th.check(seed >= 0, "seed", "must be >= 0");
   c.seed = static_cast<std::uint64_t>(seed);
+  c.relax_steps = th.integer("relax_steps", 0);
+  th.check(c.relax_steps >= 0, "relax_steps", "must be >= 0");
 
   auto run = root.table("run");
   c.dt = run.number("dt");
@@ -83,6 +85,9 @@ MdConfig read_md_config(io::Deck& deck) {
   c.thermo = run.integer("thermo", 100);
   run.check(c.thermo >= 1, "thermo", "must be >= 1");
   run.choice("ensemble", {"nve"}, "nve");
+  c.dump_every = run.integer("dump_every", 0);
+  run.check(c.dump_every >= 0 && (c.dump_every == 0 || c.dump_every % c.thermo == 0), "dump_every",
+            "must be 0 (no dump) or a multiple of thermo");
   c.options.skin = run.number("skin", 1.0);
   run.non_negative("skin", c.options.skin);
   c.options.mixed_precision = run.choice("precision", {"double", "mixed"}, "double") == "mixed";
@@ -109,6 +114,27 @@ MdConfig read_md_config(io::Deck& deck) {
     scan.check(c.scan_to > c.scan_from, "lattice_to", "must exceed lattice_from");
     c.scan_points = static_cast<int>(scan.integer("points", 41));
     scan.check(c.scan_points >= 3 && c.scan_points <= 100000, "points", "must be from 3 to 100000");
+  }
+  auto bar = root.optional_table("bar");
+  if (bar.present()) {
+    c.bar = true;
+    BarConfig& b = c.bar_config;
+    b.cells_x = static_cast<int>(bar.integer("cells_x"));
+    bar.check(b.cells_x >= 2 && b.cells_x <= 100000, "cells_x", "must be from 2 to 100000");
+    b.cells_yz = static_cast<int>(bar.integer("cells_yz"));
+    bar.check(b.cells_yz >= 1 && b.cells_yz <= 1000, "cells_yz", "must be from 1 to 1000");
+    b.strain_left = bar.number("strain_left", 0.0);
+    bar.check(b.strain_left > -0.5 && b.strain_left < 0.5, "strain_left", "must lie in (-0.5, 0.5)");
+    b.split = bar.number("split", 0.5);
+    bar.check(b.split > 0 && b.split < 1, "split", "must lie in (0, 1)");
+    b.piston_velocity = bar.number("piston_velocity", 0.0);
+    b.bins = static_cast<int>(bar.integer("bins", 100));
+    bar.check(b.bins >= 1 && b.bins <= 100000, "bins", "must be from 1 to 100000");
+    c.bar_every = bar.integer("output_every", 100);
+    bar.check(c.bar_every >= 1, "output_every", "must be >= 1");
+    b.lattice_constant = c.lattice_constant;
+    b.temperature = c.temperature;
+    b.seed = c.seed;
   }
   deck.finish();
   return c;

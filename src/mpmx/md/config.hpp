@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mpmx/io/deck.hpp"
+#include "mpmx/md/bar.hpp"
 #include "mpmx/md/box.hpp"
 #include "mpmx/md/potential/potential.hpp"
 #include "mpmx/md/system.hpp"
@@ -20,15 +21,21 @@ struct MdConfig {
   double strain_x = 0.0;            // initial engineering strain (section 6.2)
   double temperature = 0.0;         // K, target; atoms start at twice it (section 6.2)
   std::uint64_t seed = 1;
+  std::int64_t relax_steps = 0;     // zero-strain-rate relaxation before the run (section 6.2)
   double dt = 0.001;                // ps
   std::int64_t steps = 0;
   std::int64_t thermo = 100;        // steps between thermo rows
+  std::int64_t dump_every = 0;      // LAMMPS dump frames (0: none), multiple of thermo
   Mat3 velocity_gradient{};         // 1/ps
   bool streaming = false;           // start with the streaming velocity of the gradient
   SystemOptions options;
   // Optional lattice-constant scan (M1): energy per atom at `scan_points` values.
   double scan_from = 0, scan_to = 0;
   int scan_points = 0;
+  // Optional direct-MD bar ([bar]): walls along x, binned stress every `bar_every` steps.
+  bool bar = false;
+  BarConfig bar_config;
+  std::int64_t bar_every = 100;
   std::string deck_file;
 };
 

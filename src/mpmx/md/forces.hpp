@@ -13,9 +13,16 @@ struct ForceWork {
   std::vector<double> fx, fy, fz;    // size nall
   std::vector<double> rho, fp;       // EAM density and F'(rho), size nall
   bool per_atom = false;             // also fill energy_atom and virial_atom
+  bool tally = true;                 // energy and virial wanted (else forces only)
   std::vector<double> energy_atom;   // size nall
   std::vector<double> virial_atom;   // 6 * nall, half of each pair to each atom
+  // Set by a kernel that already summed ghost forces into their owners (fx.. valid for
+  // locals only).
+  bool folded = false;
+  // Sizes the arrays and zeroes rho (and the per-atom sums); each kernel zeroes the
+  // force arrays it accumulates into (zero_forces()).
   void reset(int nall);
+  void zero_forces();
 };
 
 struct ForceSums {

@@ -8,9 +8,17 @@ namespace mpmx::md {
 
 void kick(Atoms& a, const std::vector<double>& mass, double dt, double factor) {
   const std::size_t n = a.size();
-  double inv[16];
-  const std::size_t nt = std::min<std::size_t>(mass.size(), 16);
-  for (std::size_t t = 0; t < nt; ++t) inv[t] = factor * dt * units::ftm2v / mass[t];
+  if (mass.size() == 1) {  // one type: no per-atom lookup
+    const double c = factor * dt * units::ftm2v / mass[0];
+    for (std::size_t i = 0; i < n; ++i) {
+      a.vx[i] += c * a.fx[i];
+      a.vy[i] += c * a.fy[i];
+      a.vz[i] += c * a.fz[i];
+    }
+    return;
+  }
+  std::vector<double> inv(mass.size());
+  for (std::size_t t = 0; t < mass.size(); ++t) inv[t] = factor * dt * units::ftm2v / mass[t];
   for (std::size_t i = 0; i < n; ++i) {
     const double c = inv[a.type[i]];
     a.vx[i] += c * a.fx[i];

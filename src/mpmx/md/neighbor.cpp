@@ -125,6 +125,7 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) 
     first[i + 1] = static_cast<int>(list.size());
   }
 
+  pack();
   x0_.assign(atoms.x.begin(), atoms.x.end());
   y0_.assign(atoms.y.begin(), atoms.y.end());
   z0_.assign(atoms.z.begin(), atoms.z.end());
@@ -134,15 +135,29 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) 
 }
 
 void Neighbors::update_positions(const Atoms& atoms, const Box& box) {
-  std::copy(atoms.x.begin(), atoms.x.end(), x.begin());
-  std::copy(atoms.y.begin(), atoms.y.end(), y.begin());
-  std::copy(atoms.z.begin(), atoms.z.end(), z.begin());
+  // Only the packed copy the kernels read; x, y, z keep the build-time positions.
+  double* __restrict q = xyz.data();
+  for (int i = 0; i < nlocal; ++i) {
+    q[4 * i] = atoms.x[i];
+    q[4 * i + 1] = atoms.y[i];
+    q[4 * i + 2] = atoms.z[i];
+  }
   for (int k = nlocal; k < nall; ++k) {
     const int o = owner[k];
     const int a = n1[k], b = n2[k], c = n3[k];
-    x[k] = atoms.x[o] + (a * box.lx + b * box.xy + c * box.xz);
-    y[k] = atoms.y[o] + (b * box.ly + c * box.yz);
-    z[k] = atoms.z[o] + c * box.lz;
+    q[4 * k] = atoms.x[o] + (a * box.lx + b * box.xy + c * box.xz);
+    q[4 * k + 1] = atoms.y[o] + (b * box.ly + c * box.yz);
+    q[4 * k + 2] = atoms.z[o] + c * box.lz;
+  }
+}
+
+void Neighbors::pack() {
+  xyz.resize(4 * static_cast<std::size_t>(nall));
+  for (int k = 0; k < nall; ++k) {
+    xyz[4 * k] = x[k];
+    xyz[4 * k + 1] = y[k];
+    xyz[4 * k + 2] = z[k];
+    xyz[4 * k + 3] = 0.0;
   }
 }
 

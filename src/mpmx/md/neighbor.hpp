@@ -29,7 +29,8 @@ class Neighbors {
   void forward(std::vector<double>& a) const;
 
   int nlocal = 0, nall = 0;
-  std::vector<double> x, y, z;  // locals then ghosts
+  std::vector<double> x, y, z;  // locals then ghosts, at the last build
+  std::vector<double> xyz;      // current positions packed 4 per entry (x, y, z, 0)
   std::vector<int> type;        // locals then ghosts
   std::vector<int> owner;       // local index of each entry
   std::vector<std::int8_t> n1, n2, n3;  // image indices of each entry (0 for locals)
@@ -44,6 +45,7 @@ class Neighbors {
   Box box0_;                          // box at build
   int max_n1_ = 0, max_n2_ = 0, max_n3_ = 0;
   std::vector<int> bin_start_, bin_atoms_;
+  void pack();
 };
 
 }  // namespace mpmx::md

@@ -35,7 +35,9 @@ std::vector<Mat3> binned(const Atoms& atoms, const std::vector<double>& mass,
                          const std::vector<double>& w, int nbins, double bin_volume, BinOf bin_of) {
   std::vector<Accum> acc(nbins);
   for (std::size_t i = 0; i < atoms.size(); ++i) {
-    Accum& a = acc[bin_of(i)];
+    const int b = bin_of(i);
+    if (b < 0) continue;
+    Accum& a = acc[b];
     a.add(mass[atoms.type[i]], atoms.vx[i], atoms.vy[i], atoms.vz[i]);
     for (int c = 0; c < 6; ++c) a.w[c] += w[6 * i + c];
   }
@@ -63,6 +65,16 @@ std::vector<Mat3> slab_stress(const Atoms& atoms, const std::vector<double>& mas
                               const std::vector<double>& w, const Box& box, int nbins) {
   return binned(atoms, mass, w, nbins, box.volume() / nbins,
                 [&](std::size_t i) { return index_in(atoms.x[i], box.lx, nbins); });
+}
+
+std::vector<Mat3> slab_stress(const Atoms& atoms, const std::vector<double>& mass,
+                              const std::vector<double>& w, const Box& box, int nbins, double x0,
+                              double x1) {
+  const double width = (x1 - x0) / nbins;
+  return binned(atoms, mass, w, nbins, width * box.ly * box.lz, [&](std::size_t i) {
+    const double u = (atoms.x[i] - x0) / width;
+    return u < 0 || u >= nbins ? -1 : static_cast<int>(u);
+  });
 }
 
 std::vector<Mat3> column_stress(const Atoms& atoms, const std::vector<double>& mass,

@@ -20,6 +20,12 @@ Mat3 box_stress(const Atoms& atoms, const std::vector<double>& type_mass, const 
 std::vector<Mat3> slab_stress(const Atoms& atoms, const std::vector<double>& type_mass,
                               const std::vector<double>& virial_atom, const Box& box, int nbins);
 
+// Slabs over [x0, x1) only (a bar between walls), each of volume (x1-x0)/nbins ly lz;
+// atoms outside are ignored.
+std::vector<Mat3> slab_stress(const Atoms& atoms, const std::vector<double>& type_mass,
+                              const std::vector<double>& virial_atom, const Box& box, int nbins,
+                              double x0, double x1);
+
 // Stress in nx x ny columns over x and y (2-D samples), index ix + nx * iy.
 std::vector<Mat3> column_stress(const Atoms& atoms, const std::vector<double>& type_mass,
                                 const std::vector<double>& virial_atom, const Box& box, int nx,

@@ -61,13 +61,17 @@ void System::rebuild() {
   nb_.build(atoms_, box_, pot_.cutoff(), opt_.skin);
 }
 
-void System::compute_forces() {
+void System::compute_forces(bool tally) {
   work_.per_atom = opt_.per_atom;
+  work_.tally = tally || opt_.per_atom;
   work_.reset(nb_.nall);
-  sums_ = pot_.compute(nb_, work_, opt_.mixed_precision);
-  nb_.fold(work_.fx);
-  nb_.fold(work_.fy);
-  nb_.fold(work_.fz);
+  const ForceSums s = pot_.compute(nb_, work_, opt_.mixed_precision);
+  if (work_.tally) sums_ = s;
+  if (!work_.folded) {
+    nb_.fold(work_.fx);
+    nb_.fold(work_.fy);
+    nb_.fold(work_.fz);
+  }
   const std::size_t n = atoms_.size();
   std::copy_n(work_.fx.begin(), n, atoms_.fx.begin());
   std::copy_n(work_.fy.begin(), n, atoms_.fy.begin());
@@ -77,7 +81,7 @@ void System::compute_forces() {
     for (int k = nb_.nlocal; k < nb_.nall; ++k)
       for (int c = 0; c < 6; ++c) work_.virial_atom[6 * nb_.owner[k] + c] += work_.virial_atom[6 * k + c];
   }
-  if (!std::isfinite(sums_.energy)) check_finite();
+  if (work_.tally && !std::isfinite(sums_.energy)) check_finite();
 }
 
 void System::check_finite() const {
@@ -121,13 +125,28 @@ void System::advance(int nsteps, const Mat3& grad, double dt) {
   kick(atoms_, mass_, dt, 0.5);  // eq. 5.4
   for (int s = 0; s < nsteps; ++s) {
     drift(atoms_, dt, g, affine && deforming);  // eq. 5.5
+    if (walls_.enabled) reflect(dt);
     if (deforming) box_.deform(g, dt);          // eq. 5.7
     if (nb_.needs_rebuild(atoms_, box_)) rebuild();
     else nb_.update_positions(atoms_, box_);
-    compute_forces();
+    compute_forces(s + 1 == nsteps);  // energy and virial on the last step only
     ++step_;
     time_ += dt;
     kick(atoms_, mass_, dt, s + 1 < nsteps ? 1.0 : 0.5);  // eq. 5.3; last: eq. 5.6
+  }
+}
+
+void System::reflect(double dt) {
+  walls_.lo += walls_.v_lo * dt;  // the walls' positions at the new time
+  walls_.hi += walls_.v_hi * dt;
+  for (std::size_t i = 0; i < atoms_.size(); ++i) {
+    if (atoms_.x[i] < walls_.lo) {
+      atoms_.x[i] = 2 * walls_.lo - atoms_.x[i];
+      atoms_.vx[i] = 2 * walls_.v_lo - atoms_.vx[i];
+    } else if (atoms_.x[i] > walls_.hi) {
+      atoms_.x[i] = 2 * walls_.hi - atoms_.x[i];
+      atoms_.vx[i] = 2 * walls_.v_hi - atoms_.vx[i];
+    }
   }
 }
 
@@ -211,6 +230,7 @@ void System::save(std::ostream& o) const {
   put(o, time_);
   put(o, g_);
   put(o, rng_.state());
+  put(o, walls_);
   for (auto* v : {&atoms_.x, &atoms_.y, &atoms_.z, &atoms_.vx, &atoms_.vy, &atoms_.vz})
     put_vec(o, *v);
   put_vec(o, atoms_.type);
@@ -233,6 +253,8 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   get(in, time);
   get(in, g);
   get(in, rng);
+  Walls walls;
+  get(in, walls);
   Atoms a;
   for (auto* v : {&a.x, &a.y, &a.z, &a.vx, &a.vy, &a.vz}) get_vec(in, *v, n);
   get_vec(in, a.type, n);
@@ -247,6 +269,7 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   s.time_ = time;
   s.g_ = g;
   s.rng_.set_state(rng);
+  s.walls_ = walls;
   s.refresh();
   return s;
 }

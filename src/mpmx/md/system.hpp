@@ -30,6 +30,15 @@ enum class Deformation {
   affine,    // atoms also follow the streaming motion G x (velocities are peculiar)
 };
 
+// Reflecting walls normal to x (direct-MD bars): an atom beyond a wall is mirrored,
+// x -> 2 w - x, v_x -> 2 v_w - v_x (a fixed wall for v_w = 0, a moving or
+// momentum-mirror piston otherwise); the walls move with v_w.
+struct Walls {
+  bool enabled = false;
+  double lo = 0, hi = 0;      // Angstrom
+  double v_lo = 0, v_hi = 0;  // Angstrom/ps
+};
+
 struct SystemOptions {
   double skin = 1.0;                       // Angstrom
   Deformation deformation = Deformation::boundary;
@@ -70,6 +79,8 @@ class System {
   double thermal_kinetic_energy() const;                    // eV, about the mean velocity
   double temperature() const;                               // K, 3N-3 degrees of freedom
   const Sym6& virial() const { return sums_.virial; }       // eV (pair virial sum)
+  // Per-atom virial (6 per atom, half of each pair), kept when options.per_atom.
+  const std::vector<double>& per_atom_virial() const { return work_.virial_atom; }
 
   const Atoms& atoms() const { return atoms_; }
   // Mutable access: forces are recomputed before the next use.
@@ -89,6 +100,8 @@ class System {
   double time() const { return time_; }
   std::int64_t neighbor_builds() const { return nb_.builds; }
   const Mat3& gradient() const { return g_; }
+  void set_walls(const Walls& w) { walls_ = w; }
+  const Walls& walls() const { return walls_; }
   // Forces for the current state (recomputed if atoms or box were edited).
   void refresh();
 
@@ -101,8 +114,9 @@ class System {
 
  private:
   void rebuild();
-  void compute_forces();
+  void compute_forces(bool tally = true);
   void check_finite() const;
+  void reflect(double dt);
 
   Atoms atoms_;
   Box box_;
@@ -114,6 +128,7 @@ class System {
   ForceSums sums_;
   RngStream rng_;
   Mat3 g_{};
+  Walls walls_;
   std::int64_t step_ = 0;
   double time_ = 0;
   bool valid_ = false;

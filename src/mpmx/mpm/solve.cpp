@@ -9,25 +9,28 @@ void solve_grid(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& 
   const int N = g.cells[0];
   const std::size_t i0 = g.index1(0), i1 = g.index1(N);
   double mass_sum = 0.0, force_sum = 0.0, force_abs = 0.0;
-  auto& m = g.mass;
-  auto& mom = g.momentum[0];
-  auto& v = g.velocity[0];
-  auto& vL = g.velocity_L[0];
-  auto& f = g.force[0];
+  const double* __restrict m = g.mass.data();
+  const double* __restrict mom = g.momentum[0].data();
+  double* __restrict v = g.velocity[0].data();
+  double* __restrict vL = g.velocity_L[0].data();
+  const double* __restrict f = g.force[0].data();
+#pragma omp simd reduction(+ : mass_sum, force_sum, force_abs)
   for (std::size_t i = i0; i <= i1; ++i) {
     mass_sum += m[i];
     force_sum += f[i];
     force_abs += std::abs(f[i]);
   }
-  // Nodes without mass (outside the material) stay at rest.
+  // Nodes without mass (outside the material) stay at rest. Branch-free (the divisor
+  // is 1 where unused) so the loop vectorises.
   const double tiny = 1e-14 * mass_sum / (N + 1);
+#pragma omp simd
   for (std::size_t i = i0; i <= i1; ++i) {
-    if (m[i] > tiny) {
-      v[i] = mom[i] / m[i];
-      vL[i] = v[i] + dt * f[i] / m[i];
-    } else {
-      v[i] = vL[i] = 0.0;
-    }
+    const bool has = m[i] > tiny;
+    const double mi = has ? m[i] : 1.0;
+    const double vi = mom[i] / mi;
+    const double vli = vi + dt * f[i] / mi;
+    v[i] = has ? vi : 0.0;
+    vL[i] = has ? vli : 0.0;
   }
   // Prescribed ends: v^n at t, v^L at t + dt. What they add is tallied.
   auto hold = [&](std::size_t i, const BoundarySide& side) {
@@ -53,12 +56,16 @@ void work_and_volumes(Particles<1>& p, double dt, bool small_strain, bool track_
   const double* __restrict sig = p.stress[0].data();
   const double* __restrict qv = p.viscous_pressure.data();
   const double* __restrict L = p.grad_v[0].data();
+#pragma omp simd reduction(+ : w)
   for (std::size_t q = 0; q < n; ++q) {
     w += (small_strain ? V0[q] : V[q]) * (sig[q] - qv[q]) * L[q];
     V[q] *= 1.0 + dt * L[q];
   }
-  if (track_length)
-    for (std::size_t q = 0; q < n; ++q) p.length[0][q] *= 1.0 + dt * L[q];
+  if (track_length) {
+    double* __restrict len = p.length[0].data();
+#pragma omp simd
+    for (std::size_t q = 0; q < n; ++q) len[q] *= 1.0 + dt * L[q];
+  }
   tally.stress_work += dt * w;
 }
 

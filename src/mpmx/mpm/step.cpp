@@ -1,7 +1,9 @@
 #include "mpmx/mpm/step.hpp"
 
 #include <cmath>
+#include <typeinfo>
 
+#include "mpmx/material/linear_elastic.hpp"
 #include "mpmx/mpm/solve.hpp"
 #include "mpmx/mpm/transfer.hpp"
 #include "mpmx/mpm/viscosity.hpp"
@@ -11,11 +13,29 @@ namespace mpmx::mpm {
 void step(State<1>& s, double dt) {
   auto& g = s.grid;
   auto& p = s.particles;
-  const Scheme scheme = s.shape->options().scheme;
+  const SchemeOptions& opt = s.shape->options();
+  const Scheme scheme = opt.scheme;
   if (scheme == Scheme::mpm) {                        // fused hat + transfers, same algorithm
     shape::p2g_linear(g, p, s.small_strain, s.linear_cells, g);
     solve_grid(g, s.boundary, s.time, dt, s.tallies);
+    // A linear elastic solid without viscosity: g2p, work, volumes and stress in one
+    // pass, the same algorithm as the lines below.
+    if (s.viscosity <= 0.0 && typeid(*s.material) == typeid(material::LinearElastic<1>)) {
+      const auto& mat = static_cast<const material::LinearElastic<1>&>(*s.material);
+      s.finite_check = shape::g2p_linear_elastic(g, s.linear_cells, dt, s.move, s.midpoint_gradient,
+                                                 s.small_strain, mat.youngs_modulus(), p,
+                                                 s.tallies.stress_work);
+      s.time += dt;
+      ++s.step;
+      return;
+    }
     s.finite_check = shape::g2p_linear(g, s.linear_cells, dt, s.move, s.midpoint_gradient, p);
+  } else if (scheme == Scheme::ddmp || scheme == Scheme::ddmp_subpoints) {
+    // Fused DDMP (eq. 3.31, sub-points eqs. 6.1-6.3): same algorithm as the stencil path.
+    const int sub = scheme == Scheme::ddmp ? 0 : opt.subpoints;
+    shape::p2g_ddmp(g, p, s.small_strain, sub, s.linear_cells, g);
+    solve_grid(g, s.boundary, s.time, dt, s.tallies);
+    s.finite_check = shape::g2p_ddmp(g, s.linear_cells, dt, s.move, s.midpoint_gradient, sub, p);
   } else {
     (*s.shape)(g, p, s.stencil);                      // nearest nodes afresh, S_ip, G_ip
     p2g(p, s.stencil, s.small_strain, g);             // m_i, v_i^n (eq. 3.16), f_i

@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 #include <fmt/format.h>
 
@@ -9,6 +14,10 @@
 #include "mpmx/md/potential/eam_kernel.hpp"
 
 namespace mpmx::md {
+
+// Force-pass record per knot: rho c0..c2, z2r c0..c6 (unpadded: a smaller table beats
+// line alignment, an 80-byte record touches two lines either way).
+constexpr int kPairStride = 10;
 
 void eam_spline(int n, double delta, const std::vector<double>& f, double* out) {
   auto s = [out](int m, int c) -> double& { return out[7 * m + c]; };
@@ -70,6 +79,20 @@ Eam::Eam(const EamTables& t, const std::vector<std::string>& type_elements) : fi
   rhor_f_.assign(rhor_.begin(), rhor_.end());
   z2r_f_.assign(z2r_.begin(), z2r_.end());
 
+  if (ntypes_ == 1) {
+    const int e = map_[0];
+    const double* rh = &rhor_[t.rhor_index[e * ne + e] * rr];
+    const double* z2 = &z2r_[t.z2r_index[e * ne + e] * rr];
+    rho1_.assign(4 * static_cast<std::size_t>(nr_ + 1), 0.0);
+    pair1_.assign(kPairStride * static_cast<std::size_t>(nr_ + 1), 0.0);
+    for (int m = 0; m <= nr_; ++m) {
+      for (int c = 0; c < 4; ++c) rho1_[4 * m + c] = rh[7 * m + 3 + c];
+      for (int c = 0; c < 3; ++c) pair1_[kPairStride * m + c] = rh[7 * m + c];
+      for (int c = 0; c < 7; ++c) pair1_[kPairStride * m + 3 + c] = z2[7 * m + c];
+    }
+    rho1f_.assign(rho1_.begin(), rho1_.end());
+    pair1f_.assign(pair1_.begin(), pair1_.end());
+  }
   rho_off_.resize(ntypes_ * ntypes_);
   z2r_off_.resize(ntypes_ * ntypes_);
   frho_off_.resize(ntypes_);
@@ -143,13 +166,233 @@ struct Eam::Tables {
   }
 };
 
+namespace {
+// Per-thread scratch of the one-type kernel (not part of a System's state, so thousands
+// of Systems do not each carry it): the pairs inside the cutoff found by the density
+// pass (entry, r, 1/r), reused by the force pass, and packed forces.
+struct Scratch {
+  std::vector<int> cut_first, cut_k, cut_m;
+  std::vector<double> cut_r, cut_ri;
+  std::vector<float> cut_rf, cut_rif;
+  std::vector<double> f4;
+};
+thread_local Scratch scratch;
+}  // namespace
+
+// One type: the density pass keeps the pairs inside the cutoff (entry, r), the force
+// pass walks only those. Same arithmetic as pair_eam for Real = double.
+template <class Real, bool PerAtom, bool Tally>
+ForceSums Eam::compute_one_type(const Neighbors& nb, ForceWork& w, const Real* rho_tab,
+                                const Real* pair_tab) const {
+  const int nlocal = nb.nlocal;
+  const double* __restrict q = nb.xyz.data();
+  const int* __restrict first = nb.first.data();
+  const int* __restrict list = nb.list.data();
+  double* __restrict rho = w.rho.data();
+  const double cutsq = cut_ * cut_;
+  const Real rdr = static_cast<Real>(rdr_);
+  const int nrm1 = nr_ - 1;
+
+  Scratch& sc = scratch;
+  sc.cut_first.resize(nlocal + 1);
+  sc.cut_k.resize(nb.list.size());
+  std::vector<Real>& rbuf = [&]() -> std::vector<Real>& {
+    if constexpr (std::is_same_v<Real, double>) return sc.cut_r;
+    else return sc.cut_rf;
+  }();
+  rbuf.resize(nb.list.size());
+  std::vector<Real>& ribuf = [&]() -> std::vector<Real>& {
+    if constexpr (std::is_same_v<Real, double>) return sc.cut_ri;
+    else return sc.cut_rif;
+  }();
+  ribuf.resize(nb.list.size());
+  int* __restrict ck = sc.cut_k.data();
+  int* __restrict cfirst = sc.cut_first.data();
+  sc.cut_m.resize(nb.list.size());
+  int* __restrict cm = sc.cut_m.data();
+  Real* __restrict cr = rbuf.data();
+  Real* __restrict cri = ribuf.data();
+
+  auto locate = [&](Real r, Real& p, int& m) {
+    p = r * rdr + Real(1);
+    m = static_cast<int>(p);
+    m = std::min(m, nrm1);
+    p -= static_cast<Real>(m);
+    p = std::min(p, Real(1));
+  };
+
+  // In blocks of atoms (so the pair data just written is still in cache): filter the
+  // candidates (branch-free: the in/out decision is unpredictable), r and 1/r in one
+  // contiguous sweep (packed sqrt and division are correctly rounded: bit-identical to
+  // the scalar operations), then the density; knot and offset are kept for the force pass.
+  constexpr int kBlock = 64;
+  int npair = 0;
+  for (int i0 = 0; i0 < nlocal; i0 += kBlock) {
+    const int i1 = std::min(nlocal, i0 + kBlock);
+    const int start = npair;
+    for (int i = i0; i < i1; ++i) {
+      cfirst[i] = npair;
+      const double xi = q[4 * i], yi = q[4 * i + 1], zi = q[4 * i + 2];
+      for (int s = first[i]; s < first[i + 1]; ++s) {
+        const int k = list[s];
+        const double dx = xi - q[4 * k], dy = yi - q[4 * k + 1], dz = zi - q[4 * k + 2];
+        const double rsq = dx * dx + dy * dy + dz * dz;
+        ck[npair] = k;
+        cr[npair] = static_cast<Real>(rsq);
+        npair += rsq < cutsq;
+      }
+    }
+    cfirst[i1] = npair;
+    int s0 = start;
+#if defined(__SSE2__)
+    if constexpr (std::is_same_v<Real, double>) {
+      const __m128d one = _mm_set1_pd(1.0);
+      for (; s0 + 2 <= npair; s0 += 2) {
+        const __m128d r = _mm_sqrt_pd(_mm_loadu_pd(cr + s0));
+        _mm_storeu_pd(cr + s0, r);
+        _mm_storeu_pd(cri + s0, _mm_div_pd(one, r));
+      }
+    } else {
+      const __m128 one = _mm_set1_ps(1.0f);
+      for (; s0 + 4 <= npair; s0 += 4) {
+        const __m128 r = _mm_sqrt_ps(_mm_loadu_ps(cr + s0));
+        _mm_storeu_ps(cr + s0, r);
+        _mm_storeu_ps(cri + s0, _mm_div_ps(one, r));
+      }
+    }
+#endif
+    for (int s = s0; s < npair; ++s) {
+      const Real r = std::sqrt(cr[s]);
+      cr[s] = r;
+      cri[s] = Real(1) / r;
+    }
+    for (int i = i0; i < i1; ++i) {
+      double rho_i = 0;
+      for (int s = cfirst[i]; s < cfirst[i + 1]; ++s) {
+        const int k = ck[s];
+        Real p;
+        int m;
+        locate(cr[s], p, m);
+        cr[s] = p;
+        cm[s] = m;
+        const Real* c = rho_tab + 4 * m;
+        const Real v = ((c[0] * p + c[1]) * p + c[2]) * p + c[3];
+        rho_i += v;
+        rho[k] += v;
+      }
+      rho[i] += rho_i;
+    }
+  }
+  nb.fold(w.rho);
+
+  const double* frho = frho_.data() + frho_off_[0];
+  double embed = 0;
+  for (int i = 0; i < nlocal; ++i) {
+    double p = rho[i] * rdrho_ + 1.0;
+    int m = static_cast<int>(p);
+    m = std::max(1, std::min(m, nrho_ - 1));
+    p -= m;
+    p = std::min(p, 1.0);
+    const double* c = frho + 7 * m;
+    const double fp = (c[0] * p + c[1]) * p + c[2];
+    double F = ((c[3] * p + c[4]) * p + c[5]) * p + c[6];
+    if (rho[i] > rhomax_) F += fp * (rho[i] - rhomax_);
+    w.fp[i] = fp;
+    if constexpr (Tally) embed += F;
+    if constexpr (PerAtom) w.energy_atom[i] += F;
+  }
+  nb.forward(w.fp);
+
+  const double* __restrict fpa = w.fp.data();
+  sc.f4.assign(4 * static_cast<std::size_t>(nb.nall), 0.0);
+  double* __restrict f = sc.f4.data();
+  double epair = 0, vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0;
+  for (int i = 0; i < nlocal; ++i) {
+    const double xi = q[4 * i], yi = q[4 * i + 1], zi = q[4 * i + 2];
+    const Real fpi = static_cast<Real>(fpa[i]);
+    double fxi = 0, fyi = 0, fzi = 0;
+    for (int s = cfirst[i]; s < cfirst[i + 1]; ++s) {
+      const int k = ck[s];
+      const Real p = cr[s];
+      const Real* c = pair_tab + kPairStride * cm[s];
+      const Real rhop = (c[0] * p + c[1]) * p + c[2];
+      const Real z2p = (c[3] * p + c[4]) * p + c[5];
+      const Real z2 = ((c[6] * p + c[7]) * p + c[8]) * p + c[9];
+      const Real recip = cri[s];
+      const Real phi = z2 * recip;
+      const Real phip = z2p * recip - phi * recip;
+      const Real psip = fpi * rhop + static_cast<Real>(fpa[k]) * rhop + phip;
+      const double fpair = -psip * recip;
+      const double dx = xi - q[4 * k], dy = yi - q[4 * k + 1], dz = zi - q[4 * k + 2];
+      const double ffx = dx * fpair, ffy = dy * fpair, ffz = dz * fpair;
+      fxi += ffx;
+      fyi += ffy;
+      fzi += ffz;
+      f[4 * k] -= ffx;
+      f[4 * k + 1] -= ffy;
+      f[4 * k + 2] -= ffz;
+      if constexpr (Tally) epair += phi;
+      if constexpr (PerAtom) {
+        w.energy_atom[i] += 0.5 * phi;
+        w.energy_atom[k] += 0.5 * phi;
+        const double v6[6] = {dx * ffx, dy * ffy, dz * ffz, dx * ffy, dx * ffz, dy * ffz};
+        for (int q = 0; q < 6; ++q) {
+          w.virial_atom[6 * i + q] += 0.5 * v6[q];
+          w.virial_atom[6 * k + q] += 0.5 * v6[q];
+        }
+      }
+    }
+    f[4 * i] += fxi;
+    f[4 * i + 1] += fyi;
+    f[4 * i + 2] += fzi;
+  }
+  ForceSums sums;
+  if constexpr (Tally) {
+    // Virial as sum over locals and ghosts of x f (before ghost forces are folded):
+    // equal to the pair sum of r_ab f_ab (eq. 2.25), as LAMMPS's fdotr.
+    for (int k = 0; k < nb.nall; ++k) {
+      const double* xk = q + 4 * k;
+      const double* fk = f + 4 * k;
+      vxx += xk[0] * fk[0], vyy += xk[1] * fk[1], vzz += xk[2] * fk[2];
+      vxy += xk[0] * fk[1], vxz += xk[0] * fk[2], vyz += xk[1] * fk[2];
+    }
+    sums.energy = embed + epair;
+    sums.virial = {vxx, vyy, vzz, vxy, vxz, vyz};
+  }
+  // Ghost forces into their owners, then the locals out.
+  const int* owner = nb.owner.data();
+  for (int k = nlocal; k < nb.nall; ++k) {
+    double* fo = f + 4 * owner[k];
+    fo[0] += f[4 * k], fo[1] += f[4 * k + 1], fo[2] += f[4 * k + 2];
+  }
+  double* __restrict fx = w.fx.data();
+  double* __restrict fy = w.fy.data();
+  double* __restrict fz = w.fz.data();
+  for (int k = 0; k < nlocal; ++k) fx[k] = f[4 * k], fy[k] = f[4 * k + 1], fz[k] = f[4 * k + 2];
+  w.folded = true;
+  return sums;
+}
+
+template <class Real>
+ForceSums Eam::dispatch_one_type(const Neighbors& nb, ForceWork& w, const Real* rho_tab, const Real* pair_tab) const {
+  if (w.per_atom) return compute_one_type<Real, true, true>(nb, w, rho_tab, pair_tab);
+  if (w.tally) return compute_one_type<Real, false, true>(nb, w, rho_tab, pair_tab);
+  return compute_one_type<Real, false, false>(nb, w, rho_tab, pair_tab);
+}
+
 ForceSums Eam::compute(const Neighbors& nb, ForceWork& w) const {
+  if (ntypes_ == 1) {
+    return dispatch_one_type<double>(nb, w, rho1_.data(), pair1_.data());
+  }
   const Tables<double> t{rhor_.data(), z2r_.data(), frho_.data(), rho_off_.data(), z2r_off_.data(),
                          frho_off_.data(), ntypes_, nr_, nrho_, rdr_, rdrho_, rhomax_, cut_};
   return eam_compute<double>(t, nb, w);
 }
 
 ForceSums Eam::compute_mixed(const Neighbors& nb, ForceWork& w) const {
+  if (ntypes_ == 1) {
+    return dispatch_one_type<float>(nb, w, rho1f_.data(), pair1f_.data());
+  }
   const Tables<float> t{rhor_f_.data(), z2r_f_.data(), frho_.data(), rho_off_.data(),
                         z2r_off_.data(), frho_off_.data(), ntypes_, nr_, nrho_,
                         static_cast<float>(rdr_), rdrho_, rhomax_, cut_};

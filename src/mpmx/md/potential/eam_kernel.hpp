@@ -15,10 +15,9 @@ namespace mpmx::md {
 // returns {phi, dE/dr}; all in Real. cutsq() in double.
 template <class Real, class Fn>
 ForceSums eam_compute(const Fn& fn, const Neighbors& nb, ForceWork& w) {
+  w.zero_forces();
   const int nlocal = nb.nlocal;
-  const double* __restrict x = nb.x.data();
-  const double* __restrict y = nb.y.data();
-  const double* __restrict z = nb.z.data();
+  const double* __restrict q = nb.xyz.data();
   const int* __restrict type = nb.type.data();
   const int* __restrict first = nb.first.data();
   const int* __restrict list = nb.list.data();
@@ -26,14 +25,14 @@ ForceSums eam_compute(const Fn& fn, const Neighbors& nb, ForceWork& w) {
   const Real cutsq = static_cast<Real>(fn.cutsq());
 
   for (int i = 0; i < nlocal; ++i) {
-    const double xi = x[i], yi = y[i], zi = z[i];
+    const double xi = q[4 * i], yi = q[4 * i + 1], zi = q[4 * i + 2];
     const int ti = type[i];
     double rho_i = 0;
     for (int s = first[i]; s < first[i + 1]; ++s) {
       const int k = list[s];
-      const Real dx = static_cast<Real>(xi - x[k]);
-      const Real dy = static_cast<Real>(yi - y[k]);
-      const Real dz = static_cast<Real>(zi - z[k]);
+      const Real dx = static_cast<Real>(xi - q[4 * k]);
+      const Real dy = static_cast<Real>(yi - q[4 * k + 1]);
+      const Real dz = static_cast<Real>(zi - q[4 * k + 2]);
       const Real rsq = dx * dx + dy * dy + dz * dz;
       if (rsq < cutsq) {
         Real at_i, at_k;
@@ -63,15 +62,15 @@ ForceSums eam_compute(const Fn& fn, const Neighbors& nb, ForceWork& w) {
   double* __restrict fz = w.fz.data();
   double epair = 0, vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0;
   for (int i = 0; i < nlocal; ++i) {
-    const double xi = x[i], yi = y[i], zi = z[i];
+    const double xi = q[4 * i], yi = q[4 * i + 1], zi = q[4 * i + 2];
     const int ti = type[i];
     const Real fpi = static_cast<Real>(fp[i]);
     double fxi = 0, fyi = 0, fzi = 0;
     for (int s = first[i]; s < first[i + 1]; ++s) {
       const int k = list[s];
-      const Real dx = static_cast<Real>(xi - x[k]);
-      const Real dy = static_cast<Real>(yi - y[k]);
-      const Real dz = static_cast<Real>(zi - z[k]);
+      const Real dx = static_cast<Real>(xi - q[4 * k]);
+      const Real dy = static_cast<Real>(yi - q[4 * k + 1]);
+      const Real dz = static_cast<Real>(zi - q[4 * k + 2]);
       const Real rsq = dx * dx + dy * dy + dz * dz;
       if (rsq < cutsq) {
         const Real r = std::sqrt(rsq);

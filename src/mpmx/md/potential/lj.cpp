@@ -28,12 +28,14 @@ double LennardJones::dphi(double r) const {
 }
 
 ForceSums LennardJones::compute(const Neighbors& nb, ForceWork& w) const {
+  w.zero_forces();
   ForceSums s;
   const double cutsq = cut_ * cut_, s2 = sigma_ * sigma_;
   for (int i = 0; i < nb.nlocal; ++i) {
-    for (int q = nb.first[i]; q < nb.first[i + 1]; ++q) {
-      const int k = nb.list[q];
-      const double dx = nb.x[i] - nb.x[k], dy = nb.y[i] - nb.y[k], dz = nb.z[i] - nb.z[k];
+    for (int s_ = nb.first[i]; s_ < nb.first[i + 1]; ++s_) {
+      const int k = nb.list[s_];
+      const double* q = nb.xyz.data();
+      const double dx = q[4 * i] - q[4 * k], dy = q[4 * i + 1] - q[4 * k + 1], dz = q[4 * i + 2] - q[4 * k + 2];
       const double rsq = dx * dx + dy * dy + dz * dz;
       if (rsq >= cutsq) continue;
       const double sr2 = s2 / rsq, sr6 = sr2 * sr2 * sr2;

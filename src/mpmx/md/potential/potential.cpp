@@ -16,8 +16,7 @@ std::string resolve_potential_file(const std::string& name, const std::string& d
   if (p.is_absolute()) {
     tried.push_back(p);
   } else {
-    if (!deck_dir.empty()) tried.push_back(fs::path(deck_dir) / p);
-    tried.push_back(p);
+    tried.push_back(deck_dir.empty() ? p : fs::path(deck_dir) / p);
     tried.push_back(fs::path("/usr/share/lammps/potentials") / p);
   }
   for (const auto& t : tried)

@@ -23,8 +23,8 @@ struct PotentialSpec {
   bool shift = false;                   // lj: shift energy to zero at the cutoff
 };
 
-// Finds a potential file: as given, else relative to `deck_dir`, else in
-// /usr/share/lammps/potentials. Throws InputError listing the places tried.
+// Finds a potential file: an absolute path as given; a relative one against `deck_dir`
+// (the working directory when empty), then in /usr/share/lammps/potentials. Throws InputError listing the places tried.
 std::string resolve_potential_file(const std::string& name, const std::string& deck_dir);
 
 class Potential {

@@ -1,120 +1,351 @@
 #include "mpmx/mpm/shape/linear_fused.hpp"
 
 #include <algorithm>
+#include <cmath>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
+#include "mpmx/mpm/shape/ddmp.hpp"
 #include "mpmx/mpm/shape/hat.hpp"
 
 namespace mpmx::mpm::shape {
 
-void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume, LinearCells& lc,
-                Grid<1>& g) {
+namespace {
+
+// Cell (clamped to the grid, eq. 3.9: the flat continuation past the ends) and fraction
+// of a point at xi in cell units, as locate(clamp_to_grid(xi)) but free of int round
+// trips so that loops over it vectorise. xc >= 0: truncation is floor.
+struct Cell {
+  double c, f;
+};
+inline Cell cell_of(double xi, double top) {
+  const double xc = std::min(std::max(xi, 0.0), top);
+  const double cc = std::min(static_cast<double>(static_cast<int>(xc)), top - 1.0);
+  return {cc, xc - cc};
+}
+
+// alpha of eq. 3.27 (as ddmp_alpha); q >= 0 always, so sqrt needs no errno path.
+inline double alpha(double f) {
+  const double q = 4.0 * f * (1.0 - f);
+  return 0.5 * q * __builtin_sqrt(q);
+}
+
+// Pass 1 kernel (vectorises): cell, fraction and gradient of every particle; returns
+// whether any lies more than a cell past the grid.
+[[gnu::noinline]] int locate_kernel(std::size_t n, const double* __restrict x, double x0, double inv, double top,
+                  int* __restrict cell, double* __restrict frac, double* __restrict grad) {
+  int outside = 0;
+#pragma omp simd reduction(| : outside)
+  for (std::size_t q = 0; q < n; ++q) {
+    const double xi = (x[q] - x0) * inv;
+    outside |= !(xi >= -1.0) | !(xi <= top + 1.0);  // `|`, not `||`: no branch
+    const Cell cf = cell_of(xi, top);
+    cell[q] = static_cast<int>(cf.c);
+    frac[q] = cf.f;
+    grad[q] = ((xi >= 0.0) & (xi <= top)) ? inv : 0.0;
+  }
+  return outside;
+}
+
+// Pass 1: locate every particle (stops the run for one off the grid). Returns whether
+// the particles still lie in cell order (in 1-D they keep it unless they cross).
+bool locate_all(const Grid<1>& g, const Particles<1>& p, LinearCells& lc) {
   const std::size_t n = p.size();
   const int cells = g.cells[0];
   lc.cell.resize(n);
   lc.frac.resize(n);
   lc.grad.resize(n);
-  const std::size_t stride = static_cast<std::size_t>(cells);
-  lc.sums.assign(5 * stride, 0.0);
   const double x0 = g.lower[0], inv = g.inv_dx[0];
-  const double* __restrict x = p.x[0].data();
-  const double* __restrict v = p.v[0].data();
-  const double* __restrict m = p.mass.data();
-  const double* __restrict vol = reference_volume ? p.volume0.data() : p.volume.data();
-  const double* __restrict sig = p.stress[0].data();
-  const double* __restrict qv = p.viscous_pressure.data();
-  int* __restrict cell = lc.cell.data();
-  double* __restrict frac = lc.frac.data();
-  double* __restrict grad = lc.grad.data();
-
-  // Pass 1 (vectorises): cell, fraction and gradient of every particle, and whether the
-  // particles still lie in cell order (in 1-D they keep their order unless they cross).
-  const double top = static_cast<double>(cells), last = top - 1.0;
-  long outside = 0;
-  int unordered = 0;
-  for (std::size_t q = 0; q < n; ++q) {
-    const double xi = (x[q] - x0) * inv;
-    outside += !(xi >= -1.0 && xi <= top + 1.0);
-    const double xc = xi < 0.0 ? 0.0 : (xi > top ? top : xi);
-    const double cf = static_cast<double>(static_cast<int>(xc));  // xc >= 0: floor
-    const double cc = cf > last ? last : cf;
-    cell[q] = static_cast<int>(cc);
-    frac[q] = xc - cc;
-    grad[q] = (xi >= 0.0 && xi <= top) ? inv : 0.0;
-  }
-  if (outside)
+  const double* x = p.x[0].data();
+  if (locate_kernel(n, x, x0, inv, cells, lc.cell.data(), lc.frac.data(), lc.grad.data()))
     for (std::size_t q = 0; q < n; ++q) require_inside((x[q] - x0) * inv, cells, q, x[q]);
+  const int* __restrict cell = lc.cell.data();
+  int unordered = 0;
+#pragma omp simd reduction(| : unordered)
   for (std::size_t q = 1; q < n; ++q) unordered |= cell[q] < cell[q - 1];
+  lc.ordered = !unordered;
+  return lc.ordered;
+}
 
-  // Pass 2: per-cell sums. In cell order, a running sum restarted at each new cell and
-  // stored after every particle leaves each cell's total in place without a branch;
-  // otherwise plain accumulation.
-  double* __restrict S0 = lc.sums.data();
-  double* __restrict S1 = S0 + stride;
-  double* __restrict S2 = S1 + stride;
-  double* __restrict S3 = S2 + stride;
-  double* __restrict S4 = S3 + stride;
-  if (!unordered) {
-    double a0 = 0, a1 = 0, a2 = 0, a3 = 0, a4 = 0;
-    int prev = -1;
-    for (std::size_t q = 0; q < n; ++q) {
-      const int c = cell[q];
-      const double keep = c == prev ? 1.0 : 0.0;
-      const double mf = m[q] * frac[q], mv = m[q] * v[q];
-      a0 = a0 * keep + m[q];
-      a1 = a1 * keep + mf;
-      a2 = a2 * keep + mv;
-      a3 = a3 * keep + mv * frac[q];
-      a4 = a4 * keep + vol[q] * (sig[q] - qv[q]) * grad[q];
-      S0[c] = a0, S1[c] = a1, S2[c] = a2, S3[c] = a3, S4[c] = a4;
-      prev = c;
-    }
-  } else {
-    for (std::size_t q = 0; q < n; ++q) {
-      const int c = cell[q];
-      const double mf = m[q] * frac[q], mv = m[q] * v[q];
-      S0[c] += m[q], S1[c] += mf, S2[c] += mv, S3[c] += mv * frac[q];
-      S4[c] += vol[q] * (sig[q] - qv[q]) * grad[q];
-    }
+// Scratch that only grows: a resize back up would zero-fill it every step.
+inline void grow(std::vector<double>& v, std::size_t size) {
+  if (v.size() < size) v.resize(size);
+}
+
+// Zero cells padding the per-cell sums at each end (DDMP sub-points reach two cells over).
+constexpr std::size_t kPad = 2;
+
+// Pass 2: per-cell sums of NS per-particle fields val[f * n + q] (m, m f, m v, m v f,
+// then the force fields) into S[f * stride + cell + kPad] (zeroed here; pads stay zero).
+// In cell order, a running sum restarted at each new cell and stored after every
+// particle leaves each cell's total in place without a branch; two chains over halves
+// that start at a new cell (so they never share a cell) hide the latency of the sums.
+// Each cell's sum is taken in particle order either way. Otherwise plain accumulation.
+template <int NS>
+struct Chain {
+  double a[NS];
+  int prev;
+};
+
+template <int NS>
+[[gnu::always_inline]] inline void chain_add(Chain<NS>& ch, std::size_t q, const int* __restrict cell,
+                                             const double* __restrict val, std::size_t n,
+                                             double* __restrict S, std::size_t stride) {
+  const int c = cell[q];
+  const double keep = c == ch.prev ? 1.0 : 0.0;
+  double* s = S + c + kPad;
+#pragma GCC unroll 8
+  for (int f = 0; f < NS; ++f) {
+    ch.a[f] = ch.a[f] * keep + val[f * n + q];
+    s[f * stride] = ch.a[f];
   }
+  ch.prev = c;
+}
 
-  // Pass 3: nodes. Node i takes (sum m - sum m f) of cell i and sum m f of cell i-1;
-  // the force is +V sigma/dx from cell i and -V sigma/dx from cell i-1 (G = -1/dx, +1/dx).
-  std::fill(g.mass.begin(), g.mass.end(), 0.0);
-  std::fill(g.momentum[0].begin(), g.momentum[0].end(), 0.0);
-  std::fill(g.force[0].begin(), g.force[0].end(), 0.0);
-  double* __restrict M = g.mass.data() + Grid<1>::ghost;
-  double* __restrict P = g.momentum[0].data() + Grid<1>::ghost;
-  double* __restrict F = g.force[0].data() + Grid<1>::ghost;
-  for (int c = 0; c < cells; ++c) {
-    M[c] += S0[c] - S1[c];
-    M[c + 1] += S1[c];
-    P[c] += S2[c] - S3[c];
-    P[c + 1] += S3[c];
-    F[c] += S4[c];
-    F[c + 1] -= S4[c];
+template <int NS>
+[[gnu::noinline]] void cell_sums(const LinearCells& lc, std::size_t n, bool ordered,
+                                 std::size_t stride, double* __restrict S) {
+  std::fill(S, S + NS * stride, 0.0);
+  const int* __restrict cell = lc.cell.data();
+  const double* __restrict val = lc.val.data();
+  if (!ordered) {
+    for (std::size_t q = 0; q < n; ++q) {
+      const std::size_t c = static_cast<std::size_t>(cell[q]) + kPad;
+      for (int f = 0; f < NS; ++f) S[f * stride + c] += val[f * n + q];
+    }
+    return;
+  }
+  // Two chains: the stores (NS per particle) bound the loop beyond that.
+  std::size_t mid = n / 2;
+  while (mid > 0 && mid < n && cell[mid] == cell[mid - 1]) ++mid;
+  Chain<NS> c0{{}, -1}, c1{{}, -1};
+  const std::size_t len = std::min(mid, n - mid);
+  for (std::size_t j = 0; j < len; ++j) {
+    chain_add(c0, j, cell, val, n, S, stride);
+    chain_add(c1, mid + j, cell, val, n, S, stride);
+  }
+  for (std::size_t q = len; q < mid; ++q) chain_add(c0, q, cell, val, n, S, stride);
+  for (std::size_t q = mid + len; q < n; ++q) chain_add(c1, q, cell, val, n, S, stride);
+}
+
+// The mass and momentum fields of pass 2 (vectorises): m, m f, m v, m v f.
+[[gnu::noinline]] void mass_fields(std::size_t n, const double* __restrict m,
+                                   const double* __restrict v, const double* __restrict frac,
+                                   double* __restrict val) {
+#pragma omp simd
+  for (std::size_t q = 0; q < n; ++q) {
+    const double mv = m[q] * v[q];
+    val[q] = m[q];
+    val[n + q] = m[q] * frac[q];
+    val[2 * n + q] = mv;
+    val[3 * n + q] = mv * frac[q];
   }
 }
 
-double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
-                  Particles<1>& p) {
-  const double wl = midpoint ? 0.5 : 1.0, wn = midpoint ? 0.5 : 0.0;
+// Pass 3, mass and momentum: node i takes (sum m - sum m f) of cell i and sum m f of
+// cell i-1 (S = 1 - f, f). Written, not accumulated: no fill, no chain through memory.
+void node_mass_momentum(const double* __restrict S, std::size_t stride, int cells, Grid<1>& g) {
+  const double* __restrict S0 = S + kPad;
+  const double* __restrict S1 = S0 + stride;
+  const double* __restrict S2 = S1 + stride;
+  const double* __restrict S3 = S2 + stride;
+  double* __restrict M = g.mass.data() + Grid<1>::ghost;
+  double* __restrict P = g.momentum[0].data() + Grid<1>::ghost;
+#pragma omp simd
+  for (int c = 0; c <= cells; ++c) {
+    M[c] = S1[c - 1] + (S0[c] - S1[c]);
+    P[c] = S3[c - 1] + (S2[c] - S3[c]);
+  }
+  g.mass.front() = g.mass.back() = 0.0;
+  g.momentum[0].front() = g.momentum[0].back() = 0.0;
+}
+
+// The DDMP operator D (eq. 3.31), kept per node storage index.
+void ddmp_table(const Grid<1>& g, LinearCells& lc) {
+  if (lc.dm.size() == g.storage) return;
+  DdmpTable t(g);
+  lc.dm = t.dm, lc.dc = t.d0, lc.dp = t.dp;
+}
+
+// A sub-point's cell and weights (eq. 3.31 at xi): as add_ddmp_gradient.
+struct SubWeights {
+  int c;
+  double a, b0, b1;  // alpha, (1 - alpha)(1 - f), (1 - alpha) f
+};
+inline SubWeights sub_weights(double xi, double top) {
+  const Cell cf = cell_of(xi, top);
+  const double a = alpha(cf.f), b = 1.0 - a;
+  return {static_cast<int>(cf.c), a, b * (1.0 - cf.f), b * cf.f};
+}
+
+// Sub-point s of a particle at xi with half width h and spacing step (cell units), as
+// evaluate_ddmp_subpoints places them.
+inline double sub_h(double len, double inv, int n_sub) {
+  return 0.5 * len * inv * (1.0 - 1.0 / n_sub);
+}
+inline double sub_step(double h, int n_sub) { return n_sub > 1 ? 2.0 * h / (n_sub - 1) : 0.0; }
+
+// out = sqrt(in) elementwise. std::sqrt keeps errno's slow path in a loop and stops it
+// vectorising; the SIMD square root is the same correctly rounded IEEE operation.
+void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out) {
+  std::size_t q = 0;
+#if defined(__AVX__)
+  for (; q + 4 <= n; q += 4) _mm256_storeu_pd(out + q, _mm256_sqrt_pd(_mm256_loadu_pd(in + q)));
+#elif defined(__SSE2__)
+  for (; q + 2 <= n; q += 2) _mm_storeu_pd(out + q, _mm_sqrt_pd(_mm_loadu_pd(in + q)));
+#endif
+  for (; q < n; ++q) out[q] = std::sqrt(in[q]);
+}
+
+// DDMP weights of every particle: W[0..2] = alpha, (1-alpha)(1-f), (1-alpha) f at the
+// particle (as ddmp_alpha and add_ddmp_gradient). `tmp`: 2 n scratch.
+[[gnu::noinline]] void ddmp_weights(std::size_t n, const double* __restrict frac, double* __restrict W,
+                  double* __restrict tmp) {
+  double* __restrict r = tmp;
+  double* __restrict sq = tmp + n;
+#pragma omp simd
+  for (std::size_t q = 0; q < n; ++q) r[q] = 4.0 * frac[q] * (1.0 - frac[q]);
+  sqrt_all(n, r, sq);
+#pragma omp simd
+  for (std::size_t q = 0; q < n; ++q) {
+    const double f = frac[q], a = 0.5 * r[q] * sq[q], b = 1.0 - a;
+    W[q] = a, W[n + q] = b * (1.0 - f), W[2 * n + q] = b * f;
+  }
+}
+
+// Sub-point s (at start + s step, in cell units) of every particle added to the
+// weights W (see subpoint_weights); far[q] set where it lies more than a cell from
+// the particle's cell cq. The first sub-point (First) starts the sums: no zero fill.
+// `tmp`: 4 n scratch.
+template <bool First>
+[[gnu::noinline]] void subpoint_add(std::size_t n, const double* __restrict start, const double* __restrict step,
+                  const double* __restrict cq, double s, double top, double* __restrict W,
+                  int* __restrict far, double* __restrict tmp) {
+  double* __restrict fr = tmp;
+  double* __restrict r = tmp + n;
+  double* __restrict sq = tmp + 2 * n;
+  double* __restrict d = tmp + 3 * n;
+#pragma omp simd
+  for (std::size_t q = 0; q < n; ++q) {
+    const Cell cf = cell_of(start[q] + s * step[q], top);
+    fr[q] = cf.f;
+    r[q] = 4.0 * cf.f * (1.0 - cf.f);
+    d[q] = cf.c - cq[q];
+  }
+  sqrt_all(n, r, sq);
+#pragma omp simd
+  for (std::size_t q = 0; q < n; ++q) {
+    const double f = fr[q], al = 0.5 * r[q] * sq[q], be = 1.0 - al;
+    const double b0 = be * (1.0 - f), b1 = be * f;
+    const bool m = d[q] == -1.0, z = d[q] == 0.0, p = d[q] == 1.0;
+    const double w0[7] = {m ? al : 0.0, z ? al : 0.0, p ? al : 0.0, m ? b0 : 0.0,
+                          (m ? b1 : 0.0) + (z ? b0 : 0.0), (z ? b1 : 0.0) + (p ? b0 : 0.0),
+                          p ? b1 : 0.0};
+    if constexpr (First) {
+      far[q] = !(m | z | p);
+      for (int k = 0; k < 7; ++k) W[k * n + q] = 0.0 + w0[k];  // as summing from zero
+    } else {
+      far[q] |= !(m | z | p);
+      for (int k = 0; k < 7; ++k) W[k * n + q] += w0[k];
+    }
+  }
+}
+
+// Sub-point weights of every particle, sorted by the sub-point's cell relative to the
+// particle's cell c: W[0..2] = <alpha> in cells c-1, c, c+1; W[3..6] = <(1-alpha) S_j>
+// at nodes j = c-1 .. c+2 (S_j the hat of the sub-point's cell); the average is over
+// the n_sub points (equal volumes, eq. 6.2). Returns whether any particle has a
+// sub-point further away (far[q]; those are handled apart). `tmp`: 7 n scratch.
+int subpoint_weights(std::size_t n, const double* __restrict x, const double* __restrict len,
+                     const int* __restrict cell, double x0, double inv, double top, int ns,
+                     double* __restrict W, int* __restrict far, double* __restrict tmp) {
+  double* __restrict start = tmp;
+  double* __restrict step = tmp + n;
+  double* __restrict cq = tmp + 2 * n;
+#pragma omp simd
+  for (std::size_t q = 0; q < n; ++q) {
+    const double xi = (x[q] - x0) * inv;
+    const double h = sub_h(len[q], inv, ns);
+    start[q] = xi - h;
+    step[q] = sub_step(h, ns);
+    cq[q] = cell[q];
+  }
+  subpoint_add<true>(n, start, step, cq, 0, top, W, far, tmp + 3 * n);
+  for (int s = 1; s < ns; ++s) subpoint_add<false>(n, start, step, cq, s, top, W, far, tmp + 3 * n);
+  const double w = 1.0 / ns;
+#pragma omp simd
+  for (std::size_t k = 0; k < 7 * n; ++k) W[k] *= w;
+  int any = 0;
+#pragma omp simd reduction(| : any)
+  for (std::size_t q = 0; q < n; ++q) any |= far[q];
+  return any;
+}
+
+}  // namespace
+
+void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume, LinearCells& lc,
+                Grid<1>& g) {
+  const int cells = g.cells[0];
+  const bool ordered = locate_all(g, p, lc);
+  const std::size_t stride = static_cast<std::size_t>(cells) + 2 * kPad;
+  lc.sums.resize(5 * stride);
+  const double* __restrict vol = reference_volume ? p.volume0.data() : p.volume.data();
+  const double* __restrict sig = p.stress[0].data();
+  const double* __restrict qv = p.viscous_pressure.data();
+  const double* __restrict grad = lc.grad.data();
   const std::size_t n = p.size();
+  grow(lc.val, 5 * n);
+  double* __restrict val = lc.val.data();
+  mass_fields(n, p.mass.data(), p.v[0].data(), lc.frac.data(), val);
+#pragma omp simd
+  for (std::size_t q = 0; q < n; ++q) val[4 * n + q] = vol[q] * (sig[q] - qv[q]) * grad[q];
+  double* S = lc.sums.data();
+  cell_sums<5>(lc, n, ordered, stride, S);
+  node_mass_momentum(S, stride, cells, g);
+  // The force is +V sigma/dx from cell i and -V sigma/dx from cell i-1 (G = -1/dx, +1/dx).
+  const double* __restrict S4 = S + 4 * stride + kPad;
+  double* __restrict F = g.force[0].data() + Grid<1>::ghost;
+#pragma omp simd
+  for (int c = 0; c <= cells; ++c) F[c] = S4[c] - S4[c - 1];
+  g.force[0].front() = g.force[0].back() = 0.0;
+}
+
+namespace {
+
+// Per-cell node values for g2p: dv at the left node and its jump, and the same for the
+// velocity v^{n+1/2} or v^L that moves the particle and gives grad v.
+void cell_tables(const Grid<1>& g, LinearCells& lc, bool midpoint) {
+  const double wl = midpoint ? 0.5 : 1.0, wn = midpoint ? 0.5 : 0.0;
   const int cells = g.cells[0];
   const double* __restrict VL = g.velocity_L[0].data() + Grid<1>::ghost;
   const double* __restrict VN = g.velocity[0].data() + Grid<1>::ghost;
-  lc.d0.resize(cells);
-  lc.dd.resize(cells);
-  lc.g0.resize(cells);
-  lc.dg.resize(cells);
+  lc.d0.resize(cells + 8);  // padded for expand_cells
+  lc.dd.resize(cells + 8);  // padded for expand_cells
+  lc.g0.resize(cells + 8);  // padded for expand_cells
+  lc.dg.resize(cells + 8);  // padded for expand_cells
   double* __restrict d0 = lc.d0.data();
   double* __restrict dd = lc.dd.data();
   double* __restrict g0 = lc.g0.data();
   double* __restrict dg = lc.dg.data();
+#pragma omp simd
   for (int c = 0; c < cells; ++c) {
     const double a = VL[c] - VN[c], b = VL[c + 1] - VN[c + 1];
     const double u = wl * VL[c] + wn * VN[c], w = wl * VL[c + 1] + wn * VN[c + 1];
     d0[c] = a, dd[c] = b - a, g0[c] = u, dg[c] = w - u;
   }
+}
+
+}  // namespace
+
+double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
+                  Particles<1>& p) {
+  cell_tables(g, lc, midpoint);
+  const std::size_t n = p.size();
+  const double* __restrict d0 = lc.d0.data();
+  const double* __restrict dd = lc.dd.data();
+  const double* __restrict g0 = lc.g0.data();
+  const double* __restrict dg = lc.dg.data();
   const int* __restrict cell = lc.cell.data();
   const double* __restrict frac = lc.frac.data();
   const double* __restrict grad = lc.grad.data();
@@ -131,6 +362,291 @@ double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool 
     L[q] = dg[c] * grad[q];
     check += v[q] + x[q];
   }
+  return check;
+}
+
+namespace {
+
+// The per-cell g2p tables at every particle (pc[k * n + q] = table_k[cell[q]]). With
+// AVX-512 and particles in cell order, eight particles span few cells: one load of
+// the cells from the first on and a permute replace four gathers.
+void expand_cells(LinearCells& lc, std::size_t n) {
+  lc.pc.resize(4 * n);
+  const double* tab[4] = {lc.d0.data(), lc.dd.data(), lc.g0.data(), lc.dg.data()};
+  const int* __restrict cell = lc.cell.data();
+  double* __restrict out = lc.pc.data();
+  std::size_t q = 0;
+#if defined(__AVX512F__)
+  if (lc.ordered)
+    for (; q + 8 <= n; q += 8) {
+      const int c0 = cell[q];
+      if (cell[q + 7] - c0 >= 8) {
+        for (std::size_t r = q; r < q + 8; ++r)
+          for (int k = 0; k < 4; ++k) out[k * n + r] = tab[k][cell[r]];
+        continue;
+      }
+      const __m256i ci = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(cell + q));
+      const __m512i idx =
+          _mm512_maskz_cvtepi32_epi64(0xFF, _mm256_sub_epi32(ci, _mm256_set1_epi32(c0)));
+      for (int k = 0; k < 4; ++k)
+        _mm512_storeu_pd(out + k * n + q,
+                         _mm512_maskz_permutexvar_pd(0xFF, idx, _mm512_loadu_pd(tab[k] + c0)));
+    }
+#endif
+  for (; q < n; ++q)
+    for (int k = 0; k < 4; ++k) out[k * n + q] = tab[k][cell[q]];
+}
+
+// The fused kernel with the volume choice fixed at compile time (so the loop vectorises).
+template <bool SmallStrain>
+[[gnu::noinline]] double g2p_elastic_kernel(const LinearCells& lc, double dt, double dtm, double E,
+                                            Particles<1>& p, double& work) {
+  const std::size_t n = p.size();
+  const double* __restrict d0 = lc.pc.data();  // the cell's tables, at each particle
+  const double* __restrict dd = d0 + n;
+  const double* __restrict g0 = dd + n;
+  const double* __restrict dg = g0 + n;
+  const double* __restrict frac = lc.frac.data();
+  const double* __restrict grad = lc.grad.data();
+  double* __restrict x = p.x[0].data();
+  double* __restrict v = p.v[0].data();
+  double* __restrict L = p.grad_v[0].data();
+  double* __restrict V = p.volume.data();
+  const double* __restrict V0 = p.volume0.data();
+  double* __restrict eps = p.strain[0].data();
+  double* __restrict sig = p.stress[0].data();
+  const double* __restrict qv = p.viscous_pressure.data();
+  double check = 0.0, w = 0.0;
+#pragma omp simd reduction(+ : check, w)
+  for (std::size_t q = 0; q < n; ++q) {
+    const double f = frac[q];
+    const double vq = v[q] + (d0[q] + f * dd[q]);
+    const double xq = x[q] + dtm * (g0[q] + f * dg[q]);
+    const double Lq = dg[q] * grad[q];
+    v[q] = vq, x[q] = xq, L[q] = Lq;
+    check += vq + xq;
+    // work_and_volumes, then LinearElastic::update_stress (eps += dt 0.5 (L + L) is
+    // eps += dt L exactly).
+    const double Vq = V[q];
+    w += (SmallStrain ? V0[q] : Vq) * (sig[q] - qv[q]) * Lq;
+    V[q] = Vq * (1.0 + dt * Lq);
+    const double e = eps[q] + dt * Lq;
+    eps[q] = e;
+    sig[q] = E * e;
+  }
+  work = w;
+  return check;
+}
+
+}  // namespace
+
+double g2p_linear_elastic(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
+                          bool small_strain, double E, Particles<1>& p, double& stress_work) {
+  cell_tables(g, lc, midpoint);
+  expand_cells(lc, p.size());
+  const double dtm = move ? dt : 0.0;
+  double w = 0.0;
+  const double check = small_strain ? g2p_elastic_kernel<true>(lc, dt, dtm, E, p, w)
+                                    : g2p_elastic_kernel<false>(lc, dt, dtm, E, p, w);
+  stress_work += dt * w;
+  return check;
+}
+
+void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int subpoints,
+              LinearCells& lc, Grid<1>& g) {
+  const std::size_t n = p.size();
+  const int cells = g.cells[0];
+  const double top = cells, inv = g.inv_dx[0], x0 = g.lower[0];
+  const bool sub = subpoints > 0;
+  ddmp_table(g, lc);
+  const bool ordered = locate_all(g, p, lc);
+  const int nw = sub ? 7 : 3;  // weights per particle
+  lc.W.resize(nw * n);
+  lc.stray.clear();
+  const int* __restrict cell = lc.cell.data();
+  const double* __restrict x = p.x[0].data();
+  if (!sub) {
+    grow(lc.val, 2 * n);
+    ddmp_weights(n, lc.frac.data(), lc.W.data(), lc.val.data());
+  } else {
+    lc.far.resize(n);
+    grow(lc.val, 7 * n);
+    if (subpoint_weights(n, x, p.length[0].data(), cell, x0, inv, top, subpoints, lc.W.data(),
+                         lc.far.data(), lc.val.data()))
+      for (std::size_t q = 0; q < n; ++q)
+        if (lc.far[q]) lc.stray.push_back(static_cast<int>(q));
+  }
+  // Pass 2 over m, m f, m v, m v f and V sigma times each weight.
+  const std::size_t stride = static_cast<std::size_t>(cells) + 2 * kPad;
+  const int ns = 4 + nw;
+  lc.sums.resize(ns * stride);
+  const double* __restrict vol = reference_volume ? p.volume0.data() : p.volume.data();
+  const double* __restrict sig = p.stress[0].data();
+  const double* __restrict qv = p.viscous_pressure.data();
+  grow(lc.val, ns * n);
+  double* __restrict val = lc.val.data();
+  const double* __restrict W = lc.W.data();
+  mass_fields(n, p.mass.data(), p.v[0].data(), lc.frac.data(), val);
+  for (int k = 0; k < nw; ++k) {
+    double* __restrict vk = val + (4 + k) * n;
+    const double* __restrict wk = W + k * n;
+#pragma omp simd
+    for (std::size_t q = 0; q < n; ++q) vk[q] = vol[q] * (sig[q] - qv[q]) * wk[q];
+  }
+  double* S = lc.sums.data();
+  if (sub)
+    cell_sums<11>(lc, n, ordered, stride, S);
+  else
+    cell_sums<7>(lc, n, ordered, stride, S);
+  node_mass_momentum(S, stride, cells, g);
+  // f_i = -sum_p V sigma Gbar_ip: the alpha part gives +-V sigma alpha/dx at the two
+  // nodes of the point's cell; the rest is -sum_j D_ji Q_j with Q_j the hat-weighted
+  // nodal sum of V sigma (1 - alpha) (eq. 3.31). Per cell: SA[c]; per node: Q[j].
+  const double* __restrict F0 = S + 4 * stride + kPad;  // force fields by particle cell
+  lc.vg.resize(cells + 2);
+  lc.Dv.resize(g.storage);
+  double* __restrict SA = lc.vg.data() + 1;                // cells -1 .. cells
+  double* __restrict Q = lc.Dv.data() + Grid<1>::ghost;   // nodes -1 .. cells + 1
+  SA[-1] = SA[cells] = 0.0;
+  Q[-1] = Q[cells + 1] = 0.0;
+  if (!sub) {
+    const double* __restrict A = F0;
+    const double* __restrict B = A + stride;
+    const double* __restrict C = B + stride;
+#pragma omp simd
+    for (int c = 0; c < cells; ++c) SA[c] = A[c];
+#pragma omp simd
+    for (int j = 0; j <= cells; ++j) Q[j] = B[j] + C[j - 1];
+  } else {
+    const double* __restrict Am = F0;
+    const double* __restrict A0 = Am + stride;
+    const double* __restrict Ap = A0 + stride;
+    const double* __restrict Qm = Ap + stride;
+    const double* __restrict Q0 = Qm + stride;
+    const double* __restrict Q1 = Q0 + stride;
+    const double* __restrict Q2 = Q1 + stride;
+#pragma omp simd
+    for (int c = 0; c < cells; ++c) SA[c] = A0[c] + Am[c + 1] + Ap[c - 1];
+#pragma omp simd
+    for (int j = 0; j <= cells; ++j) Q[j] = Q0[j] + Qm[j + 1] + Q1[j - 1] + Q2[j - 2];
+  }
+  const double* __restrict dm = lc.dm.data() + Grid<1>::ghost;
+  const double* __restrict dc = lc.dc.data() + Grid<1>::ghost;
+  const double* __restrict dp = lc.dp.data() + Grid<1>::ghost;
+  double* __restrict F = g.force[0].data() + Grid<1>::ghost;
+#pragma omp simd
+  for (int i = 0; i <= cells; ++i)
+    F[i] = inv * (SA[i] - SA[i - 1]) - (dp[i - 1] * Q[i - 1] + dc[i] * Q[i] + dm[i + 1] * Q[i + 1]);
+  g.force[0].front() = g.force[0].back() = 0.0;
+  // Sub-points more than a cell from the particle's cell: their own nodes, directly.
+  for (const int q : lc.stray) {
+    const double sv = vol[q] * (sig[q] - qv[q]) / subpoints;
+    const double xi = (x[q] - x0) * inv, h = sub_h(p.length[0][q], inv, subpoints),
+                 step = sub_step(h, subpoints);
+    for (int s = 0; s < subpoints; ++s) {
+      const SubWeights sw = sub_weights(xi - h + s * step, top);
+      const int c = sw.c;
+      if (std::abs(c - cell[q]) <= 1) continue;
+      F[c] += inv * sv * sw.a;
+      F[c + 1] -= inv * sv * sw.a;
+      for (int j = c; j <= c + 1; ++j) {
+        const double Qj = sv * (j == c ? sw.b0 : sw.b1);
+        F[j - 1] -= dm[j] * Qj;
+        F[j] -= dc[j] * Qj;
+        F[j + 1] -= dp[j] * Qj;
+      }
+    }
+  }
+}
+
+namespace {
+
+// grad v from the DDMP weights: sum over the point's cells of alpha dv/dx plus the
+// hat-weighted nodal gradients Dv (eq. 3.31).
+template <bool Sub>
+[[gnu::noinline]] double ddmp_g2p_kernel(const LinearCells& lc, std::size_t n, double dtm,
+                                         double inv, Particles<1>& p) {
+  const double* __restrict d0 = lc.d0.data();
+  const double* __restrict dd = lc.dd.data();
+  const double* __restrict g0 = lc.g0.data();
+  const double* __restrict dg = lc.dg.data();
+  const double* __restrict dgp = lc.vg.data() + 1;           // dg with a zero each side
+  const double* __restrict Dn = lc.Dv.data() + Grid<1>::ghost;  // by node, -1 .. cells + 1
+  const int* __restrict cell = lc.cell.data();
+  const double* __restrict frac = lc.frac.data();
+  const double* __restrict W = lc.W.data();
+  double* __restrict x = p.x[0].data();
+  double* __restrict v = p.v[0].data();
+  double* __restrict L = p.grad_v[0].data();
+  double check = 0.0;
+#pragma omp simd reduction(+ : check)
+  for (std::size_t q = 0; q < n; ++q) {
+    const int c = cell[q];
+    const double f = frac[q];
+    const double vq = v[q] + (d0[c] + f * dd[c]);
+    const double xq = x[q] + dtm * (g0[c] + f * dg[c]);
+    v[q] = vq, x[q] = xq;
+    if constexpr (Sub)
+      L[q] = inv * (W[q] * dgp[c - 1] + W[n + q] * dgp[c] + W[2 * n + q] * dgp[c + 1]) +
+             (W[3 * n + q] * Dn[c - 1] + W[4 * n + q] * Dn[c] + W[5 * n + q] * Dn[c + 1] +
+              W[6 * n + q] * Dn[c + 2]);
+    else
+      L[q] = W[q] * inv * dg[c] + W[n + q] * Dn[c] + W[2 * n + q] * Dn[c + 1];
+    check += vq + xq;
+  }
+  return check;
+}
+
+}  // namespace
+
+double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
+                int subpoints, Particles<1>& p) {
+  cell_tables(g, lc, midpoint);
+  const std::size_t n = p.size();
+  const int cells = g.cells[0];
+  const double wl = midpoint ? 0.5 : 1.0, wn = midpoint ? 0.5 : 0.0;
+  const double top = cells, inv = g.inv_dx[0], x0 = g.lower[0];
+  // Nodal gradient of the velocity that gives grad v: Dv_j = sum_i D_ji vg_i (ghosts 0).
+  grow(lc.val, g.storage);  // free after p2g: scratch
+  lc.Dv.resize(g.storage);
+  const double* __restrict VL = g.velocity_L[0].data();
+  const double* __restrict VN = g.velocity[0].data();
+  double* __restrict vg = lc.val.data();
+#pragma omp simd
+  for (std::size_t i = 0; i < g.storage; ++i) vg[i] = wl * VL[i] + wn * VN[i];
+  const double* __restrict dm = lc.dm.data();
+  const double* __restrict dc = lc.dc.data();
+  const double* __restrict dp = lc.dp.data();
+  double* __restrict Dv = lc.Dv.data();
+  const std::size_t last = g.storage - 1;
+  Dv[0] = Dv[last] = 0.0;
+#pragma omp simd
+  for (std::size_t j = 1; j < last; ++j)
+    Dv[j] = dm[j] * vg[j - 1] + dc[j] * vg[j] + dp[j] * vg[j + 1];
+  // dg with a zero pad each side, for sub-points in the neighbouring cells.
+  lc.vg.resize(cells + 2);
+  lc.vg.front() = lc.vg.back() = 0.0;
+  std::copy(lc.dg.begin(), lc.dg.begin() + cells, lc.vg.begin() + 1);
+  const double* __restrict Dn = Dv + Grid<1>::ghost;
+  // Sub-points more than a cell away, before x moves: their part of grad v.
+  std::vector<double> extra(lc.stray.size(), 0.0);
+  for (std::size_t k = 0; k < lc.stray.size(); ++k) {
+    const std::size_t q = static_cast<std::size_t>(lc.stray[k]);
+    const double xi = (p.x[0][q] - x0) * inv, h = sub_h(p.length[0][q], inv, subpoints),
+                 step = sub_step(h, subpoints);
+    double e = 0.0;
+    for (int s = 0; s < subpoints; ++s) {
+      const SubWeights sw = sub_weights(xi - h + s * step, top);
+      if (std::abs(sw.c - lc.cell[q]) <= 1) continue;
+      e += sw.a * inv * lc.dg[sw.c] + sw.b0 * Dn[sw.c] + sw.b1 * Dn[sw.c + 1];
+    }
+    extra[k] = e / subpoints;
+  }
+  const double dtm = move ? dt : 0.0;
+  const double check = subpoints > 0 ? ddmp_g2p_kernel<true>(lc, n, dtm, inv, p)
+                                     : ddmp_g2p_kernel<false>(lc, n, dtm, inv, p);
+  double* L = p.grad_v[0].data();
+  for (std::size_t k = 0; k < lc.stray.size(); ++k) L[lc.stray[k]] += extra[k];
   return check;
 }
 

@@ -1,7 +1,10 @@
 #pragma once
-// The original-MPM transfers in 1-D fused with the hat evaluation (eqs. 3.9-3.16):
-// no stencil is stored, and consecutive particles of one cell accumulate in registers
-// before touching the nodes. Same arithmetic as shape/linear + transfer, faster.
+// The original-MPM and DDMP transfers in 1-D fused with the hat evaluation (eqs. 3.9-3.16,
+// 3.31, 6.1-6.3): no stencil is stored, and consecutive particles of one cell accumulate
+// in registers before touching the nodes. Same algorithm as shape/{linear,ddmp} +
+// transfer; the sums are regrouped per cell, so results agree to round-off.
+#include <vector>
+
 #include "mpmx/mpm/grid.hpp"
 #include "mpmx/mpm/particles.hpp"
 
@@ -13,16 +16,44 @@ struct LinearCells {
   std::vector<int> cell;
   std::vector<double> frac;
   std::vector<double> grad;  // 1/dx inside the grid, 0 past its ends
-  // Per-cell sums of m, m f, m v, m v f and V sigma G ([field][cell]).
+  // Per-cell sums ([field][cell + 2], two zero cells padding each end): m, m f, m v, m v f, then
+  // the force fields (V sigma G for MPM; V sigma times the DDMP weights below).
   std::vector<double> sums;
+  std::vector<double> val;  // the summed per-particle fields ([field][particle])
   // Per-cell node values for g2p: dv at the left node and its jump, same for the
   // velocity that moves the particle.
   std::vector<double> d0, dd, g0, dg;
+  std::vector<double> pc;  // those four at each particle ([table][particle])
+  bool ordered = false;    // particles in cell order at the last p2g
+  // DDMP (eq. 3.31): per particle the weights of its gradient (W[k * n + q]): at the
+  // particle alpha, (1-alpha)(1-f), (1-alpha) f; with sub-points their averages sorted
+  // by the sub-point's cell (see subpoint_weights), so that
+  // Gbar_i = sum alpha dS_i/dx + sum_j D_ji Q_j.
+  std::vector<double> W;
+  std::vector<int> far;    // sub-points more than a cell from the particle's cell
+  std::vector<int> stray;  // those particles
+  std::vector<double> dm, dc, dp;  // D_{j,j-1}, D_{j,j}, D_{j,j+1} by node storage index
+  std::vector<double> vg, Dv;      // scratch: per-cell alpha sums / padded dg; Q / D v
 };
 
 void p2g_linear(const Grid<1>& g, const Particles<1>& p, bool reference_volume, LinearCells& lc,
                 Grid<1>& out);
 double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
                   Particles<1>& p);
+
+// g2p_linear followed by what step() does next for a 1-D linear elastic solid without
+// artificial viscosity, in the same pass: stress work with the stress of the forces
+// (eq. 4.11, over V0 for small strain), V *= 1 + dt L, eps += dt L, sigma = E eps.
+// Adds dt * work to `stress_work`.
+double g2p_linear_elastic(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
+                          bool small_strain, double E, Particles<1>& p, double& stress_work);
+
+// DDMP (subpoints == 0) and DDMP with sub-points (eqs. 4.5-4.6, 6.1-6.3): the hat for S
+// at the particle, the modified gradient of eq. 3.31 at the particle or averaged over
+// `subpoints` points spread evenly in the particle domain.
+void p2g_ddmp(const Grid<1>& g, const Particles<1>& p, bool reference_volume, int subpoints,
+              LinearCells& lc, Grid<1>& out);
+double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
+                int subpoints, Particles<1>& p);
 
 }  // namespace mpmx::mpm::shape

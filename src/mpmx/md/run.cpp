@@ -1,0 +1,189 @@
+#include "mpmx/md/run.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/io/run_record.hpp"
+#include "mpmx/md/bar.hpp"
+#include "mpmx/md/dump.hpp"
+#include "mpmx/md/lattice.hpp"
+#include "mpmx/md/system.hpp"
+
+namespace mpmx::md {
+
+namespace {
+
+toml::array matrix(const Mat3& m) {
+  toml::array rows;
+  for (int r = 0; r < 3; ++r) rows.push_back(toml::array{m[3 * r], m[3 * r + 1], m[3 * r + 2]});
+  return rows;
+}
+
+// Energy per atom of the perfect lattice for each lattice constant (M1, fig. 7.2).
+toml::table lattice_scan(const MdConfig& c, const Potential& pot) {
+  toml::array as, es;
+  double best_a = 0, best_e = 1e300;
+  for (int k = 0; k < c.scan_points; ++k) {
+    const double a = c.scan_from + (c.scan_to - c.scan_from) * k / (c.scan_points - 1);
+    System s(fcc(c.cells[0], c.cells[1], c.cells[2], a), pot, c.options);
+    const double e = s.potential_energy() / static_cast<double>(s.atoms().size());
+    as.push_back(a);
+    es.push_back(e);
+    if (e < best_e) best_e = e, best_a = a;
+  }
+  return toml::table{{"lattice_constant", as}, {"energy_per_atom", es},
+                     {"minimum_lattice_constant", best_a}, {"minimum_energy_per_atom", best_e}};
+}
+
+// Direct-MD bar: slab stress over time in bar_stress.csv (long format).
+void run_bar(const MdConfig& c, const Potential& pot, const std::string& out_dir, MdRunSummary& r,
+             toml::table& rec) {
+  namespace fs = std::filesystem;
+  Bar bar(c.bar_config, pot, c.options);
+  std::ofstream csv(fs::path(out_dir) / "bar_stress.csv");
+  csv << "step,time_ps,bin,x_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n";
+  auto rows = [&] {
+    const auto s = bar.slab_stress_gpa();
+    const auto x = bar.slab_centres();
+    for (std::size_t b = 0; b < s.size(); ++b)
+      csv << fmt::format("{},{:.6f},{},{:.6g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", bar.system().step(),
+                         bar.system().time(), b, x[b], s[b][0], s[b][4], s[b][8], s[b][1], s[b][2], s[b][5]);
+  };
+  rows();
+  const auto t0 = std::chrono::steady_clock::now();
+  for (std::int64_t done = 0; done < c.steps;) {
+    const std::int64_t chunk = std::min<std::int64_t>(c.bar_every, c.steps - done);
+    bar.advance(static_cast<int>(chunk), c.dt);
+    done += chunk;
+    rows();
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const System& s = bar.system();
+  const double n = static_cast<double>(s.atoms().size());
+  r.atoms = static_cast<long>(n);
+  r.steps = static_cast<long>(c.steps);
+  r.atom_steps_per_second = secs > 0 ? n * c.steps / secs : 0.0;
+  r.potential_energy_per_atom = s.potential_energy() / n;
+  r.stress_gpa = s.stress_gpa();
+  rec.insert("bar", toml::table{{"wall_lo", s.walls().lo}, {"wall_hi", s.walls().hi},
+                                {"bins", c.bar_config.bins}, {"stress_csv", "bar_stress.csv"}});
+}
+
+}  // namespace
+
+MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::table& deck_echo, bool quiet) {
+  namespace fs = std::filesystem;
+  fs::create_directories(out_dir);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Potential pot(c.potential);
+  if (c.bar) {
+    MdRunSummary r;
+    toml::table rec;
+    run_bar(c, pot, out_dir, r, rec);
+    r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    rec.insert("version", MPMX_VERSION);
+    rec.insert("command", "md");
+    rec.insert("deck_file", c.deck_file);
+    rec.insert("deck", deck_echo);
+    rec.insert("potential", pot.describe());
+    rec.insert("atoms", static_cast<std::int64_t>(r.atoms));
+    rec.insert("steps", static_cast<std::int64_t>(r.steps));
+    rec.insert("dt_ps", c.dt);
+    rec.insert("wall_seconds", r.wall_seconds);
+    rec.insert("atom_steps_per_second", r.atom_steps_per_second);
+    rec.insert("potential_energy_per_atom", r.potential_energy_per_atom);
+    rec.insert("stress_gpa", matrix(r.stress_gpa));
+    std::ostringstream os;
+    os << toml::json_formatter{rec} << '\n';
+    io::write_file_atomic((fs::path(out_dir) / "run.json").string(), os.str());
+    return r;
+  }
+  System sys(fcc(c.cells[0], c.cells[1], c.cells[2], c.lattice_constant, c.strain_x), pot, c.options);
+  if (c.temperature > 0) sys.thermalize(c.temperature, c.seed, 0);
+  if (c.relax_steps > 0) sys.advance(static_cast<int>(c.relax_steps), c.dt);  // section 6.2
+  if (c.streaming) sys.add_streaming_velocity(c.velocity_gradient);
+  const double n = static_cast<double>(sys.atoms().size());
+
+  std::ofstream csv(fs::path(out_dir) / "thermo.csv");
+  csv << "step,time_ps,pe_per_atom_eV,ke_per_atom_eV,etotal_per_atom_eV,temperature_K,"
+         "sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa,lx_A,ly_A,lz_A\n";
+  auto row = [&] {
+    const Mat3 s = sys.stress_gpa();
+    const double pe = sys.potential_energy() / n, ke = sys.kinetic_energy() / n;
+    csv << fmt::format("{},{:.6f},{:.12g},{:.12g},{:.12g},{:.6g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.12g},{:.12g},{:.12g}\n",
+                       sys.step(), sys.time(), pe, ke, pe + ke, sys.temperature(), s[0], s[4], s[8], s[1], s[2],
+                       s[5], sys.box().lx, sys.box().ly, sys.box().lz);
+  };
+  row();
+  std::ofstream dump;
+  if (c.dump_every > 0) {
+    dump.open(fs::path(out_dir) / "dump.lammpstrj");
+    write_lammps_dump(dump, sys.step(), sys.snapshot(), sys.box());
+  }
+  const bool tty = !quiet && isatty(fileno(stderr));
+  const auto run_start = std::chrono::steady_clock::now();
+  auto last = run_start;
+  for (std::int64_t done = 0; done < c.steps;) {
+    const std::int64_t chunk = std::min<std::int64_t>(c.thermo - sys.step() % c.thermo, c.steps - done);
+    sys.advance(static_cast<int>(chunk), c.velocity_gradient, c.dt);
+    done += chunk;
+    if (sys.step() % c.thermo == 0 || done == c.steps) row();
+    if (c.dump_every > 0 && sys.step() % c.dump_every == 0) write_lammps_dump(dump, sys.step(), sys.snapshot(), sys.box());
+    const auto now = std::chrono::steady_clock::now();
+    if (!quiet && std::chrono::duration<double>(now - last).count() > 2.0) {
+      last = now;
+      const double el = std::chrono::duration<double>(now - run_start).count();
+      fmt::print(stderr, "{}md: step {}/{} ({:.0f}%), {:.3g} atom-steps/s, ETA {:.0f} s{}", tty ? "\r" : "",
+                 done, c.steps, 100.0 * done / c.steps, n * done / el, el * (c.steps - done) / done,
+                 tty ? "" : "\n");
+    }
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  if (tty) fmt::print(stderr, "\n");
+  csv.close();
+
+  MdRunSummary r;
+  r.atoms = static_cast<long>(n);
+  r.steps = static_cast<long>(c.steps);
+  r.wall_seconds = std::chrono::duration<double>(t1 - t0).count();
+  const double run_seconds = std::chrono::duration<double>(t1 - run_start).count();
+  r.atom_steps_per_second = run_seconds > 0 ? n * c.steps / run_seconds : 0.0;
+  r.potential_energy_per_atom = sys.potential_energy() / n;
+  r.stress_gpa = sys.stress_gpa();
+
+  toml::table rec;
+  rec.insert("version", MPMX_VERSION);
+  rec.insert("command", "md");
+  rec.insert("deck_file", c.deck_file);
+  rec.insert("deck", deck_echo);
+  rec.insert("potential", pot.describe());
+  rec.insert("atoms", static_cast<std::int64_t>(r.atoms));
+  rec.insert("steps", static_cast<std::int64_t>(r.steps));
+  rec.insert("dt_ps", c.dt);
+  rec.insert("relax_steps", static_cast<std::int64_t>(c.relax_steps));
+  rec.insert("wall_seconds", r.wall_seconds);
+  rec.insert("run_seconds", run_seconds);
+  rec.insert("atom_steps_per_second", r.atom_steps_per_second);
+  rec.insert("potential_energy_per_atom", r.potential_energy_per_atom);
+  rec.insert("kinetic_energy_per_atom", sys.kinetic_energy() / n);
+  rec.insert("temperature_K", sys.temperature());
+  rec.insert("stress_gpa", matrix(r.stress_gpa));
+  rec.insert("box", toml::table{{"lx", sys.box().lx}, {"ly", sys.box().ly}, {"lz", sys.box().lz},
+                                {"xy", sys.box().xy}, {"xz", sys.box().xz}, {"yz", sys.box().yz}});
+  rec.insert("neighbor_builds", sys.neighbor_builds());
+  rec.insert("precision", c.options.mixed_precision ? "mixed" : "double");
+  if (c.scan_points > 0) rec.insert("scan", lattice_scan(c, pot));
+  std::ostringstream os;
+  os << toml::json_formatter{rec} << '\n';
+  io::write_file_atomic((fs::path(out_dir) / "run.json").string(), os.str());
+  return r;
+}
+
+}  // namespace mpmx::md
