@@ -121,6 +121,13 @@ class Run:
         require_columns(self.particles, ("time", "x"), path)
         if self.particles["time"].size == 0:
             raise PlotError(f"{path} has no rows")
+        # A case compared at the nodes (deck reference.at = "nodes") is drawn from the
+        # nodal fields, which are what its error norms measure.
+        nodes = os.path.join(directory, "nodes.csv")
+        self.at_nodes = dig(self.record, "deck.reference.at", "") == "nodes" and os.path.isfile(nodes)
+        if self.at_nodes:
+            self.particles = read_csv(nodes)
+            require_columns(self.particles, ("time", "x"), nodes)
 
     # deck values, with fallbacks so that a sparse run.json still plots
     @property
@@ -171,6 +178,9 @@ class Run:
         """Fields with a reference column; without any, velocity and stress (pressure for
         a gas, i.e. deck.material.model naming a gas)."""
         with_ref = [f for f in FIELDS if has_data(self.particles, "ref_" + f) and f in self.particles]
+        wanted = dig(self.record, "deck.reference.fields", None)
+        if isinstance(wanted, list) and wanted:
+            with_ref = [f for f in with_ref if f in wanted] or with_ref
         if with_ref:
             return with_ref
         chosen = ["velocity"] if has_data(self.particles, "velocity") else []
@@ -338,8 +348,9 @@ def compare(directories, field, out_path, quiet):
     for k in range(n, nrows * ncols):
         axes[k // ncols][k % ncols].set_visible(False)
     first = runs[0]
-    fig.suptitle(f"{first.case_id}: {first.case_title} ({field})" if first.case_title
-                 else f"{first.case_id} ({field})", fontsize=11)
+    # The panels may be different cases and schemes: name the field and the case ids.
+    ids = sorted({r.case_id for r in runs})
+    fig.suptitle(f"{', '.join(ids)}: {field}, scheme comparison", fontsize=11)
     fig.tight_layout()
     directory = os.path.dirname(os.path.abspath(out_path))
     os.makedirs(directory, exist_ok=True)
