@@ -9,14 +9,12 @@
 
 #include "mpmx/md/bar.hpp"
 
+#include "md_test_util.hpp"
+
 using namespace mpmx::md;
 
 namespace {
-Potential copper() {
-  PotentialSpec spec;
-  spec.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
-  return Potential(spec);
-}
+using mpmx::test::copper;
 }  // namespace
 
 TEST(Bar, ReleaseWaveFromCompressedHalf) {

@@ -13,6 +13,8 @@
 #include <sstream>
 #include <vector>
 
+#include "md_test_util.hpp"
+
 
 namespace fs = std::filesystem;
 
@@ -35,18 +37,7 @@ Result run(const std::string& args) {
 }
 
 fs::path write_deck(const std::string& name, const std::string& text) {
-  const auto dir = fs::temp_directory_path() / ("mpmx_md_cli_test_" + std::to_string(getpid()));
-  // Removed when the test process ends.
-  static const struct Cleanup {
-    fs::path d;
-    ~Cleanup() {
-      std::error_code ec;
-      fs::remove_all(d, ec);
-    }
-  } cleanup{dir};
-  fs::create_directories(dir);
-  std::ofstream(dir / name) << text;
-  return dir / name;
+  return mpmx::test::scratch_file(name, text);
 }
 
 const std::string kGood = R"(

@@ -12,14 +12,12 @@
 #include "mpmx/md/lattice.hpp"
 #include "mpmx/md/system.hpp"
 
+#include "md_test_util.hpp"
+
 using namespace mpmx::md;
 
 namespace {
-Potential copper() {
-  PotentialSpec spec;
-  spec.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
-  return Potential(spec);
-}
+using mpmx::test::copper;
 double total_energy(const System& s) { return s.potential_energy() + s.kinetic_energy(); }
 }  // namespace
 

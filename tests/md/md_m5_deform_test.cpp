@@ -11,14 +11,12 @@
 #include "mpmx/md/lattice.hpp"
 #include "mpmx/md/system.hpp"
 
+#include "md_test_util.hpp"
+
 using namespace mpmx::md;
 
 namespace {
-Potential copper() {
-  PotentialSpec spec;
-  spec.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
-  return Potential(spec);
-}
+using mpmx::test::copper;
 
 // Smallest distance between two atoms of the periodic system (brute force over images).
 double min_separation(const Atoms& a, const Box& b) {

@@ -15,6 +15,8 @@
 #include "mpmx/md/rng.hpp"
 #include "mpmx/md/system.hpp"
 
+#include "md_test_util.hpp"
+
 using namespace mpmx::md;
 namespace fs = std::filesystem;
 
@@ -30,19 +32,7 @@ std::string read_text(const std::string& p) {
 }
 
 std::string temp_file(const std::string& name, const std::string& text) {
-  const auto dir = fs::temp_directory_path() / ("mpmx_md_potential_test_" + std::to_string(getpid()));
-  // Removed when the test process ends.
-  static const struct Cleanup {
-    fs::path d;
-    ~Cleanup() {
-      std::error_code ec;
-      fs::remove_all(d, ec);
-    }
-  } cleanup{dir};
-  fs::create_directories(dir);
-  const auto p = dir / name;
-  std::ofstream(p) << text;
-  return p.string();
+  return mpmx::test::scratch_file(name, text).string();
 }
 
 std::string error_of(const std::string& path) {

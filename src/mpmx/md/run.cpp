@@ -76,6 +76,28 @@ void run_bar(const MdConfig& c, const Potential& pot, const std::string& out_dir
                                 {"bins", c.bar_config.bins}, {"stress_csv", "bar_stress.csv"}});
 }
 
+// The keys every md run.json has; `extra` adds the run's own, then run.json is written
+// atomically.
+void write_record(const MdConfig& c, const Potential& pot, const toml::table& deck_echo,
+                  const MdRunSummary& r, toml::table extra, const std::string& out_dir) {
+  toml::table rec{{"version", MPMX_VERSION},
+                  {"command", "md"},
+                  {"deck_file", c.deck_file},
+                  {"deck", deck_echo},
+                  {"potential", pot.describe()},
+                  {"atoms", static_cast<std::int64_t>(r.atoms)},
+                  {"steps", static_cast<std::int64_t>(r.steps)},
+                  {"dt_ps", c.dt},
+                  {"wall_seconds", r.wall_seconds},
+                  {"atom_steps_per_second", r.atom_steps_per_second},
+                  {"potential_energy_per_atom", r.potential_energy_per_atom},
+                  {"stress_gpa", matrix(r.stress_gpa)}};
+  for (auto&& [k, v] : extra) rec.insert_or_assign(k, std::move(v));
+  std::ostringstream os;
+  os << toml::json_formatter{rec} << '\n';
+  io::write_file_atomic((std::filesystem::path(out_dir) / "run.json").string(), os.str());
+}
+
 }  // namespace
 
 MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::table& deck_echo, bool quiet) {
@@ -88,21 +110,7 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
     toml::table rec;
     run_bar(c, pot, out_dir, r, rec);
     r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    rec.insert("version", MPMX_VERSION);
-    rec.insert("command", "md");
-    rec.insert("deck_file", c.deck_file);
-    rec.insert("deck", deck_echo);
-    rec.insert("potential", pot.describe());
-    rec.insert("atoms", static_cast<std::int64_t>(r.atoms));
-    rec.insert("steps", static_cast<std::int64_t>(r.steps));
-    rec.insert("dt_ps", c.dt);
-    rec.insert("wall_seconds", r.wall_seconds);
-    rec.insert("atom_steps_per_second", r.atom_steps_per_second);
-    rec.insert("potential_energy_per_atom", r.potential_energy_per_atom);
-    rec.insert("stress_gpa", matrix(r.stress_gpa));
-    std::ostringstream os;
-    os << toml::json_formatter{rec} << '\n';
-    io::write_file_atomic((fs::path(out_dir) / "run.json").string(), os.str());
+    write_record(c, pot, deck_echo, r, std::move(rec), out_dir);
     return r;
   }
   System sys(fcc(c.cells[0], c.cells[1], c.cells[2], c.lattice_constant, c.strain_x), pot, c.options);
@@ -159,30 +167,16 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   r.stress_gpa = sys.stress_gpa();
 
   toml::table rec;
-  rec.insert("version", MPMX_VERSION);
-  rec.insert("command", "md");
-  rec.insert("deck_file", c.deck_file);
-  rec.insert("deck", deck_echo);
-  rec.insert("potential", pot.describe());
-  rec.insert("atoms", static_cast<std::int64_t>(r.atoms));
-  rec.insert("steps", static_cast<std::int64_t>(r.steps));
-  rec.insert("dt_ps", c.dt);
   rec.insert("relax_steps", static_cast<std::int64_t>(c.relax_steps));
-  rec.insert("wall_seconds", r.wall_seconds);
   rec.insert("run_seconds", run_seconds);
-  rec.insert("atom_steps_per_second", r.atom_steps_per_second);
-  rec.insert("potential_energy_per_atom", r.potential_energy_per_atom);
   rec.insert("kinetic_energy_per_atom", sys.kinetic_energy() / n);
   rec.insert("temperature_K", sys.temperature());
-  rec.insert("stress_gpa", matrix(r.stress_gpa));
   rec.insert("box", toml::table{{"lx", sys.box().lx}, {"ly", sys.box().ly}, {"lz", sys.box().lz},
                                 {"xy", sys.box().xy}, {"xz", sys.box().xz}, {"yz", sys.box().yz}});
   rec.insert("neighbor_builds", sys.neighbor_builds());
   rec.insert("precision", c.options.mixed_precision ? "mixed" : "double");
   if (c.scan_points > 0) rec.insert("scan", lattice_scan(c, pot));
-  std::ostringstream os;
-  os << toml::json_formatter{rec} << '\n';
-  io::write_file_atomic((fs::path(out_dir) / "run.json").string(), os.str());
+  write_record(c, pot, deck_echo, r, std::move(rec), out_dir);
   return r;
 }
 

@@ -97,8 +97,6 @@ class RiemannRef final : public Reference {
   std::vector<std::string> fields_{"velocity", "pressure", "stress", "density"};
 };
 
-double drive_amplitude(const BoundarySide& b) { return b.amplitude; }
-
 }  // namespace
 
 std::unique_ptr<Reference> make_reference(const MpmConfig& c) {
@@ -125,7 +123,7 @@ std::unique_ptr<Reference> make_reference(const MpmConfig& c) {
     reference::WaveReflection w;
     w.L = L;
     w.c = std::sqrt(m.youngs_modulus / m.density);
-    w.v0 = drive_amplitude(c.boundary.right);
+    w.v0 = c.boundary.right.amplitude;
     w.omega = c.boundary.right.omega;
     w.rho0 = m.density;
     return std::make_unique<ElasticBar<reference::WaveReflection>>(w, reference::end_time(w));
@@ -138,7 +136,7 @@ std::unique_ptr<Reference> make_reference(const MpmConfig& c) {
     g.gamma = m.gamma;
     g.p0 = c.pressure.value;
     g.rho0 = m.density;
-    g.v0 = drive_amplitude(c.boundary.right);
+    g.v0 = c.boundary.right.amplitude;
     g.omega = c.boundary.right.omega;
     return std::make_unique<GasWaveRef>(g);
   }

@@ -1,0 +1,35 @@
+#pragma once
+// Helpers shared by the MD tests: the Mishin Cu potential that Debian's lammps-data
+// ships, and a scratch folder that lives as long as the test process.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "mpmx/md/potential/potential.hpp"
+
+namespace mpmx::test {
+
+inline md::Potential copper() {
+  md::PotentialSpec spec;
+  spec.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
+  return md::Potential(spec);
+}
+
+// Writes `text` to `name` in a per-process folder removed when the process ends.
+inline std::filesystem::path scratch_file(const std::string& name, const std::string& text) {
+  namespace fs = std::filesystem;
+  static const struct Scratch {
+    fs::path dir = fs::temp_directory_path() / ("mpmx_md_test_" + std::to_string(getpid()));
+    ~Scratch() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } scratch;
+  fs::create_directories(scratch.dir);
+  std::ofstream(scratch.dir / name) << text;
+  return scratch.dir / name;
+}
+
+}  // namespace mpmx::test
