@@ -24,6 +24,9 @@ int main(int argc, char** argv) {
   } catch (const mpmx::RunError& e) {
     fmt::print(stderr, "mpmx: run stopped: {}\n", e.what());
     return 3;
+  } catch (const mpmx::Interrupted& e) {
+    fmt::print(stderr, "\nmpmx: interrupted: {}\n", e.what());
+    return 130;
   } catch (const std::exception& e) {
     fmt::print(stderr, "mpmx: {}\n", e.what());
     return 1;

@@ -17,19 +17,24 @@ inline md::Potential copper() {
   return md::Potential(spec);
 }
 
-// Writes `text` to `name` in a per-process folder removed when the process ends.
-inline std::filesystem::path scratch_file(const std::string& name, const std::string& text) {
+// A per-process folder under the system's temporary one, removed when the process ends.
+inline const std::filesystem::path& scratch_root() {
   namespace fs = std::filesystem;
   static const struct Scratch {
-    fs::path dir = fs::temp_directory_path() / ("mpmx_md_test_" + std::to_string(getpid()));
+    fs::path dir = fs::temp_directory_path() / ("mpmx_test_" + std::to_string(getpid()));
     ~Scratch() {
       std::error_code ec;
       fs::remove_all(dir, ec);
     }
   } scratch;
-  fs::create_directories(scratch.dir);
-  std::ofstream(scratch.dir / name) << text;
-  return scratch.dir / name;
+  return scratch.dir;
+}
+
+// Writes `text` to `name` in the scratch folder.
+inline std::filesystem::path scratch_file(const std::string& name, const std::string& text) {
+  std::filesystem::create_directories(scratch_root());
+  std::ofstream(scratch_root() / name) << text;
+  return scratch_root() / name;
 }
 
 }  // namespace mpmx::test

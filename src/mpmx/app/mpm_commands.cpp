@@ -1,9 +1,11 @@
 // `mpmx run DECK --out DIR` and `mpmx check DECK`.
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
 
 #include "mpmx/app/commands.hpp"
+#include "mpmx/core/error.hpp"
 #include "mpmx/io/mpm_deck.hpp"
 #include "mpmx/mpm/run.hpp"
 
@@ -12,7 +14,10 @@ namespace mpmx::app {
 void add_mpm_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
-    bool quiet = false, no_plot = false;
+    bool quiet = false, no_plot = false, resume = false;
+    int threads = 0;
+    std::int64_t checkpoint_every = 0;
+    double checkpoint_minutes = 10.0;
   };
   auto args = std::make_shared<Args>();
 
@@ -21,6 +26,14 @@ void add_mpm_commands(CLI::App& app) {
   run->add_option("--out,-o", args->out, "output directory (default runs/<deck name>)");
   run->add_flag("--quiet,-q", args->quiet, "no progress line");
   run->add_flag("--no-plot", args->no_plot, "do not draw figures");
+  run->add_option("--threads,-j", args->threads, "threads for the MD boxes of md_closure (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  run->add_flag("--resume", args->resume, "continue from OUT/checkpoint.bin (bit-for-bit)");
+  run->add_option("--checkpoint-every", args->checkpoint_every, "write OUT/checkpoint.bin every N steps")
+      ->check(CLI::NonNegativeNumber);
+  run->add_option("--checkpoint-minutes", args->checkpoint_minutes,
+                  "write OUT/checkpoint.bin every so many minutes of wall time (0: only on Ctrl-C; default 10)")
+      ->check(CLI::NonNegativeNumber);
   run->callback([args] {
     const auto cfg = io::read_mpm_deck(args->deck);
     const std::string out =
@@ -29,10 +42,22 @@ void add_mpm_commands(CLI::App& app) {
     o.out_dir = out;
     o.quiet = args->quiet;
     o.plot = !args->no_plot;
+    o.threads = args->threads;
+    o.resume = args->resume;
+    o.checkpoint_every = args->checkpoint_every;
+    o.checkpoint_seconds = 60.0 * args->checkpoint_minutes;
     const auto r = mpm::run_mpm(cfg, o);
+    if (r.interrupted)
+      throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx run {} --out {} --resume",
+                                    r.steps, cfg.steps(), mpm::checkpoint_path(out), args->deck, out));
     fmt::print("{}: {} steps in {:.3f} s -> {}/run.json\n", cfg.id, r.steps, r.wall_seconds, out);
     for (const auto& [f, e] : r.errors)
       fmt::print("  error {:<12} l1 {:.3e}  l2 {:.3e}  peak {:.3e}\n", f, e.l1, e.l2, e.peak);
+    if (r.md_atom_steps > 0)
+      fmt::print("  MD: {:.4g} atom-steps, {:.4g} atom-steps/s on {} thread(s)\n",
+                 static_cast<double>(r.md_atom_steps), r.md_atom_steps / r.wall_seconds, r.threads);
+    if (std::isfinite(r.stress_vs_direct_md))
+      fmt::print("  stress vs direct MD (eq. 7.12): {:.2f}%\n", 100.0 * r.stress_vs_direct_md);
   });
 
   CLI::App* check = app.add_subcommand("check", "validate a continuum deck without running it");

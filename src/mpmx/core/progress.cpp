@@ -7,8 +7,16 @@
 
 namespace mpmx {
 
-Progress::Progress(std::string label, std::int64_t total, bool quiet)
-    : label_(std::move(label)), total_(total), active_(!quiet && isatty(fileno(stderr))),
+namespace {
+std::string duration(double s) {
+  if (s < 120) return fmt::format("{:.1f} s", s);
+  if (s < 7200) return fmt::format("{:.1f} min", s / 60);
+  return fmt::format("{:.2f} h", s / 3600);
+}
+}  // namespace
+
+Progress::Progress(std::string label, std::int64_t total, bool quiet, std::int64_t from)
+    : label_(std::move(label)), total_(total), from_(from), active_(!quiet && isatty(fileno(stderr))),
       start_(clock::now()), last_(start_) {}
 
 void Progress::update(std::int64_t done) {
@@ -18,16 +26,17 @@ void Progress::update(std::int64_t done) {
   last_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double frac = total_ > 0 ? static_cast<double>(done) / total_ : 1.0;
-  const double eta = frac > 0 ? elapsed * (1.0 - frac) / frac : 0.0;
-  fmt::print(stderr, "\r{}: {:5.1f}%  step {}/{}  elapsed {:.1f} s  ETA {:.1f} s   ", label_,
-             100.0 * frac, done, total_, elapsed, eta);
+  const double rate = done > from_ ? (done - from_) / elapsed : 0.0;
+  const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
+  fmt::print(stderr, "\r{}: {:5.1f}%  step {}/{}  elapsed {}  ETA {}   ", label_, 100.0 * frac, done, total_,
+             duration(elapsed), duration(eta));
   std::fflush(stderr);
 }
 
 void Progress::finish() {
   if (!active_) return;
   const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
-  fmt::print(stderr, "\r{}: done, {} steps in {:.2f} s{:30}\n", label_, total_, elapsed, "");
+  fmt::print(stderr, "\r{}: done, {} steps in {}{:30}\n", label_, total_ - from_, duration(elapsed), "");
 }
 
 }  // namespace mpmx

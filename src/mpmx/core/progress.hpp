@@ -9,14 +9,15 @@ namespace mpmx {
 
 class Progress {
  public:
-  Progress(std::string label, std::int64_t total, bool quiet = false);
+  // `from`: steps already done before this process (a resumed run); the ETA uses the rate since.
+  Progress(std::string label, std::int64_t total, bool quiet = false, std::int64_t from = 0);
   void update(std::int64_t done);
   void finish();
 
  private:
   using clock = std::chrono::steady_clock;
   std::string label_;
-  std::int64_t total_;
+  std::int64_t total_, from_;
   bool active_;
   clock::time_point start_, last_;
 };

@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/units.hpp"
 #include "mpmx/io/deck.hpp"
+#include "mpmx/md/config.hpp"
 
 namespace mpmx::io {
 
@@ -16,9 +20,9 @@ using mpm::MpmConfig;
 using mpm::Profile;
 
 const std::vector<std::string> kMaterials{"linear_elastic", "ideal_gas_isothermal",
-                                          "ideal_gas_adiabatic"};
+                                          "ideal_gas_adiabatic", "md_closure"};
 const std::vector<std::string> kReferences{"standing_wave", "wave_reflection", "gas_wave",
-                                           "riemann_isothermal", "shock_front"};
+                                           "riemann_isothermal", "shock_front", "direct_md"};
 
 Profile read_profile(Section s, double fallback) {
   Profile p;
@@ -61,9 +65,52 @@ BoundarySide read_side(Section s) {
   return b;
 }
 
+// [material] of an md_closure: [material.potential] and [material.md]; the crystal's
+// density and C11 (continuum units) come from the potential itself.
+void read_md_closure(Section m, const std::string& deck_dir, const std::string& unit_name,
+                     mpm::MaterialConfig& mat) {
+  auto& md = mat.md;
+  const auto u = units::unit_system(unit_name);
+  if (u) md.units = *u;
+  else
+    m.check(false, "model",
+            fmt::format("md_closure needs case.units to be one of {}, not '{}'", units::unit_system_names(),
+                        unit_name));
+  md.potential = md::read_potential(m.table("potential"), deck_dir);
+  Section s = m.table("md");
+  md.cells = static_cast<int>(s.integer("cells", 4));
+  s.check(md.cells >= 1 && md.cells <= 20, "cells", "must be from 1 to 20 (4 x cells^3 atoms per point)");
+  md.temperature = s.number("temperature", 0.0);
+  s.non_negative("temperature", md.temperature);
+  const auto seed = s.integer("seed", 1);
+  s.check(seed >= 0, "seed", "must be >= 0");
+  md.seed = static_cast<std::uint64_t>(seed);
+  md.dt = s.number("dt", 0.001);
+  s.positive("dt", md.dt);
+  s.check(md.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
+  md.relax_steps = s.integer("relax_steps", 0);
+  s.check(md.relax_steps >= 0, "relax_steps", "must be >= 0");
+  md.sample = s.choice("stress", {"last", "average"}, "last") == "last" ? multiscale::StressSample::last
+                                                                        : multiscale::StressSample::average;
+  md.skin = s.number("skin", 1.0);
+  s.non_negative("skin", md.skin);
+  md.mixed_precision = s.choice("precision", {"double", "mixed"}, "double") == "mixed";
+  mat.density_unstrained = true;
+  if (md.potential.style != "eam" || !md.potential.file.empty()) {
+    try {
+      const auto props = material::md_closure_properties(md.potential, md.units);
+      mat.density = props.density;
+      mat.youngs_modulus = props.modulus;
+    } catch (const std::exception& e) {
+      m.check(false, "potential", e.what());
+    }
+  }
+}
+
 // Largest initial sound speed, for the CFL limit.
 double initial_sound_speed(const MpmConfig& c) {
   const auto& m = c.material;
+  if (m.model == "md_closure") return std::sqrt(m.youngs_modulus / m.density);
   if (m.model == "linear_elastic") {
     const double nu = c.dim == 1 ? 0.0 : m.poisson_ratio;
     const double M = c.dim == 1 ? m.youngs_modulus
@@ -92,6 +139,7 @@ MpmConfig read(Deck& deck) {
   c.title = cs.string("title", "");
   c.seed = cs.string("seed", "");
   c.units = cs.string("units", "consistent units");
+  const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
 
   Section g = root.table("grid");
   c.dim = static_cast<int>(g.integer("dim", 1));
@@ -122,8 +170,10 @@ MpmConfig read(Deck& deck) {
   Section m = root.table("material");
   auto& mat = c.material;
   mat.model = m.choice("model", kMaterials);
-  mat.density = m.number("density", 1.0);
-  m.positive("density", mat.density);
+  if (mat.model != "md_closure") {  // the closure's density is its crystal's
+    mat.density = m.number("density", 1.0);
+    m.positive("density", mat.density);
+  }
   mat.small_strain = m.boolean("small_strain", false);
   if (mat.model == "linear_elastic") {
     mat.youngs_modulus = m.number("youngs_modulus");
@@ -131,6 +181,9 @@ MpmConfig read(Deck& deck) {
     mat.poisson_ratio = m.number("poisson_ratio", 0.0);
     m.check(mat.poisson_ratio > -1.0 && mat.poisson_ratio < 0.5, "poisson_ratio",
             "must lie in (-1, 0.5)");
+    mat.density_unstrained = m.choice("density_of", {"initial", "unstrained"}, "initial") == "unstrained";
+  } else if (mat.model == "md_closure") {
+    read_md_closure(m, deck_dir, c.units, mat);
   } else if (mat.model == "ideal_gas_isothermal") {
     mat.sound_speed = m.number("sound_speed");
     m.positive("sound_speed", mat.sound_speed);
@@ -141,7 +194,7 @@ MpmConfig read(Deck& deck) {
 
   Section in = root.optional_table("initial");
   c.velocity = read_profile(in.optional_table("velocity"), 0.0);
-  const bool solid = mat.model == "linear_elastic";
+  const bool solid = mat.solid();
   if (solid) {
     c.strain = read_profile(in.optional_table("strain"), 0.0);
     if (in.has("pressure")) in.check(false, "pressure", "a solid takes [initial.strain], not pressure");
@@ -189,6 +242,16 @@ MpmConfig read(Deck& deck) {
               fmt::format("'{}' is not one of velocity, strain, stress, pressure, density", f));
     c.reference.times = r.numbers("times", {});
     c.reference.at_nodes = r.choice("at", {"particles", "nodes"}, "particles") == "nodes";
+    if (c.reference.name == "direct_md") {
+      const std::filesystem::path f = r.string("file");
+      c.reference.file = f.is_absolute() || deck_dir.empty() ? f.string() : (deck_dir / f).string();
+      r.check(units::unit_system(c.units).has_value(), "name",
+              fmt::format("direct_md needs case.units to be one of {} (the MD side is in Angstrom, ps, GPa)",
+                          units::unit_system_names()));
+      if (c.reference.fields.empty()) c.reference.fields = {"stress"};
+    } else if (r.has("file")) {
+      r.check(false, "file", "only reference direct_md reads a file");
+    }
     for (double x : c.reference.times)
       r.check(x > 0.0 && x <= c.end * (1 + 1e-12), "times",
               fmt::format("every time must lie in (0, time.end = {}]", c.end));
@@ -204,6 +267,12 @@ MpmConfig read(Deck& deck) {
                           c.dx(), cs_max, limit));
     if (std::abs(c.dt * std::llround(c.end / c.dt) - c.end) > 1e-9 * c.end)
       t.check(false, "end", fmt::format("is not a whole number of steps of dt = {}", c.dt));
+    if (mat.model == "md_closure" && mat.md.dt > 0) {
+      const double n = c.dt * mat.md.units.time_ps / mat.md.dt;
+      t.check(std::llround(n) >= 1 && std::abs(n - std::llround(n)) <= 1e-6 * n, "dt",
+              fmt::format("is {} ps, not a whole number of MD steps of material.md.dt = {} ps",
+                          c.dt * mat.md.units.time_ps, mat.md.dt));
+    }
   }
   deck.finish();
   return c;

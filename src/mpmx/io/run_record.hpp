@@ -25,6 +25,8 @@ class RunRecord {
   void append(std::string_view dotted, toml::table table);
 
   const toml::table& table() const { return root_; }
+  // Replaces the whole record (a resumed run carries on its predecessor's).
+  void assign(toml::table t) { root_ = std::move(t); }
   std::string json() const;
   // Writes DIR/run.json via a temporary file and rename.
   void write(const std::string& path) const;

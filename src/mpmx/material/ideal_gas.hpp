@@ -22,7 +22,7 @@ class IdealGas final : public Material<Dim> {
   }
 
   // For the adiabatic gas the caller has put the initial pressure in -stress[0].
-  void initialize(mpm::Particles<Dim>& p) const override {
+  void initialize(mpm::Particles<Dim>& p) override {
     for (std::size_t q = 0; q < p.size(); ++q) {
       if (mode_ == Mode::adiabatic)
         p.entropy[q] = -p.stress[0][q] / std::pow(p.density(q), gamma_);
@@ -30,7 +30,7 @@ class IdealGas final : public Material<Dim> {
     }
   }
 
-  void update_stress(mpm::Particles<Dim>& p, double dt) const override {
+  void update_stress(mpm::Particles<Dim>& p, double dt) override {
     for (std::size_t q = 0; q < p.size(); ++q) {
       for (int a = 0; a < Dim; ++a) p.strain[a * Dim + a][q] += dt * p.grad_v[a * Dim + a][q];
       set_pressure(p, q);

@@ -13,11 +13,11 @@ class LinearElastic final : public Material<Dim> {
 
   std::string name() const override { return "linear_elastic"; }
 
-  void initialize(mpm::Particles<Dim>& p) const override {
+  void initialize(mpm::Particles<Dim>& p) override {
     for (std::size_t q = 0; q < p.size(); ++q) stress_from_strain(p, q);
   }
 
-  void update_stress(mpm::Particles<Dim>& p, double dt) const override {
+  void update_stress(mpm::Particles<Dim>& p, double dt) override {
     if constexpr (Dim == 1) {  // one plain loop that vectorises; 0.5 (L + L) = L exactly
       double* __restrict eps = p.strain[0].data();
       double* __restrict sig = p.stress[0].data();

@@ -28,10 +28,15 @@ System Bar::build(const BarConfig& c, Potential pot, SystemOptions o) {
   o.per_atom = true;
   System s(cr, std::move(pot), o);
   if (c.temperature > 0) s.thermalize(c.temperature, c.seed, 0);
+  // Walls on the end planes (a hair outside): an end plane pushed outward is mirrored
+  // at once, as at a fixed continuum boundary. Half a plane spacing out instead, a
+  // compressed end plane first flies free, hits the wall and sends a tensile pulse
+  // into the bar (-0.9 GPa behind a -9 GPa state, e0 = -5%).
   Walls w;
   w.enabled = true;
-  w.lo = 0.5 * gap - 0.25 * a * (1 + c.strain_left);
-  w.hi = 0.5 * gap + strained - 0.25 * a;
+  const double hair = 1e-6;  // Angstrom
+  w.lo = 0.5 * gap - hair;
+  w.hi = 0.5 * gap + strained - 0.5 * a + hair;
   w.v_lo = c.piston_velocity;
   s.set_walls(w);
   return s;

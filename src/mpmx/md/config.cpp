@@ -8,46 +8,51 @@
 
 namespace mpmx::md {
 
+PotentialSpec read_potential(io::Section pot, const std::string& deck_dir) {
+  PotentialSpec spec;
+  spec.style = pot.choice("style", {"eam", "lj", "sutton_chen"}, "eam");
+  if (spec.style == "eam") {
+    const std::string file = pot.string("file");
+    if (!file.empty()) {
+      try {
+        spec.file = resolve_potential_file(file, deck_dir);
+      } catch (const InputError& e) {
+        pot.check(false, "file", e.what());
+      }
+    }
+    spec.elements = pot.strings("elements", {});
+  } else {
+    spec.epsilon = pot.number("epsilon");
+    pot.positive("epsilon", spec.epsilon);
+    spec.cutoff = pot.number("cutoff");
+    pot.positive("cutoff", spec.cutoff);
+    spec.mass = pot.number("mass");
+    pot.positive("mass", spec.mass);
+    if (spec.style == "lj") {
+      spec.sigma = pot.number("sigma");
+      pot.positive("sigma", spec.sigma);
+      spec.shift = pot.boolean("shift", false);
+    } else {
+      spec.a = pot.number("a");
+      pot.positive("a", spec.a);
+      spec.c = pot.number("c");
+      pot.positive("c", spec.c);
+      spec.n = static_cast<int>(pot.integer("n"));
+      pot.check(spec.n > 0, "n", "must be a positive integer");
+      spec.m = static_cast<int>(pot.integer("m"));
+      pot.check(spec.m > 0, "m", "must be a positive integer");
+    }
+  }
+  return spec;
+}
+
 MdConfig read_md_config(io::Deck& deck) {
   MdConfig c;
   c.deck_file = deck.name();
   const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
   auto root = deck.root();
 
-  auto pot = root.table("potential");
-  c.potential.style = pot.choice("style", {"eam", "lj", "sutton_chen"}, "eam");
-  if (c.potential.style == "eam") {
-    const std::string file = pot.string("file");
-    if (!file.empty()) {
-      try {
-        c.potential.file = resolve_potential_file(file, deck_dir);
-      } catch (const InputError& e) {
-        pot.check(false, "file", e.what());
-      }
-    }
-    c.potential.elements = pot.strings("elements", {});
-  } else {
-    c.potential.epsilon = pot.number("epsilon");
-    pot.positive("epsilon", c.potential.epsilon);
-    c.potential.cutoff = pot.number("cutoff");
-    pot.positive("cutoff", c.potential.cutoff);
-    c.potential.mass = pot.number("mass");
-    pot.positive("mass", c.potential.mass);
-    if (c.potential.style == "lj") {
-      c.potential.sigma = pot.number("sigma");
-      pot.positive("sigma", c.potential.sigma);
-      c.potential.shift = pot.boolean("shift", false);
-    } else {
-      c.potential.a = pot.number("a");
-      pot.positive("a", c.potential.a);
-      c.potential.c = pot.number("c");
-      pot.positive("c", c.potential.c);
-      c.potential.n = static_cast<int>(pot.integer("n"));
-      pot.check(c.potential.n > 0, "n", "must be a positive integer");
-      c.potential.m = static_cast<int>(pot.integer("m"));
-      pot.check(c.potential.m > 0, "m", "must be a positive integer");
-    }
-  }
+  c.potential = read_potential(root.table("potential"), deck_dir);
 
   auto lat = root.table("lattice");
   lat.choice("type", {"fcc"}, "fcc");

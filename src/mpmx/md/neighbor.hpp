@@ -22,6 +22,11 @@ class Neighbors {
   // True if some pair may have come within the cutoff unseen.
   bool needs_rebuild(const Atoms& atoms, const Box& box) const;
   bool built() const { return built_; }
+  // The positions and box of the last build (a checkpoint rebuilds the same list from them).
+  const std::vector<double>& x_at_build() const { return x0_; }
+  const std::vector<double>& y_at_build() const { return y0_; }
+  const std::vector<double>& z_at_build() const { return z0_; }
+  const Box& box_at_build() const { return box0_; }
 
   // Sums ghost entries of a per-atom array (size nall) into their owners.
   void fold(std::vector<double>& a) const;

@@ -199,7 +199,7 @@ double System::temperature() const { return kinetic_temperature(atoms_, mass_); 
 // ---- checkpoint ----
 
 namespace {
-constexpr char kMagic[8] = {'M', 'P', 'M', 'X', 'M', 'D', '0', '1'};
+constexpr char kMagic[8] = {'M', 'P', 'M', 'X', 'M', 'D', '0', '2'};
 template <class T>
 void put(std::ostream& o, const T& v) {
   o.write(reinterpret_cast<const char*>(&v), sizeof(T));
@@ -235,6 +235,17 @@ void System::save(std::ostream& o) const {
     put_vec(o, *v);
   put_vec(o, atoms_.type);
   put_vec(o, atoms_.id);
+  // The neighbour list's build state, so a restart rebuilds the very same list (same
+  // pairs, same order) and continues bit-for-bit.
+  const std::uint8_t built = nb_.built() && nb_.nlocal == static_cast<int>(n);
+  put(o, built);
+  put(o, nb_.builds);
+  if (built) {
+    put(o, nb_.box_at_build());
+    put_vec(o, nb_.x_at_build());
+    put_vec(o, nb_.y_at_build());
+    put_vec(o, nb_.z_at_build());
+  }
 }
 
 System System::load(std::istream& in, Potential potential, SystemOptions options) {
@@ -262,15 +273,35 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   a.fx.assign(n, 0.0);
   a.fy.assign(n, 0.0);
   a.fz.assign(n, 0.0);
+  std::uint8_t built;
+  std::int64_t builds;
+  get(in, built);
+  get(in, builds);
   System s(a, box, std::move(potential), options);
-  s.atoms_ = std::move(a);  // as saved, then wrapped with the saved gradient
+  s.atoms_ = std::move(a);
   s.box_ = box;
   s.step_ = step;
   s.time_ = time;
   s.g_ = g;
   s.rng_.set_state(rng);
   s.walls_ = walls;
-  s.refresh();
+  if (!built) {
+    s.refresh();
+    return s;
+  }
+  // Rebuild the list from the positions it was built from, then move to the saved ones:
+  // the forces are those the uninterrupted run holds.
+  Atoms at_build = s.atoms_;
+  Box box_at_build;
+  get(in, box_at_build);
+  get_vec(in, at_build.x, n);
+  get_vec(in, at_build.y, n);
+  get_vec(in, at_build.z, n);
+  s.nb_.build(at_build, box_at_build, s.pot_.cutoff(), s.opt_.skin);
+  s.nb_.builds = builds;
+  s.nb_.update_positions(s.atoms_, s.box_);
+  s.compute_forces();
+  s.valid_ = true;
   return s;
 }
 

@@ -1,6 +1,7 @@
 #include "mpmx/mpm/output.hpp"
 
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -9,8 +10,8 @@
 
 namespace mpmx::mpm {
 
-Output::Output(const std::string& dir, bool nodes, bool particles)
-    : dir_(dir), want_nodes_(nodes), want_particles_(particles) {}
+Output::Output(const std::string& dir, bool nodes, bool particles, Marks resume)
+    : dir_(dir), want_nodes_(nodes), want_particles_(particles), resume_(std::move(resume)) {}
 
 Output::~Output() {
   for (std::FILE* f : {nodes_, particles_, energy_, front_})
@@ -19,6 +20,15 @@ Output::~Output() {
 
 std::FILE* Output::open(const std::string& name, const char* header) {
   const std::string path = dir_ + "/" + name;
+  if (auto it = resume_.find(name); it != resume_.end()) {
+    std::error_code ec;
+    std::filesystem::resize_file(path, static_cast<std::uintmax_t>(it->second), ec);
+    if (ec) throw RunError(fmt::format("cannot resume {}: {}", path, ec.message()));
+    std::FILE* f = std::fopen(path.c_str(), "a");
+    if (!f) throw RunError(fmt::format("cannot append to {}", path));
+    std::fseek(f, 0, SEEK_END);  // so ftell reports the length from the start
+    return f;
+  }
   std::FILE* f = std::fopen(path.c_str(), "w");
   if (!f) throw RunError(fmt::format("cannot write {}", path));
   std::fputs(header, f);
@@ -91,6 +101,18 @@ void Output::front(double t, double x, double ref_x) {
   if (!front_) front_ = open("front.csv", "time,front,ref_front\n");
   fmt::print(front_, "{:.10g},{:.10g},{:.10g}\n", t, x, ref_x);
   std::fflush(front_);
+}
+
+Output::Marks Output::marks() {
+  Marks m;
+  const std::pair<const char*, std::FILE*> files[] = {
+      {"nodes.csv", nodes_}, {"particles.csv", particles_}, {"energy.csv", energy_}, {"front.csv", front_}};
+  for (const auto& [name, f] : files) {
+    if (!f) continue;
+    std::fflush(f);
+    m[name] = static_cast<std::int64_t>(std::ftell(f));
+  }
+  return m;
 }
 
 }  // namespace mpmx::mpm

@@ -3,8 +3,10 @@
 // (ADMPM's columns and more, plus ref_<field> where a reference exists), energy.csv
 // over time, front.csv for shock-front cases. Rows of one record are written and
 // flushed together, so a stopped run leaves whole records only.
+#include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -17,7 +19,12 @@ class Reference;
 
 class Output {
  public:
-  Output(const std::string& dir, bool nodes, bool particles);
+  // Tables and their lengths in bytes, as a checkpoint records them.
+  using Marks = std::map<std::string, std::int64_t>;
+
+  // With `resume`, each table is cut back to its recorded length and appended to, so a
+  // resumed run's tables equal an uninterrupted run's.
+  Output(const std::string& dir, bool nodes, bool particles, Marks resume = {});
   ~Output();
   Output(const Output&) = delete;
   Output& operator=(const Output&) = delete;
@@ -26,6 +33,8 @@ class Output {
   void energy(std::int64_t step, double t, double kinetic, double internal, double momentum,
               double boundary_impulse, double ref_total);
   void front(double t, double x, double ref_x);
+  // Flushes every table and returns their lengths.
+  Marks marks();
 
  private:
   std::FILE* open(const std::string& name, const char* header);
@@ -35,6 +44,7 @@ class Output {
   std::FILE* energy_ = nullptr;
   std::FILE* front_ = nullptr;
   bool want_nodes_, want_particles_;
+  Marks resume_;
   std::string buf_;
 };
 

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/units.hpp"
+#include "mpmx/reference/bar_history.hpp"
 #include "mpmx/reference/gas_wave.hpp"
 #include "mpmx/reference/riemann_isothermal.hpp"
 #include "mpmx/reference/standing_wave.hpp"
@@ -97,6 +99,27 @@ class RiemannRef final : public Reference {
   std::vector<std::string> fields_{"velocity", "pressure", "stress", "density"};
 };
 
+// A direct-MD bar's binned stress: the bar between its walls maps onto the grid
+// [lower, upper], its times (ps) and stresses (GPa) onto the deck's units.
+class DirectMd final : public Reference {
+ public:
+  DirectMd(reference::BarHistory h, double lower, double length, units::UnitSystem u)
+      : h_(std::move(h)), lower_(lower), length_(length), u_(u) {}
+  const std::vector<std::string>& fields() const override { return fields_; }
+  bool valid(double t) const override { return h_.has(t * u_.time_ps); }
+  double value(const std::string& f, double x, double t) const override {
+    const double s = h_.sxx(t * u_.time_ps, (x - lower_) / length_) / u_.stress_GPa;
+    return f == "pressure" ? -s : s;
+  }
+  double baseline(const std::string&) const override { return 0.0; }
+
+ private:
+  reference::BarHistory h_;
+  double lower_, length_;
+  units::UnitSystem u_;
+  std::vector<std::string> fields_{"stress", "pressure"};
+};
+
 }  // namespace
 
 std::unique_ptr<Reference> make_reference(const MpmConfig& c) {
@@ -106,6 +129,11 @@ std::unique_ptr<Reference> make_reference(const MpmConfig& c) {
   auto need = [&](bool ok, const char* what) {
     if (!ok) throw InputError("reference '" + name + "': " + what);
   };
+  if (name == "direct_md") {
+    const auto u = units::unit_system(c.units);
+    need(u.has_value(), "needs case.units to name a unit system");
+    return std::make_unique<DirectMd>(reference::BarHistory::read(c.reference.file), c.lower, L, *u);
+  }
   if (name == "standing_wave") {
     need(m.model == "linear_elastic", "needs material.model = \"linear_elastic\"");
     need(c.velocity.kind == Profile::Kind::sinusoid, "needs [initial.velocity] profile = \"sinusoid\"");

@@ -2,20 +2,26 @@
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <set>
+#include <sstream>
 
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
 #include "mpmx/io/run_record.hpp"
+#include "mpmx/material/md_closure.hpp"
+#include "mpmx/mpm/checkpoint.hpp"
 #include "mpmx/mpm/nodal_fields.hpp"
 #include "mpmx/mpm/output.hpp"
 #include "mpmx/mpm/reference.hpp"
 #include "mpmx/mpm/setup.hpp"
 #include "mpmx/mpm/step.hpp"
+#include "mpmx/reference/bar_history.hpp"
 #include "mpmx/reference/norms.hpp"
 #include "mpmx/reference/shock_front.hpp"
 
@@ -70,16 +76,59 @@ void check_volumes(const State<1>& s) {
                                  q, p.volume[q], s.step, s.time));
 }
 
+// Ctrl-C asks the step loop to write a checkpoint and stop; a second one kills.
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void on_interrupt(int) {
+  g_interrupted = 1;
+  std::signal(SIGINT, SIG_DFL);
+}
+class InterruptGuard {
+ public:
+  explicit InterruptGuard(bool active) : active_(active) {
+    if (!active_) return;
+    g_interrupted = 0;
+    previous_ = std::signal(SIGINT, on_interrupt);
+  }
+  ~InterruptGuard() {
+    if (active_) std::signal(SIGINT, previous_);
+  }
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+ private:
+  bool active_;
+  void (*previous_)(int) = SIG_DFL;
+};
+
+std::string deck_text(const MpmConfig& c) {
+  std::ostringstream ss;
+  ss << c.deck;
+  return ss.str();
+}
+
 bool matplotlib_present() {
   return std::system(MPMX_PYTHON " -c 'import matplotlib, numpy' >/dev/null 2>&1") == 0;
 }
 
 }  // namespace
 
-RunResult run_mpm(const MpmConfig& c, const RunOptions& o) {
+std::string checkpoint_path(const std::string& out_dir) { return out_dir + "/checkpoint.bin"; }
+
+RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
+  MpmConfig c = config;
+  c.material.md.threads = o.threads;
+  const bool checkpoints = !o.out_dir.empty();
+  if (o.resume && !checkpoints) throw InputError("resuming needs the run's output directory");
+  if (o.resume && !std::filesystem::exists(checkpoint_path(o.out_dir)))
+    throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(o.out_dir)));
   RunResult r;
-  r.state = make_state(c);
+  if (!o.resume && !o.quiet && c.material.model == "md_closure")
+    fmt::print(stderr, "{}: building {} MD boxes of {} atoms (section 6.2)...\n", c.id,
+               static_cast<long>(c.cells) * c.per_cell, 4 * c.material.md.cells * c.material.md.cells * c.material.md.cells);
+  r.state = make_state(c, !o.resume);
   State<1>& s = r.state;
+  const auto* closure = dynamic_cast<const material::MdClosure*>(s.material.get());
+  r.threads = closure ? closure->threads() : 1;
   const auto ref = make_reference(c);
   const bool solid = c.material.model == "linear_elastic";
   const bool track_front = c.reference.name == "shock_front";
@@ -94,16 +143,10 @@ RunResult run_mpm(const MpmConfig& c, const RunOptions& o) {
   }
   const std::int64_t energy_every = std::max<std::int64_t>(1, steps / 2000);
 
-  std::unique_ptr<Output> out;
-  if (!o.out_dir.empty()) {
-    std::filesystem::create_directories(o.out_dir);
-    out = std::make_unique<Output>(o.out_dir, c.write_nodes, c.write_particles);
-  }
   io::RunRecord rec;
   rec.set("version", MPMX_VERSION);
   rec.set("deck", c.deck);
   rec.set("deck_path", c.deck_path);
-  rec.set("threads", 1);
 
   const Sums s0 = sums(s.particles, solid);
   r.momentum_initial = s0.momentum;
@@ -113,6 +156,80 @@ RunResult run_mpm(const MpmConfig& c, const RunOptions& o) {
   r.max_kinetic = s0.kinetic;
 
   std::vector<std::pair<double, double>> fronts;  // (t, x)
+  reference::Eq712 eq712;                          // pooled over the compared times
+  const bool direct_md = c.reference.name == "direct_md";
+  double wall_before = 0.0;                        // earlier processes of a resumed run
+
+  // The run loop's own carry-over, after the state in the checkpoint.
+  auto save_checkpoint = [&](Output* out, double wall_now) {
+    const std::string path = checkpoint_path(o.out_dir), tmp = path + ".tmp";
+    {
+      std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+      CheckpointOut w(f);
+      w.text(deck_text(c));
+      save_state(w, s);
+      for (double v : {r.momentum_initial, r.kinetic_initial, r.mass_particles, r.momentum_scale, r.max_kinetic,
+                       eq712.squared_difference, eq712.squared_reference, wall_now})
+        w.number(v);
+      w.integer(static_cast<std::int64_t>(r.errors.size()));
+      for (const auto& [name, e] : r.errors) {
+        w.text(name);
+        w.numbers({e.l1, e.l2, e.peak});
+      }
+      std::vector<double> fr;
+      for (const auto& [t, x] : fronts) fr.push_back(t), fr.push_back(x);
+      w.numbers(fr);
+      std::ostringstream table;
+      table << rec.table();
+      w.text(table.str());
+      const Output::Marks marks = out ? out->marks() : Output::Marks{};
+      w.integer(static_cast<std::int64_t>(marks.size()));
+      for (const auto& [name, bytes] : marks) {
+        w.text(name);
+        w.integer(bytes);
+      }
+      f.flush();
+      if (!f) throw RunError(fmt::format("cannot write the checkpoint {}", tmp));
+    }
+    std::filesystem::rename(tmp, path);
+  };
+  Output::Marks resume_marks;
+  if (o.resume) {
+    const std::string path = checkpoint_path(o.out_dir);
+    std::ifstream f(path, std::ios::binary);
+    CheckpointIn in(f, path);
+    if (in.text() != deck_text(c))
+      throw InputError(fmt::format("{} was written for another deck (the deck changed since); run afresh "
+                                   "without --resume",
+                                   path));
+    load_state(in, s);
+    for (double* v : {&r.momentum_initial, &r.kinetic_initial, &r.mass_particles, &r.momentum_scale,
+                      &r.max_kinetic, &eq712.squared_difference, &eq712.squared_reference, &wall_before})
+      *v = in.number();
+    for (std::int64_t k = in.integer(); k > 0; --k) {
+      const std::string name = in.text();
+      const auto e = in.numbers();
+      if (e.size() != 3) throw InputError(fmt::format("checkpoint {} is corrupt", path));
+      r.errors[name] = {e[0], e[1], e[2]};
+    }
+    const auto fr = in.numbers();
+    for (std::size_t k = 0; k + 1 < fr.size(); k += 2) fronts.emplace_back(fr[k], fr[k + 1]);
+    try {
+      rec.assign(toml::parse(in.text()));
+    } catch (const toml::parse_error& e) {
+      throw InputError(fmt::format("checkpoint {}: its run record does not parse: {}", path, e.what()));
+    }
+    for (std::int64_t k = in.integer(); k > 0; --k) {
+      const std::string name = in.text();
+      resume_marks[name] = in.integer();
+    }
+  }
+  rec.set("threads", r.threads);
+  std::unique_ptr<Output> out;
+  if (!o.out_dir.empty()) {
+    std::filesystem::create_directories(o.out_dir);
+    out = std::make_unique<Output>(o.out_dir, c.write_nodes, c.write_particles, resume_marks);
+  }
   std::vector<double> u, uref, w;
   // Shock-front plateaus: the strain behind the right-going front is the mean of the
   // two initial states (the step splits into two half-amplitude waves).
@@ -122,6 +239,18 @@ RunResult run_mpm(const MpmConfig& c, const RunOptions& o) {
   auto compare = [&]() {
     if (!ref || !ref->valid(s.time)) return;
     const auto& p = s.particles;
+    if (direct_md) {  // eq. 7.12: every point against the direct-MD bin it lies in
+      reference::Eq712 now;
+      for (std::size_t q = 0; q < p.size(); ++q) {
+        const double md = ref->value("stress", p.x[0][q], s.time);
+        now.add(p.stress[0][q], md);
+        eq712.add(p.stress[0][q], md);
+      }
+      toml::table at;
+      at.insert("time", s.time);
+      at.insert("error", now.value());
+      rec.append("errors_by_time.stress_vs_direct_md", std::move(at));
+    }
     const NodalFields nf = c.reference.at_nodes ? nodal_fields(s) : NodalFields{};
     for (const auto& f : c.reference.fields) {
       u.clear(), uref.clear(), w.clear();
@@ -184,13 +313,18 @@ RunResult run_mpm(const MpmConfig& c, const RunOptions& o) {
     }
   };
 
-  Progress progress(fmt::format("{} {}", c.id, scheme_name(c.scheme.scheme)), steps, o.quiet);
+  Progress progress(fmt::format("{} {}", c.id, scheme_name(c.scheme.scheme)), steps, o.quiet, s.step);
   const auto t0 = std::chrono::steady_clock::now();
+  auto wall = [&] { return wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  double last_checkpoint = 0.0;
+  InterruptGuard guard(checkpoints);
   std::string failure;
   try {
-    record();
-    observe();
-    for (std::int64_t n = 1; n <= steps; ++n) {
+    if (!o.resume) {
+      record();
+      observe();
+    }
+    for (std::int64_t n = s.step + 1; n <= steps; ++n) {
       step(s, dt);
       s.time = n * dt;  // no drift from summing dt
       check_finite(s);
@@ -202,13 +336,28 @@ RunResult run_mpm(const MpmConfig& c, const RunOptions& o) {
         observe();
       }
       progress.update(n);
+      if (checkpoints && n < steps) {
+        const bool stop = g_interrupted || n == o.stop_after;
+        const double now = wall() - wall_before;
+        if (stop || (o.checkpoint_every > 0 && n % o.checkpoint_every == 0) ||
+            (o.checkpoint_seconds > 0 && now - last_checkpoint >= o.checkpoint_seconds)) {
+          save_checkpoint(out.get(), wall());
+          last_checkpoint = now;
+        }
+        if (stop) {
+          r.interrupted = true;
+          break;
+        }
+      }
     }
-    progress.finish();
+    if (!r.interrupted) progress.finish();
   } catch (const RunError& e) {
     failure = e.what();
   }
-  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.wall_seconds = wall();
   r.steps = s.step;
+  if (closure) r.md_atom_steps = closure->atom_steps();
+  if (direct_md && eq712.squared_reference > 0) r.stress_vs_direct_md = eq712.value();
 
   const Sums s1 = sums(s.particles, solid);
   r.momentum_final = s1.momentum;
@@ -235,7 +384,21 @@ RunResult run_mpm(const MpmConfig& c, const RunOptions& o) {
     rec.set("reference_speed", c0);
   }
 
-  rec.set("status", failure.empty() ? "completed" : "stopped");
+  rec.set("status", !failure.empty() ? "stopped" : r.interrupted ? "interrupted" : "completed");
+  if (r.interrupted) rec.set("checkpoint", checkpoint_path(o.out_dir));
+  if (std::isfinite(r.stress_vs_direct_md)) rec.set("errors.stress_vs_direct_md", r.stress_vs_direct_md);
+  if (closure) {
+    const auto& eq = closure->equilibrium();
+    rec.set("md_atom_steps", r.md_atom_steps);
+    rec.set("md_atom_steps_per_second", r.wall_seconds > 0 ? r.md_atom_steps / r.wall_seconds : 0.0);
+    rec.set("md.atoms_per_point", closure->atoms_per_point());
+    rec.set("md.points", static_cast<std::int64_t>(s.particles.size()));
+    rec.set("md.lattice_constant_A", eq.lattice_constant);
+    rec.set("md.energy_per_atom_eV", eq.energy_per_atom);
+    rec.set("md.c11_GPa", eq.c11_gpa);
+    rec.set("md.density", closure->density());
+    rec.set("md.units", std::string(c.material.md.units.name));
+  }
   if (!failure.empty()) rec.set("error", failure);
   rec.set("steps", static_cast<std::int64_t>(r.steps));
   rec.set("time", s.time);
@@ -267,7 +430,8 @@ RunResult run_mpm(const MpmConfig& c, const RunOptions& o) {
   if (!o.out_dir.empty()) {
     out.reset();  // close the tables before plotting
     rec.write(o.out_dir + "/run.json");
-    if (failure.empty() && o.plot && c.plot && matplotlib_present()) {
+    if (failure.empty() && !r.interrupted) std::filesystem::remove(checkpoint_path(o.out_dir));
+    if (failure.empty() && !r.interrupted && o.plot && c.plot && matplotlib_present()) {
       const std::string cmd = fmt::format("{} {}/tools/plot/mpmx_plot.py --quiet '{}'", MPMX_PYTHON,
                                           MPMX_SOURCE_DIR, o.out_dir);
       if (std::system(cmd.c_str()) != 0)

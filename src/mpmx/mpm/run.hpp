@@ -15,6 +15,14 @@ struct RunOptions {
   std::string out_dir;   // "" = write nothing (tests)
   bool quiet = false;    // no progress line
   bool plot = true;      // call tools/plot when the deck allows and matplotlib is present
+  int threads = 0;       // MD boxes of md_closure in parallel (0: OpenMP default)
+  // Checkpoints (need out_dir): OUT/checkpoint.bin every `checkpoint_every` steps, or
+  // when `checkpoint_seconds` of wall time passed since the last one (0: never), and
+  // on Ctrl-C. `resume` continues from OUT/checkpoint.bin bit-for-bit.
+  std::int64_t checkpoint_every = 0;
+  double checkpoint_seconds = 600.0;
+  bool resume = false;
+  std::int64_t stop_after = 0;  // stop as if interrupted after this step (tests)
 };
 
 struct FieldError {
@@ -34,11 +42,18 @@ struct RunResult {
   double max_force_sum = 0.0;                 // max_steps |sum f| / sum |f|
   double kinetic_initial = 0.0, kinetic_final = 0.0, stress_work = 0.0, boundary_work = 0.0;
   double max_kinetic = 0.0;
+  double stress_vs_direct_md = std::nan("");  // eq. 7.12 over the compared times (direct_md)
+  std::int64_t md_atom_steps = 0;             // md_closure: atoms x MD steps, relaxation included
+  int threads = 1;
+  bool interrupted = false;                   // stopped by Ctrl-C (or stop_after): checkpoint written
   State<1> state;                             // the final state
   double energy_error() const { return std::abs(kinetic_final - kinetic_initial + stress_work - boundary_work); }
   double momentum_error() const { return std::abs(momentum_final - momentum_initial - boundary_impulse); }
 };
 
 RunResult run_mpm(const MpmConfig& c, const RunOptions& o);
+
+// The checkpoint of a run directory.
+std::string checkpoint_path(const std::string& out_dir);
 
 }  // namespace mpmx::mpm

@@ -7,7 +7,8 @@
 
 namespace mpmx::mpm {
 
-State<1> make_state(const MpmConfig& c);
+// initialize_material = false leaves per-point material state to a checkpoint.
+State<1> make_state(const MpmConfig& c, bool initialize_material = true);
 std::unique_ptr<material::Material<1>> make_material(const MaterialConfig& m);
 
 }  // namespace mpmx::mpm

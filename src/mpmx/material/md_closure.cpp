@@ -1,0 +1,117 @@
+#include "mpmx/material/md_closure.hpp"
+
+#include <cmath>
+#include <istream>
+#include <ostream>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/md/lattice.hpp"
+
+namespace mpmx::material {
+
+namespace {
+
+// Continuum mass unit in amu: stress * time^2 * length.
+double mass_unit_amu(const units::UnitSystem& u) {
+  const double length_m = u.length_A * units::angstrom_in_m, time_s = u.time_ps * units::ps_in_s;
+  return u.stress_GPa * units::GPa_in_Pa * time_s * time_s * length_m / units::amu_in_kg;
+}
+
+MdClosureProperties properties(const md::Potential& pot, const units::UnitSystem& u) {
+  MdClosureProperties r;
+  r.equilibrium = md::fcc_equilibrium(pot);
+  r.density = r.equilibrium.density_amu_per_A3 / mass_unit_amu(u) * std::pow(u.length_A, 3);
+  r.modulus = r.equilibrium.c11_gpa / u.stress_GPa;
+  r.sound_speed = std::sqrt(r.modulus / r.density);
+  return r;
+}
+
+}  // namespace
+
+MdClosureProperties md_closure_properties(const md::PotentialSpec& spec, const units::UnitSystem& u) {
+  return properties(md::Potential(spec), u);
+}
+
+MdClosure::MdClosure(const MdClosureConfig& config)
+    : cfg_(config), pot_(config.potential), eq_(md::fcc_equilibrium(pot_)), batch_(config.threads) {}
+
+double MdClosure::density() const { return properties(pot_, cfg_.units).density; }
+double MdClosure::modulus() const { return eq_.c11_gpa / cfg_.units.stress_GPa; }
+
+void MdClosure::initialize(mpm::Particles<1>& p) {
+  const std::size_t n = p.size();
+  md::SystemOptions o;
+  o.skin = cfg_.skin;
+  o.mixed_precision = cfg_.mixed_precision;
+  boxes_.clear();
+  boxes_.reserve(n);
+  // Placeholders, then each point's box built on the threads (section 6.2).
+  const md::System blank(md::fcc(1, 1, 1, eq_.lattice_constant), pot_, o);
+  boxes_.assign(n, blank);
+  batch_.for_each(n, [&](std::size_t q) {
+    md::System box(md::fcc(cfg_.cells, cfg_.cells, cfg_.cells, eq_.lattice_constant, p.strain[0][q]), pot_, o);
+    if (cfg_.temperature > 0) box.thermalize(cfg_.temperature, cfg_.seed, q);
+    box.advance(static_cast<int>(cfg_.relax_steps), cfg_.dt);  // zero strain rate
+    boxes_[q] = std::move(box);
+  });
+  gradients_.assign(n, md::Mat3{});
+  stress_.resize(n);
+  for (std::size_t q = 0; q < n; ++q) {
+    stress_[q] = boxes_[q].stress_gpa();
+    p.stress[0][q] = stress_[q][0] / cfg_.units.stress_GPa;
+  }
+  atom_steps_ = static_cast<std::int64_t>(n) * atoms_per_point() * cfg_.relax_steps;
+}
+
+int MdClosure::md_steps(double dt) const {
+  const double steps = dt * cfg_.units.time_ps / cfg_.dt;
+  const long k = std::lround(steps);
+  if (k < 1 || std::abs(steps - k) > 1e-6 * steps)
+    throw InputError(fmt::format("md_closure: the continuum step ({} ps) is not a whole number of MD "
+                                 "steps of {} ps",
+                                 dt * cfg_.units.time_ps, cfg_.dt));
+  return static_cast<int>(k);
+}
+
+void MdClosure::update_stress(mpm::Particles<1>& p, double dt) {
+  const std::size_t n = p.size();
+  const int steps = md_steps(dt);
+  for (std::size_t q = 0; q < n; ++q) gradients_[q][0] = p.grad_v[0][q] / cfg_.units.time_ps;  // 1/ps
+  batch_.advance(boxes_, gradients_, steps, cfg_.dt, cfg_.sample, stress_);
+  const double l0 = cfg_.cells * eq_.lattice_constant;
+  for (std::size_t q = 0; q < n; ++q) {
+    p.stress[0][q] = stress_[q][0] / cfg_.units.stress_GPa;
+    p.strain[0][q] = boxes_[q].box().lx / l0 - 1.0;  // the box's engineering strain
+  }
+  atom_steps_ += static_cast<std::int64_t>(n) * atoms_per_point() * steps;
+}
+
+double MdClosure::sound_speed(const mpm::Particles<1>& p, std::size_t q) const {
+  return std::sqrt(modulus() / p.density(q));
+}
+
+void MdClosure::save(std::ostream& out) const {
+  const std::uint64_t n = boxes_.size();
+  out.write(reinterpret_cast<const char*>(&n), sizeof n);
+  out.write(reinterpret_cast<const char*>(&atom_steps_), sizeof atom_steps_);
+  for (const auto& b : boxes_) b.save(out);
+}
+
+void MdClosure::load(std::istream& in) {
+  std::uint64_t n = 0;
+  in.read(reinterpret_cast<char*>(&n), sizeof n);
+  in.read(reinterpret_cast<char*>(&atom_steps_), sizeof atom_steps_);
+  if (!in) throw InputError("checkpoint: the MD boxes are truncated");
+  md::SystemOptions o;
+  o.skin = cfg_.skin;
+  o.mixed_precision = cfg_.mixed_precision;
+  boxes_.clear();
+  boxes_.reserve(n);
+  for (std::uint64_t q = 0; q < n; ++q) boxes_.push_back(md::System::load(in, pot_, o));
+  gradients_.assign(n, md::Mat3{});
+  stress_.assign(n, md::Mat3{});
+}
+
+}  // namespace mpmx::material

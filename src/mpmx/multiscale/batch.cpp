@@ -1,0 +1,49 @@
+#include "mpmx/multiscale/batch.hpp"
+
+#include <exception>
+#include <mutex>
+
+#include <omp.h>
+
+namespace mpmx::multiscale {
+
+Batch::Batch(int threads) : threads_(threads > 0 ? threads : omp_get_max_threads()) {}
+
+void Batch::for_each(std::size_t n, const std::function<void(std::size_t)>& task) const {
+  std::exception_ptr failure;
+  std::mutex m;
+  const long count = static_cast<long>(n);
+  // Dynamic, one box at a time: boxes differ in cost (neighbour rebuilds, compression).
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads_)
+  for (long q = 0; q < count; ++q) {
+    try {
+      task(static_cast<std::size_t>(q));
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(m);
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
+void Batch::advance(std::vector<md::System>& boxes, const std::vector<md::Mat3>& gradients, int nsteps,
+                    double dt, StressSample sample, std::vector<md::Mat3>& stress_gpa) const {
+  stress_gpa.resize(boxes.size());
+  for_each(boxes.size(), [&](std::size_t q) {
+    md::System& box = boxes[q];
+    if (sample == StressSample::last) {
+      box.advance(nsteps, gradients[q], dt);
+      stress_gpa[q] = box.stress_gpa();
+      return;
+    }
+    md::Mat3 sum{};
+    for (int s = 0; s < nsteps; ++s) {
+      box.advance(1, gradients[q], dt);
+      const md::Mat3 now = box.stress_gpa();
+      for (int c = 0; c < 9; ++c) sum[c] += now[c];
+    }
+    for (int c = 0; c < 9; ++c) stress_gpa[q][c] = sum[c] / nsteps;
+  });
+}
+
+}  // namespace mpmx::multiscale

@@ -1,0 +1,163 @@
+// md_closure: the MD box of every material point (section 6.2), thread-count
+// independence, checkpoint/resume, conservation, deck checks.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/material/md_closure.hpp"
+#include "mpmx/md/equilibrium.hpp"
+#include "ms_test_util.hpp"
+
+namespace {
+
+using namespace mpmx;
+
+std::string read_file(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+void expect_same_particles(const mpm::Particles<1>& a, const mpm::Particles<1>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t q = 0; q < a.size(); ++q) {
+    ASSERT_EQ(a.x[0][q], b.x[0][q]) << q;
+    ASSERT_EQ(a.v[0][q], b.v[0][q]) << q;
+    ASSERT_EQ(a.stress[0][q], b.stress[0][q]) << q;
+    ASSERT_EQ(a.volume[q], b.volume[q]) << q;
+  }
+}
+
+TEST(Equilibrium, CopperLatticeAndModulus) {
+  const auto eq = md::fcc_equilibrium(test::copper());
+  EXPECT_NEAR(eq.lattice_constant, 3.61493, 1e-5);    // M1
+  EXPECT_NEAR(eq.energy_per_atom, -3.54022, 1e-5);
+  EXPECT_NEAR(eq.c11_gpa, 169.9, 0.02 * 169.9);        // M4 target
+}
+
+TEST(MdClosure, UnstrainedPointAtZeroKelvinHasZeroStress) {
+  auto c = test::tiny_bar(4, 3, 2);
+  c.material.md.threads = 1;
+  material::MdClosure m(c.material.md);
+  mpm::Particles<1> p;
+  p.resize(2);
+  p.strain[0] = {0.0, -0.01};
+  p.mass = {1.0, 1.0};
+  p.volume = {1.0, 1.0};
+  m.initialize(p);
+  EXPECT_LT(std::abs(p.stress[0][0]), 1e-9);  // GPa; round-off of a 108-atom virial sum
+  // Compressed: about C11 e, stiffer in compression.
+  EXPECT_LT(p.stress[0][1], -1.0 * 169.9 * 0.01);
+  EXPECT_GT(p.stress[0][1], -1.1 * 169.9 * 0.01);
+  // At rest and zero strain rate it stays so: 100 MD steps per continuum step.
+  p.grad_v[0] = {0.0, 0.0};
+  m.update_stress(p, 0.1);
+  EXPECT_LT(std::abs(p.stress[0][0]), 1e-9);
+  EXPECT_EQ(m.atom_steps(), 2 * 108 * 100);
+  // Units in one place: a gradient of 1/ps stretches the box like exp(t).
+  p.grad_v[0] = {0.05, 0.0};
+  m.update_stress(p, 0.1);
+  EXPECT_NEAR(p.strain[0][0], std::expm1(0.005), 1e-6);
+  EXPECT_GT(p.stress[0][0], 0.0);
+}
+
+TEST(MdClosure, SameResultOnOneAndTwoThreads) {
+  const auto c = test::tiny_bar(8, 2, 4, 300.0);
+  mpm::RunOptions o;
+  o.quiet = true;
+  o.threads = 1;
+  const auto one = mpm::run_mpm(c, o);
+  o.threads = 2;
+  const auto two = mpm::run_mpm(c, o);
+  EXPECT_EQ(one.threads, 1);
+  EXPECT_EQ(two.threads, 2);
+  expect_same_particles(one.state.particles, two.state.particles);
+  EXPECT_GT(one.md_atom_steps, 8 * 32 * 400);
+}
+
+TEST(MdClosure, ResumedRunEqualsUninterruptedRun) {
+  const auto c = test::tiny_bar(6, 2, 6, 300.0);
+  mpm::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  o.out_dir = test::scratch_dir("whole");
+  const auto whole = mpm::run_mpm(c, o);
+  o.out_dir = test::scratch_dir("parts");
+  o.stop_after = 2;
+  const auto first = mpm::run_mpm(c, o);
+  EXPECT_TRUE(first.interrupted);
+  EXPECT_EQ(first.steps, 2);
+  o.stop_after = 0;
+  o.resume = true;
+  const auto rest = mpm::run_mpm(c, o);
+  EXPECT_FALSE(rest.interrupted);
+  EXPECT_EQ(rest.steps, 6);
+  expect_same_particles(whole.state.particles, rest.state.particles);
+  EXPECT_EQ(whole.md_atom_steps, rest.md_atom_steps);
+  EXPECT_FALSE(std::filesystem::exists(mpm::checkpoint_path(o.out_dir)));  // removed once complete
+  // A changed deck does not resume.
+  o.out_dir = test::scratch_dir("changed");
+  o.resume = false;
+  o.stop_after = 1;
+  mpm::run_mpm(c, o);
+  auto other = c;
+  other.deck.insert_or_assign("extra", 1);
+  o.resume = true;
+  o.stop_after = 0;
+  EXPECT_THROW(mpm::run_mpm(other, o), InputError);
+}
+
+TEST(MdClosure, ResumedTablesEqualUninterruptedTables) {
+  auto c = test::tiny_bar(6, 2, 6);
+  c.output_every = 1;
+  mpm::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  const std::string whole = test::scratch_dir("tables_whole"), parts = test::scratch_dir("tables_parts");
+  o.out_dir = whole;
+  mpm::run_mpm(c, o);
+  o.out_dir = parts;
+  o.stop_after = 3;
+  mpm::run_mpm(c, o);
+  o.stop_after = 0;
+  o.resume = true;
+  mpm::run_mpm(c, o);
+  for (const char* f : {"particles.csv", "nodes.csv", "energy.csv"}) {
+    const std::string a = read_file(whole + "/" + f), b = read_file(parts + "/" + f);
+    EXPECT_FALSE(a.empty()) << f;
+    EXPECT_EQ(a, b) << f;
+  }
+}
+
+TEST(MdClosure, MomentumBalancesTheBoundaryImpulse) {
+  const auto c = test::tiny_bar(10, 2, 5);
+  mpm::RunOptions o;
+  o.quiet = true;
+  const auto r = mpm::run_mpm(c, o);
+  EXPECT_GT(std::abs(r.boundary_impulse), 0.0);  // the compressed end pushes on its wall
+  EXPECT_LT(r.momentum_error(), 1e-12 * r.momentum_scale + 1e-14);
+}
+
+TEST(MdClosureDeck, ErrorsNameTheKey) {
+  auto bad_units = [](toml::table& t) { t["case"].as_table()->insert_or_assign("units", "furlongs"); };
+  try {
+    test::deck_with(test::example("H2_strong_0K_256_small.toml"), bad_units);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("case.units"), std::string::npos) << e.what();
+  }
+  auto bad_dt = [](toml::table& t) { t["time"].as_table()->insert_or_assign("dt", 0.0995); };
+  try {
+    test::deck_with(test::example("H2_strong_0K_256_small.toml"), bad_dt);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("whole number of MD steps"), std::string::npos) << e.what();
+  }
+  auto density = [](toml::table& t) { t["material"].as_table()->insert_or_assign("density", 8.9); };
+  EXPECT_THROW(test::deck_with(test::example("H2_strong_0K_256_small.toml"), density), InputError);
+}
+
+}  // namespace

@@ -1,0 +1,37 @@
+#pragma once
+// Helpers shared by the multiscale tests: a tiny DDMP-MD bar cut from an H deck (few
+// points, small boxes, a few steps) that runs in a second even under the sanitizers.
+#include <filesystem>
+#include <string>
+
+#include <toml++/toml.h>
+
+#include "../md/md_test_util.hpp"
+#include "../mpm/mpm_test_util.hpp"
+
+namespace mpmx::test {
+
+// The H2 small bar with `points` points of 4 x cells^3 atoms for `steps` steps of 0.1 ps.
+inline mpm::MpmConfig tiny_bar(int points, int cells, int steps, double temperature = 0.0) {
+  return deck_with(example("H2_strong_0K_256_small.toml"), [&](toml::table& t) {
+    t["grid"].as_table()->insert_or_assign("cells", points);
+    auto* md = t["material"]["md"].as_table();
+    md->insert_or_assign("cells", cells);
+    md->insert_or_assign("temperature", temperature);
+    md->insert_or_assign("relax_steps", temperature > 0 ? 20 : 0);
+    t["initial"]["strain"].as_table()->insert_or_assign("cells", 2.0);
+    t["time"].as_table()->insert_or_assign("end", 0.1 * steps);
+    t["output"].as_table()->insert_or_assign("times", toml::array{});
+    t.erase("reference");
+  });
+}
+
+// A fresh, empty folder in the scratch folder.
+inline std::string scratch_dir(const std::string& name) {
+  const std::filesystem::path d = scratch_root() / name;
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d.string();
+}
+
+}  // namespace mpmx::test
