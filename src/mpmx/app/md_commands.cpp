@@ -1,26 +1,71 @@
-// `mpmx md DECK --out DIR [--check]`: an MD-only run (issue 3).
+// `mpmx md DECK --out DIR [--check] [--lammps [--ranks N] | --lammps-write-only]`: an
+// MD-only run (issue 3); for a bar deck, optionally its reference through LAMMPS.
 #include <filesystem>
 
 #include <fmt/format.h>
 
 #include "mpmx/app/commands.hpp"
+#include "mpmx/core/error.hpp"
 #include "mpmx/io/deck.hpp"
+#include "mpmx/md/bar.hpp"
 #include "mpmx/md/config.hpp"
+#include "mpmx/md/lammps_bar.hpp"
 #include "mpmx/md/run.hpp"
 
 namespace mpmx::app {
+
+namespace {
+
+// The bar of a deck through LAMMPS instead of mpmx's own MD: inputs in OUT/lammps/,
+// then (unless write_only) lmp, and its slab stress as OUT/bar_stress_lammps.csv.
+void run_bar_lammps(const std::string& deck, const md::MdConfig& c, const std::string& out, bool write_only,
+                    int ranks) {
+  namespace fs = std::filesystem;
+  if (!c.bar)
+    throw InputError(fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] table", deck));
+  const fs::path dir = fs::path(out) / "lammps";
+  const md::Bar bar(c.bar_config, md::Potential(c.potential), c.options);
+  md::write_lammps_bar(bar, c.potential, c.dt, c.steps, c.bar_every, dir.string());
+  if (write_only) {
+    fmt::print("{} atoms, {} steps: wrote {} and {}; run `lmp -in {}` there (or under mpirun); the slab stress "
+               "(GPa) lands in {}\n",
+               bar.system().atoms().size(), c.steps, (dir / md::kLammpsBarData).string(),
+               (dir / md::kLammpsBarInput).string(), md::kLammpsBarInput, (dir / md::kLammpsBarStress).string());
+    return;
+  }
+  const md::LammpsRun r = md::run_lammps(dir.string(), ranks);
+  if (r.ranks < ranks) fmt::print(stderr, "md: mpirun not on PATH, LAMMPS ran on 1 rank instead of {}\n", ranks);
+  const auto samples =
+      md::read_lammps_bar_stress((dir / md::kLammpsBarStress).string(), c.dt, c.bar_config.bins);
+  const fs::path csv = fs::path(out) / "bar_stress_lammps.csv";
+  md::write_bar_stress_csv(csv.string(), samples, bar.slab_centres());
+  fmt::print("{} atoms, {} steps through LAMMPS (`{}` in {}) -> {}\n", bar.system().atoms().size(), c.steps,
+             r.command, dir.string(), csv.string());
+}
+
+}  // namespace
 
 void add_md_commands(CLI::App& app) {
   auto* md = app.add_subcommand("md", "Run an MD-only deck (fcc crystal, EAM/LJ/Sutton-Chen, NVE)");
   struct Args {
     std::string deck, out;
-    bool check = false, quiet = false;
+    bool check = false, quiet = false, lammps = false, lammps_write_only = false;
+    int ranks = 1;
   };
   auto args = std::make_shared<Args>();
   md->add_option("deck", args->deck, "MD deck (TOML)")->required();
   md->add_option("--out", args->out, "output directory (default: run-<deck name>)");
   md->add_flag("--check", args->check, "validate the deck and exit");
   md->add_flag("--quiet", args->quiet, "no progress line");
+  auto* lammps = md->add_flag("--lammps", args->lammps,
+                              "bar decks: run the bar through LAMMPS (lmp) instead of mpmx's MD; inputs in "
+                              "OUT/lammps/, slab stress in OUT/bar_stress_lammps.csv");
+  md->add_flag("--lammps-write-only", args->lammps_write_only,
+               "bar decks: only write the LAMMPS inputs to OUT/lammps/ (to run on a cluster)")
+      ->excludes(lammps);
+  md->add_option("--ranks", args->ranks, "MPI ranks for --lammps (mpirun -np N when N > 1)")
+      ->check(CLI::PositiveNumber)
+      ->needs(lammps);
   md->callback([args] {
     auto deck = io::Deck::from_file(args->deck);
     const md::MdConfig config = md::read_md_config(deck);
@@ -30,6 +75,10 @@ void add_md_commands(CLI::App& app) {
     }
     std::string out = args->out;
     if (out.empty()) out = "run-" + std::filesystem::path(args->deck).stem().string();
+    if (args->lammps || args->lammps_write_only) {
+      run_bar_lammps(args->deck, config, out, args->lammps_write_only, args->ranks);
+      return;
+    }
     const auto r = md::run_md(config, out, deck.table(), args->quiet);
     fmt::print("{} atoms, {} steps, {:.3g} s, {:.4g} atom-steps/s, PE {:.6f} eV/atom -> {}/run.json\n", r.atoms,
                r.steps, r.wall_seconds, r.atom_steps_per_second, r.potential_energy_per_atom, out);
