@@ -16,27 +16,30 @@ std::string duration(double s) {
 }  // namespace
 
 Progress::Progress(std::string label, std::int64_t total, bool quiet, std::int64_t from)
-    : label_(std::move(label)), total_(total), from_(from), active_(!quiet && isatty(fileno(stderr))),
+    : label_(std::move(label)), total_(total), from_(from), active_(!quiet), terminal_(isatty(fileno(stderr))),
       start_(clock::now()), last_(start_) {}
 
 void Progress::update(std::int64_t done) {
   if (!active_) return;
   const auto now = clock::now();
-  if (now - last_ < std::chrono::milliseconds(300)) return;
+  if (now - last_ < (terminal_ ? std::chrono::milliseconds(300) : std::chrono::milliseconds(60000))) return;
   last_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double frac = total_ > 0 ? static_cast<double>(done) / total_ : 1.0;
   const double rate = done > from_ ? (done - from_) / elapsed : 0.0;
   const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
-  fmt::print(stderr, "\r{}: {:5.1f}%  step {}/{}  elapsed {}  ETA {}   ", label_, 100.0 * frac, done, total_,
-             duration(elapsed), duration(eta));
+  fmt::print(stderr, "{}{}: {:5.1f}%  step {}/{}  elapsed {}  ETA {}{}", terminal_ ? "\r" : "", label_,
+             100.0 * frac, done, total_, duration(elapsed), duration(eta), terminal_ ? "   " : "\n");
   std::fflush(stderr);
 }
 
 void Progress::finish() {
   if (!active_) return;
   const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
-  fmt::print(stderr, "\r{}: done, {} steps in {}{:30}\n", label_, total_ - from_, duration(elapsed), "");
+  if (terminal_)
+    fmt::print(stderr, "\r{}: done, {} steps in {}{:30}\n", label_, total_ - from_, duration(elapsed), "");
+  else if (elapsed > 60)
+    fmt::print(stderr, "{}: done, {} steps in {}\n", label_, total_ - from_, duration(elapsed));
 }
 
 }  // namespace mpmx

@@ -1,6 +1,7 @@
 #pragma once
 // A progress line with ETA on a terminal (stderr), at most a few updates a second;
-// silent when stderr is not a terminal or when quiet.
+// when stderr is a file (a batch job's log), a plain line every minute instead;
+// silent when quiet.
 #include <chrono>
 #include <cstdint>
 #include <string>
@@ -18,7 +19,7 @@ class Progress {
   using clock = std::chrono::steady_clock;
   std::string label_;
   std::int64_t total_, from_;
-  bool active_;
+  bool active_, terminal_;
   clock::time_point start_, last_;
 };
 

@@ -19,11 +19,11 @@ double mass_unit_amu(const units::UnitSystem& u) {
   return u.stress_GPa * units::GPa_in_Pa * time_s * time_s * length_m / units::amu_in_kg;
 }
 
-MdClosureProperties properties(const md::Potential& pot, const units::UnitSystem& u) {
+MdClosureProperties properties(const md::FccEquilibrium& eq, const units::UnitSystem& u) {
   MdClosureProperties r;
-  r.equilibrium = md::fcc_equilibrium(pot);
-  r.density = r.equilibrium.density_amu_per_A3 / mass_unit_amu(u) * std::pow(u.length_A, 3);
-  r.modulus = r.equilibrium.c11_gpa / u.stress_GPa;
+  r.equilibrium = eq;
+  r.density = eq.density_amu_per_A3 / mass_unit_amu(u) * std::pow(u.length_A, 3);
+  r.modulus = eq.c11_gpa / u.stress_GPa;
   r.sound_speed = std::sqrt(r.modulus / r.density);
   return r;
 }
@@ -31,14 +31,14 @@ MdClosureProperties properties(const md::Potential& pot, const units::UnitSystem
 }  // namespace
 
 MdClosureProperties md_closure_properties(const md::PotentialSpec& spec, const units::UnitSystem& u) {
-  return properties(md::Potential(spec), u);
+  return properties(md::fcc_equilibrium(md::Potential(spec)), u);
 }
 
 MdClosure::MdClosure(const MdClosureConfig& config)
     : cfg_(config), pot_(config.potential), eq_(md::fcc_equilibrium(pot_)), batch_(config.threads) {}
 
-double MdClosure::density() const { return properties(pot_, cfg_.units).density; }
-double MdClosure::modulus() const { return eq_.c11_gpa / cfg_.units.stress_GPa; }
+double MdClosure::density() const { return properties(eq_, cfg_.units).density; }
+double MdClosure::modulus() const { return properties(eq_, cfg_.units).modulus; }
 
 void MdClosure::initialize(mpm::Particles<1>& p) {
   const std::size_t n = p.size();
