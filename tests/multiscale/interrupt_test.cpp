@@ -15,13 +15,6 @@ namespace {
 
 using namespace mpmx;
 
-std::string read_file(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
 TEST(Interrupt, CtrlCLeavesACheckpointThatResumesExactly) {
   const auto c = test::tiny_bar(4, 2, 400);
   const std::string deck = test::scratch_dir("interrupt") + "/tiny.toml";
@@ -42,15 +35,15 @@ TEST(Interrupt, CtrlCLeavesACheckpointThatResumesExactly) {
   }
   const int status = std::system(("bash '" + script + "'").c_str());
   ASSERT_TRUE(WIFEXITED(status));
-  ASSERT_EQ(WEXITSTATUS(status), 130) << read_file(cut + "/stderr");
+  ASSERT_EQ(WEXITSTATUS(status), 130) << test::read_file(cut + "/stderr");
   EXPECT_TRUE(std::filesystem::exists(cut + "/checkpoint.bin"));
-  EXPECT_NE(read_file(cut + "/stderr").find("--resume"), std::string::npos);
-  EXPECT_NE(read_file(cut + "/run.json").find("interrupted"), std::string::npos);
+  EXPECT_NE(test::read_file(cut + "/stderr").find("--resume"), std::string::npos);
+  EXPECT_NE(test::read_file(cut + "/run.json").find("interrupted"), std::string::npos);
   ASSERT_EQ(std::system(fmt::format("{} --out '{}' --resume > /dev/null", run, cut).c_str()), 0);
   for (const char* f : {"particles.csv", "nodes.csv", "energy.csv"}) {
-    const std::string a = read_file(whole + "/" + f);
+    const std::string a = test::read_file(whole + "/" + f);
     EXPECT_FALSE(a.empty()) << f;
-    EXPECT_EQ(a, read_file(cut + "/" + f)) << f;
+    EXPECT_EQ(a, test::read_file(cut + "/" + f)) << f;
   }
   EXPECT_FALSE(std::filesystem::exists(cut + "/checkpoint.bin"));
 }

@@ -14,13 +14,6 @@ namespace {
 
 using namespace mpmx;
 
-std::string read_file(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
 void expect_same_particles(const mpm::Particles<1>& a, const mpm::Particles<1>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t q = 0; q < a.size(); ++q) {
@@ -126,7 +119,7 @@ TEST(MdClosure, ResumedTablesEqualUninterruptedTables) {
   o.resume = true;
   mpm::run_mpm(c, o);
   for (const char* f : {"particles.csv", "nodes.csv", "energy.csv"}) {
-    const std::string a = read_file(whole + "/" + f), b = read_file(parts + "/" + f);
+    const std::string a = test::read_file(whole + "/" + f), b = test::read_file(parts + "/" + f);
     EXPECT_FALSE(a.empty()) << f;
     EXPECT_EQ(a, b) << f;
   }

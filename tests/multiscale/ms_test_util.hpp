@@ -2,6 +2,8 @@
 // Helpers shared by the multiscale tests: a tiny DDMP-MD bar cut from an H deck (few
 // points, small boxes, a few steps) that runs in a second even under the sanitizers.
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <toml++/toml.h>
@@ -32,6 +34,14 @@ inline std::string scratch_dir(const std::string& name) {
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
   return d.string();
+}
+
+// A whole file as text ("" when absent).
+inline std::string read_file(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
 }
 
 }  // namespace mpmx::test
