@@ -7,6 +7,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/material/md_closure.hpp"
+#include "mpmx/md/config.hpp"
 #include "mpmx/md/equilibrium.hpp"
 #include "ms_test_util.hpp"
 
@@ -151,6 +152,36 @@ TEST(MdClosureDeck, ErrorsNameTheKey) {
   }
   auto density = [](toml::table& t) { t["material"].as_table()->insert_or_assign("density", 8.9); };
   EXPECT_THROW(test::deck_with(test::example("H2_strong_0K_256_small.toml"), density), InputError);
+}
+
+}  // namespace
+
+namespace {
+
+// Every H deck is valid, and each continuum deck describes the bar of the direct-MD
+// deck it compares with: the same strain, and a grid spanning the strained bar.
+TEST(HDecks, ValidAndDescribeTheirDirectMdBar) {
+  namespace fs = std::filesystem;
+  const double a0 = md::fcc_equilibrium(test::copper()).lattice_constant;
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(fs::path(MPMX_SOURCE_DIR) / "examples")) {
+    const std::string name = e.path().filename().string();
+    if (name[0] != 'H' || name.find("direct_md") != std::string::npos) continue;
+    const auto c = io::read_mpm_deck(e.path().string());
+    ASSERT_EQ(c.reference.name, "direct_md") << name;
+    const std::string md_deck = fs::path(c.reference.file).parent_path().filename().string() + ".toml";
+    auto deck = io::Deck::from_file((fs::path(MPMX_SOURCE_DIR) / "examples" / md_deck).string());
+    const auto md = md::read_md_config(deck);
+    ASSERT_TRUE(md.bar) << md_deck;
+    const auto& b = md.bar_config;
+    EXPECT_EQ(c.strain.left, b.strain_left) << name;
+    const double length_nm = 0.1 * b.cells_x * b.lattice_constant * (1 + 0.5 * b.strain_left);
+    EXPECT_NEAR(c.upper - c.lower, length_nm, 1e-6 * length_nm) << name;
+    EXPECT_NEAR(c.strain.at, 0.5 * 0.1 * b.cells_x * b.lattice_constant * (1 + b.strain_left), 1e-6) << name;
+    EXPECT_NEAR(b.lattice_constant, a0, 1e-9) << md_deck;
+    ++n;
+  }
+  EXPECT_GE(n, 20);
 }
 
 }  // namespace
