@@ -53,3 +53,34 @@ TEST(H2Small, DdmpMdCloserToDirectMdThanElastic) {
 }
 
 }  // namespace
+
+namespace {
+
+// Standard deviation of the stress of the points ahead of the shock (x > 22 nm) at the
+// last step: thermal noise of the 300 K boxes.
+double noise_ahead(const mpm::RunResult& r) {
+  const auto& p = r.state.particles;
+  double s = 0, s2 = 0;
+  int n = 0;
+  for (std::size_t q = 0; q < p.size(); ++q)
+    if (p.x[0][q] > 22.0) s += p.stress[0][q], s2 += p.stress[0][q] * p.stress[0][q], ++n;
+  const double mean = s / n;
+  return std::sqrt(std::max(0.0, s2 / n - mean * mean));
+}
+
+TEST(H3Small, NoiseFallsFrom256To500Atoms) {
+  auto deck = [](const char* name) {
+    return test::deck_with(test::example(name), [](toml::table& t) {
+      t.erase("reference");
+      t["time"].as_table()->insert_or_assign("end", 1.0);
+      t["output"].as_table()->insert_or_assign("times", toml::array{});
+    });
+  };
+  const double n256 = noise_ahead(test::run(deck("H3_strong_300K_256_small.toml")));
+  const double n500 = noise_ahead(test::run(deck("H3_strong_300K_500_small.toml")));
+  fmt::print("H3 small, stress noise ahead of the shock: 256 atoms {:.4f} GPa, 500 atoms {:.4f} GPa\n", n256, n500);
+  EXPECT_GT(n256, 0.03);        // 300 K boxes are noisy (measured 0.10 GPa) ...
+  EXPECT_LT(n500, 0.8 * n256);  // ... and less so with more atoms (measured 0.058)
+}
+
+}  // namespace
