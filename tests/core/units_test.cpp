@@ -3,6 +3,7 @@
 
 #include "mpmx/core/units.hpp"
 #include "mpmx/material/md_closure.hpp"
+#include "../md/md_test_util.hpp"
 
 namespace {
 
@@ -28,8 +29,7 @@ TEST(Units, NamedSystems) {
 }
 
 TEST(Units, CopperDensityInEveryUnitSystem) {
-  md::PotentialSpec cu;
-  cu.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
+  const md::PotentialSpec cu = test::copper_spec();
   // 8.9356 g/cm^3: nm_ps_GPa and mm_us_GPa measure density in g/cm^3, SI in kg/m^3.
   EXPECT_NEAR(material::md_closure_properties(cu, *units::unit_system("nm_ps_GPa")).density, 8.9356, 1e-4);
   EXPECT_NEAR(material::md_closure_properties(cu, *units::unit_system("mm_us_GPa")).density, 8.9356, 1e-4);

@@ -26,12 +26,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-PotentialSpec copper_spec() {
-  PotentialSpec s;
-  s.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
-  return s;
-}
-
 bool have_lmp() { return std::system("command -v lmp > /dev/null 2>&1") == 0; }
 
 BarConfig small_bar(double temperature) {
@@ -57,7 +51,7 @@ void crosscheck(const std::string& name, double temperature, int steps, int ever
   Bar bar(c, mpmx::test::copper());
   const auto dir = fs::temp_directory_path() / ("mpmx_bar_lammps_" + name + "_" + std::to_string(getpid()));
   fs::remove_all(dir);
-  write_lammps_bar(bar, copper_spec(), dt, steps, every, dir.string());
+  write_lammps_bar(bar, mpmx::test::copper_spec(), dt, steps, every, dir.string());
 
   std::vector<std::vector<Mat3>> mine{bar.slab_stress_gpa()};
   for (int s = 0; s < steps; s += every) {
@@ -128,7 +122,7 @@ TEST(bar_lammps, RejectsMovingPiston) {
   Bar bar(c, mpmx::test::copper());
   const auto dir = fs::temp_directory_path() / ("mpmx_bar_lammps_piston_" + std::to_string(getpid()));
   try {
-    write_lammps_bar(bar, copper_spec(), 0.001, 100, 50, dir.string());
+    write_lammps_bar(bar, mpmx::test::copper_spec(), 0.001, 100, 50, dir.string());
     ADD_FAILURE() << "a moving piston was accepted";
   } catch (const mpmx::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("piston_velocity = 5"), std::string::npos) << e.what();
@@ -139,7 +133,7 @@ TEST(bar_lammps, RejectsMovingPiston) {
 TEST(bar_lammps, RejectsStepsNotMultipleOfEvery) {
   Bar bar(small_bar(0.0), mpmx::test::copper());
   const auto dir = fs::temp_directory_path() / ("mpmx_bar_lammps_steps_" + std::to_string(getpid()));
-  EXPECT_THROW(write_lammps_bar(bar, copper_spec(), 0.001, 120, 50, dir.string()), mpmx::InputError);
+  EXPECT_THROW(write_lammps_bar(bar, mpmx::test::copper_spec(), 0.001, 120, 50, dir.string()), mpmx::InputError);
   fs::remove_all(dir);
 }
 

@@ -7,6 +7,7 @@
 
 #include "mpmx/md/lattice.hpp"
 #include "mpmx/md/system.hpp"
+#include "md_test_util.hpp"
 
 namespace mpmx::test {
 
@@ -36,11 +37,9 @@ inline double initial_slope(const std::vector<double>& e, const std::vector<doub
 // Strain to max_strain at `rate` (1/s) and return the initial slope in GPa.
 inline double uniaxial_slope(int cells, double rate_per_s, double max_strain, Deformation mode,
                       double temperature = 0.0, std::uint64_t seed = 77) {
-  PotentialSpec spec;
-  spec.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
   SystemOptions o;
   o.deformation = mode;
-  System s(fcc(cells, cells, cells, 3.615), Potential(spec), o);
+  System s(fcc(cells, cells, cells, 3.615), copper(), o);
   if (temperature > 0) {
     s.thermalize(temperature, seed, static_cast<std::uint64_t>(cells));
     s.advance(2000, 0.001);  // relax at zero strain rate (section 6.2)

@@ -11,11 +11,13 @@
 
 namespace mpmx::test {
 
-inline md::Potential copper() {
+inline md::PotentialSpec copper_spec() {
   md::PotentialSpec spec;
   spec.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
-  return md::Potential(spec);
+  return spec;
 }
+
+inline md::Potential copper() { return md::Potential(copper_spec()); }
 
 // A per-process folder under the system's temporary one, removed when the process ends.
 inline const std::filesystem::path& scratch_root() {

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "mpmx/core/error.hpp"
 #include "mpmx/material/md_closure.hpp"
 #include "mpmx/md/config.hpp"
@@ -135,23 +137,61 @@ TEST(MdClosure, MomentumBalancesTheBoundaryImpulse) {
   EXPECT_LT(r.momentum_error(), 1e-12 * r.momentum_scale + 1e-14);
 }
 
+// The H2 small deck edited by `edit` must be refused with `text` in the message.
+template <class Edit>
+void expect_deck_error(Edit edit, const std::string& text) {
+  try {
+    test::deck_with(test::example("H2_strong_0K_256_small.toml"), edit);
+    ADD_FAILURE() << "accepted; expected an error naming '" << text << "'";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+  }
+}
+
+// A direct-MD table without a record at a compared time is refused before the run,
+// not skipped; the times it has are compared by eq. 7.12 and the units recorded.
+TEST(DirectMdReference, ComparedTimesMustBeInTheTable) {
+  const std::string dir = test::scratch_dir("direct_md_table");
+  {
+    std::ofstream f(dir + "/bar_stress.csv");
+    f << "step,time_ps,bin,x_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n";
+    for (int step : {0, 100, 200})
+      for (int b = 0; b < 4; ++b) f << fmt::format("{},{},{},0,{},0,0,0,0,0\n", step, step * 0.001, b, b < 2 ? -9.0 : 0.0);
+  }
+  auto with_times = [&](toml::array times) {
+    auto c = test::tiny_bar(8, 2, 3);
+    c.reference.name = "direct_md";
+    c.reference.file = dir + "/bar_stress.csv";
+    c.reference.fields = {"stress"};
+    c.reference.times.clear();
+    for (const auto& t : times) c.reference.times.push_back(t.value_or(0.0));
+    return c;
+  };
+  try {
+    test::run(with_times(toml::array{0.1, 0.3}));
+    ADD_FAILURE() << "a compared time beyond the table was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no record at t = 0.3"), std::string::npos) << e.what();
+  }
+  mpm::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  o.out_dir = test::scratch_dir("direct_md_run");
+  const auto r = mpm::run_mpm(with_times(toml::array{0.1, 0.2}), o);
+  EXPECT_GT(r.stress_vs_direct_md, 0.0);
+  EXPECT_LT(r.stress_vs_direct_md, 1.0);
+  const std::string json = test::read_file(o.out_dir + "/run.json");
+  EXPECT_NE(json.find("\"stress_vs_direct_md\""), std::string::npos);
+  EXPECT_NE(json.find("\"time_ps\""), std::string::npos);  // units for tools/plot
+}
+
 TEST(MdClosureDeck, ErrorsNameTheKey) {
-  auto bad_units = [](toml::table& t) { t["case"].as_table()->insert_or_assign("units", "furlongs"); };
-  try {
-    test::deck_with(test::example("H2_strong_0K_256_small.toml"), bad_units);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("case.units"), std::string::npos) << e.what();
-  }
-  auto bad_dt = [](toml::table& t) { t["time"].as_table()->insert_or_assign("dt", 0.0995); };
-  try {
-    test::deck_with(test::example("H2_strong_0K_256_small.toml"), bad_dt);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("whole number of MD steps"), std::string::npos) << e.what();
-  }
-  auto density = [](toml::table& t) { t["material"].as_table()->insert_or_assign("density", 8.9); };
-  EXPECT_THROW(test::deck_with(test::example("H2_strong_0K_256_small.toml"), density), InputError);
+  expect_deck_error([](toml::table& t) { t["case"].as_table()->insert_or_assign("units", "furlongs"); },
+                    "case.units");
+  expect_deck_error([](toml::table& t) { t["time"].as_table()->insert_or_assign("dt", 0.0995); },
+                    "whole number of MD steps");
+  expect_deck_error([](toml::table& t) { t["material"].as_table()->insert_or_assign("density", 8.9); },
+                    "material.density");
 }
 
 }  // namespace
@@ -162,7 +202,8 @@ namespace {
 // deck it compares with: the same strain, and a grid spanning the strained bar.
 TEST(HDecks, ValidAndDescribeTheirDirectMdBar) {
   namespace fs = std::filesystem;
-  const double a0 = md::fcc_equilibrium(test::copper()).lattice_constant;
+  const auto cu = material::md_closure_properties(test::copper_spec(), *units::unit_system("nm_ps_GPa"));
+  const double a0 = cu.equilibrium.lattice_constant;
   int n = 0;
   for (const auto& e : fs::directory_iterator(fs::path(MPMX_SOURCE_DIR) / "examples")) {
     const std::string name = e.path().filename().string();
@@ -179,6 +220,11 @@ TEST(HDecks, ValidAndDescribeTheirDirectMdBar) {
     EXPECT_NEAR(c.upper - c.lower, length_nm, 1e-6 * length_nm) << name;
     EXPECT_NEAR(c.strain.at, 0.5 * 0.1 * b.cells_x * b.lattice_constant * (1 + b.strain_left), 1e-6) << name;
     EXPECT_NEAR(b.lattice_constant, a0, 1e-9) << md_deck;
+    if (c.material.model == "linear_elastic") {  // the companion: the MD crystal's C11 and density
+      EXPECT_NEAR(c.material.youngs_modulus, cu.modulus, 1e-5 * cu.modulus) << name;
+      EXPECT_NEAR(c.material.density, cu.density, 1e-5 * cu.density) << name;
+      EXPECT_TRUE(c.material.density_unstrained) << name;
+    }
     ++n;
   }
   EXPECT_GE(n, 20);

@@ -66,10 +66,16 @@ def main(argv=None):
     first = runs[0][1]
     grid = first["deck"]["grid"]
     lower, upper = float(grid.get("lower", 0.0)), float(grid["upper"])
-    units = first["deck"]["case"].get("units", "")
-    time_ps = 1.0 if units.startswith("nm_ps") else None
+    # The deck's unit system as run.json records it (core/units), to place the bar's
+    # records (ps, GPa) on the runs' axes.
+    units = first.get("units")
+    if a.md and not units:
+        print(f"multiscale_profiles: {a.runs[0]} names no unit system (case.units), so the direct MD "
+              "cannot be placed on its axes", file=sys.stderr)
+        return 1
     times = sorted(t for t in runs[0][2] if t > 0)
     bar = read_bar(a.md) if a.md else None
+    stress_label = "GPa" if units and units["stress_GPa"] == 1.0 else f"{(units or {}).get('name', 'deck')} units"
 
     n = len(times)
     cols = min(n, 2)
@@ -77,17 +83,19 @@ def main(argv=None):
     fig, axes = plt.subplots(rows, cols, figsize=(6.0 * cols, 3.6 * rows), squeeze=False)
     for k, t in enumerate(times):
         ax = axes[k // cols][k % cols]
-        if bar is not None and time_ps is not None:
-            rec = bar[nearest(bar, t * time_ps)]
+        if bar is not None:
+            rec = bar[nearest(bar, t * units["time_ps"])]
             nb = len(rec)
             xs = [lower + (b + 0.5) * (upper - lower) / nb for b in range(nb)]
-            ax.plot(xs, rec, color="k", lw=0, marker="o", ms=2.5, label="direct MD", zorder=3)
+            ys = [v / units["stress_GPa"] for v in rec]
+            ax.plot(xs, ys, color="k", lw=0, marker="o", ms=2.5, label="direct MD", zorder=3)
         for (label, meta, by_time), style in zip(runs, STYLES):
             if t in by_time:
                 ax.plot(*by_time[t], label=label, **style)
-        ax.set_title(f"t = {t:g} ps" if time_ps else f"t = {t:g}", fontsize=10)
-        ax.set_xlabel("x (nm)" if time_ps else "x")
-        ax.set_ylabel("stress $\\sigma_{xx}$ (GPa)" if time_ps else "stress")
+        name = units["name"] if units else ""
+        ax.set_title(f"t = {t:g} ps" if name == "nm_ps_GPa" else f"t = {t:g} ({name})", fontsize=10)
+        ax.set_xlabel("x (nm)" if name == "nm_ps_GPa" else f"x ({name})")
+        ax.set_ylabel(f"stress $\\sigma_{{xx}}$ ({stress_label})")
         ax.grid(True, lw=0.3, alpha=0.5)
         if k == 0:
             ax.legend(fontsize=8)

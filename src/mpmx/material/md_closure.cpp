@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <istream>
+#include <optional>
 #include <ostream>
 
 #include <fmt/format.h>
@@ -34,28 +35,37 @@ MdClosureProperties md_closure_properties(const md::PotentialSpec& spec, const u
   return properties(md::fcc_equilibrium(md::Potential(spec)), u);
 }
 
+int MdClosureConfig::md_steps(double dt_continuum) const {
+  const double steps = dt_continuum * units.time_ps / dt;
+  const long k = std::lround(steps);
+  return k >= 1 && std::abs(steps - k) <= 1e-6 * steps ? static_cast<int>(k) : 0;
+}
+
 MdClosure::MdClosure(const MdClosureConfig& config)
-    : cfg_(config), pot_(config.potential), eq_(md::fcc_equilibrium(pot_)), batch_(config.threads) {}
+    : cfg_(config), pot_(config.potential), props_(properties(md::fcc_equilibrium(pot_), config.units)),
+      batch_(config.threads) {}
 
-double MdClosure::density() const { return properties(eq_, cfg_.units).density; }
-double MdClosure::modulus() const { return properties(eq_, cfg_.units).modulus; }
-
-void MdClosure::initialize(mpm::Particles<1>& p) {
-  const std::size_t n = p.size();
+md::SystemOptions MdClosure::box_options() const {
   md::SystemOptions o;
   o.skin = cfg_.skin;
   o.mixed_precision = cfg_.mixed_precision;
-  boxes_.clear();
-  boxes_.reserve(n);
-  // Placeholders, then each point's box built on the threads (section 6.2).
-  const md::System blank(md::fcc(1, 1, 1, eq_.lattice_constant), pot_, o);
-  boxes_.assign(n, blank);
+  return o;
+}
+
+void MdClosure::initialize(mpm::Particles<1>& p) {
+  const std::size_t n = p.size();
+  const double a0 = props_.equilibrium.lattice_constant;
+  // Each point's box built on the threads (section 6.2), then kept in point order.
+  std::vector<std::optional<md::System>> built(n);
   batch_.for_each(n, [&](std::size_t q) {
-    md::System box(md::fcc(cfg_.cells, cfg_.cells, cfg_.cells, eq_.lattice_constant, p.strain[0][q]), pot_, o);
+    md::System box(md::fcc(cfg_.cells, cfg_.cells, cfg_.cells, a0, p.strain[0][q]), pot_, box_options());
     if (cfg_.temperature > 0) box.thermalize(cfg_.temperature, cfg_.seed, q);
     box.advance(static_cast<int>(cfg_.relax_steps), cfg_.dt);  // zero strain rate
-    boxes_[q] = std::move(box);
+    built[q].emplace(std::move(box));
   });
+  boxes_.clear();
+  boxes_.reserve(n);
+  for (auto& b : built) boxes_.push_back(std::move(*b));
   gradients_.assign(n, md::Mat3{});
   stress_.resize(n);
   for (std::size_t q = 0; q < n; ++q) {
@@ -65,22 +75,16 @@ void MdClosure::initialize(mpm::Particles<1>& p) {
   atom_steps_ = static_cast<std::int64_t>(n) * atoms_per_point() * cfg_.relax_steps;
 }
 
-int MdClosure::md_steps(double dt) const {
-  const double steps = dt * cfg_.units.time_ps / cfg_.dt;
-  const long k = std::lround(steps);
-  if (k < 1 || std::abs(steps - k) > 1e-6 * steps)
+void MdClosure::update_stress(mpm::Particles<1>& p, double dt) {
+  const std::size_t n = p.size();
+  const int steps = cfg_.md_steps(dt);
+  if (steps == 0)
     throw InputError(fmt::format("md_closure: the continuum step ({} ps) is not a whole number of MD "
                                  "steps of {} ps",
                                  dt * cfg_.units.time_ps, cfg_.dt));
-  return static_cast<int>(k);
-}
-
-void MdClosure::update_stress(mpm::Particles<1>& p, double dt) {
-  const std::size_t n = p.size();
-  const int steps = md_steps(dt);
   for (std::size_t q = 0; q < n; ++q) gradients_[q][0] = p.grad_v[0][q] / cfg_.units.time_ps;  // 1/ps
   batch_.advance(boxes_, gradients_, steps, cfg_.dt, cfg_.sample, stress_);
-  const double l0 = cfg_.cells * eq_.lattice_constant;
+  const double l0 = cfg_.cells * props_.equilibrium.lattice_constant;
   for (std::size_t q = 0; q < n; ++q) {
     p.stress[0][q] = stress_[q][0] / cfg_.units.stress_GPa;
     p.strain[0][q] = boxes_[q].box().lx / l0 - 1.0;  // the box's engineering strain
@@ -104,12 +108,9 @@ void MdClosure::load(std::istream& in) {
   in.read(reinterpret_cast<char*>(&n), sizeof n);
   in.read(reinterpret_cast<char*>(&atom_steps_), sizeof atom_steps_);
   if (!in) throw InputError("checkpoint: the MD boxes are truncated");
-  md::SystemOptions o;
-  o.skin = cfg_.skin;
-  o.mixed_precision = cfg_.mixed_precision;
   boxes_.clear();
   boxes_.reserve(n);
-  for (std::uint64_t q = 0; q < n; ++q) boxes_.push_back(md::System::load(in, pot_, o));
+  for (std::uint64_t q = 0; q < n; ++q) boxes_.push_back(md::System::load(in, pot_, box_options()));
   gradients_.assign(n, md::Mat3{});
   stress_.assign(n, md::Mat3{});
 }

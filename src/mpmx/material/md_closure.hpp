@@ -29,7 +29,19 @@ struct MdClosureConfig {
   bool mixed_precision = false;
   units::UnitSystem units{"nm_ps_GPa", 10.0, 1.0, 1.0};
   int threads = 0;                 // 0: OpenMP default
+
+  int atoms_per_point() const { return 4 * cells * cells * cells; }
+  // MD steps in a continuum step `dt` (continuum units); 0 when not a whole number.
+  int md_steps(double dt) const;
 };
+
+// The least-energy lattice, C11 and density of a closure's potential, in continuum
+// units, without building any box (deck checks: CFL limit, the density of the points).
+struct MdClosureProperties {
+  md::FccEquilibrium equilibrium;
+  double density = 0.0, modulus = 0.0, sound_speed = 0.0;
+};
+MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, const units::UnitSystem& u);
 
 class MdClosure final : public Material<1> {
  public:
@@ -44,32 +56,24 @@ class MdClosure final : public Material<1> {
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;
 
-  const md::FccEquilibrium& equilibrium() const { return eq_; }
-  double density() const;       // unstrained crystal, continuum units
-  double modulus() const;       // C11, continuum units
-  int atoms_per_point() const { return 4 * cfg_.cells * cfg_.cells * cfg_.cells; }
+  const md::FccEquilibrium& equilibrium() const { return props_.equilibrium; }
+  double density() const { return props_.density; }  // unstrained crystal, continuum units
+  double modulus() const { return props_.modulus; }  // C11, continuum units
+  int atoms_per_point() const { return cfg_.atoms_per_point(); }
   std::int64_t atom_steps() const { return atom_steps_; }
   int threads() const { return batch_.threads(); }
   const std::vector<md::System>& boxes() const { return boxes_; }
 
  private:
-  int md_steps(double dt) const;
+  md::SystemOptions box_options() const;
 
   MdClosureConfig cfg_;
   md::Potential pot_;
-  md::FccEquilibrium eq_;
+  MdClosureProperties props_;
   multiscale::Batch batch_;
   std::vector<md::System> boxes_;
   std::vector<md::Mat3> gradients_, stress_;
   std::int64_t atom_steps_ = 0;
 };
-
-// The least-energy lattice, C11 and density of a closure's potential, in continuum
-// units, without building any box (deck checks: CFL limit, the density of the points).
-struct MdClosureProperties {
-  md::FccEquilibrium equilibrium;
-  double density = 0.0, modulus = 0.0, sound_speed = 0.0;
-};
-MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, const units::UnitSystem& u);
 
 }  // namespace mpmx::material

@@ -10,7 +10,7 @@
 namespace mpmx::mpm {
 
 namespace {
-constexpr char kMagic[8] = {'M', 'P', 'M', 'X', 'S', 'T', '0', '1'};
+constexpr char kMagic[8] = {'M', 'P', 'M', 'X', 'S', 'T', '0', '2'};
 
 template <class F>
 void each_array(Particles<1>& p, F&& f) {
@@ -67,7 +67,6 @@ void save_state(CheckpointOut& out, const State<1>& s) {
   out.stream().write(kMagic, 8);
   out.integer(s.step);
   out.number(s.time);
-  out.number(s.finite_check);
   const Tallies& t = s.tallies;
   for (double v : {t.boundary_impulse, t.boundary_work, t.stress_work, t.max_force_sum, t.node_mass}) out.number(v);
   auto& p = const_cast<Particles<1>&>(s.particles);
@@ -83,7 +82,6 @@ void load_state(CheckpointIn& in, State<1>& s) {
     throw InputError("not an mpmx run checkpoint (or one from another version)");
   s.step = in.integer();
   s.time = in.number();
-  s.finite_check = in.number();
   Tallies& t = s.tallies;
   for (double* v : {&t.boundary_impulse, &t.boundary_work, &t.stress_work, &t.max_force_sum, &t.node_mass})
     *v = in.number();

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/reference/bar_history.hpp"
@@ -132,7 +134,13 @@ std::unique_ptr<Reference> make_reference(const MpmConfig& c) {
   if (name == "direct_md") {
     const auto u = units::unit_system(c.units);
     need(u.has_value(), "needs case.units to name a unit system");
-    return std::make_unique<DirectMd>(reference::BarHistory::read(c.reference.file), c.lower, L, *u);
+    auto history = reference::BarHistory::read(c.reference.file);
+    for (double t : c.reference.times)  // a compared time missing from the table is an error, not a skip
+      need(history.has(t * u->time_ps),
+           fmt::format("{} has no record at t = {} ({} ps); its last is at {} ps", c.reference.file, t,
+                       t * u->time_ps, history.last_time_ps())
+               .c_str());
+    return std::make_unique<DirectMd>(std::move(history), c.lower, L, *u);
   }
   if (name == "standing_wave") {
     need(m.model == "linear_elastic", "needs material.model = \"linear_elastic\"");

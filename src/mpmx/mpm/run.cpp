@@ -1,5 +1,6 @@
 #include "mpmx/mpm/run.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -8,11 +9,13 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
+#include "mpmx/core/units.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/material/md_closure.hpp"
 #include "mpmx/mpm/checkpoint.hpp"
@@ -124,7 +127,7 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
   RunResult r;
   if (!o.resume && !o.quiet && c.material.model == "md_closure")
     fmt::print(stderr, "{}: building {} MD boxes of {} atoms (section 6.2)...\n", c.id,
-               static_cast<long>(c.cells) * c.per_cell, 4 * c.material.md.cells * c.material.md.cells * c.material.md.cells);
+               static_cast<long>(c.cells) * c.per_cell, c.material.md.atoms_per_point());
   r.state = make_state(c, !o.resume);
   State<1>& s = r.state;
   const auto* closure = dynamic_cast<const material::MdClosure*>(s.material.get());
@@ -160,7 +163,12 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
   const bool direct_md = c.reference.name == "direct_md";
   double wall_before = 0.0;                        // earlier processes of a resumed run
 
-  // The run loop's own carry-over, after the state in the checkpoint.
+  // The run loop's own running figures, carried by a checkpoint after the state.
+  auto carried = [&] {
+    return std::array<double*, 8>{&r.momentum_initial, &r.kinetic_initial, &r.mass_particles, &r.momentum_scale,
+                                  &r.max_kinetic, &eq712.squared_difference, &eq712.squared_reference,
+                                  &wall_before};
+  };
   auto save_checkpoint = [&](Output* out, double wall_now) {
     const std::string path = checkpoint_path(o.out_dir), tmp = path + ".tmp";
     {
@@ -168,9 +176,9 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
       CheckpointOut w(f);
       w.text(deck_text(c));
       save_state(w, s);
-      for (double v : {r.momentum_initial, r.kinetic_initial, r.mass_particles, r.momentum_scale, r.max_kinetic,
-                       eq712.squared_difference, eq712.squared_reference, wall_now})
-        w.number(v);
+      const double before = std::exchange(wall_before, wall_now);  // saved as the next process's
+      for (const double* v : carried()) w.number(*v);
+      wall_before = before;
       w.integer(static_cast<std::int64_t>(r.errors.size()));
       for (const auto& [name, e] : r.errors) {
         w.text(name);
@@ -203,9 +211,7 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
                                    "without --resume",
                                    path));
     load_state(in, s);
-    for (double* v : {&r.momentum_initial, &r.kinetic_initial, &r.mass_particles, &r.momentum_scale,
-                      &r.max_kinetic, &eq712.squared_difference, &eq712.squared_reference, &wall_before})
-      *v = in.number();
+    for (double* v : carried()) *v = in.number();
     for (std::int64_t k = in.integer(); k > 0; --k) {
       const std::string name = in.text();
       const auto e = in.numbers();
@@ -387,6 +393,12 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
   rec.set("status", !failure.empty() ? "stopped" : r.interrupted ? "interrupted" : "completed");
   if (r.interrupted) rec.set("checkpoint", checkpoint_path(o.out_dir));
   if (std::isfinite(r.stress_vs_direct_md)) rec.set("errors.stress_vs_direct_md", r.stress_vs_direct_md);
+  if (const auto u = units::unit_system(c.units)) {  // for readers of the tables (tools/plot)
+    rec.set("units.name", std::string(u->name));
+    rec.set("units.length_A", u->length_A);
+    rec.set("units.time_ps", u->time_ps);
+    rec.set("units.stress_GPa", u->stress_GPa);
+  }
   if (closure) {
     const auto& eq = closure->equilibrium();
     rec.set("md_atom_steps", r.md_atom_steps);
@@ -397,7 +409,6 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
     rec.set("md.energy_per_atom_eV", eq.energy_per_atom);
     rec.set("md.c11_GPa", eq.c11_gpa);
     rec.set("md.density", closure->density());
-    rec.set("md.units", std::string(c.material.md.units.name));
   }
   if (!failure.empty()) rec.set("error", failure);
   rec.set("steps", static_cast<std::int64_t>(r.steps));
