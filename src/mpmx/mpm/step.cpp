@@ -10,6 +10,32 @@
 
 namespace mpmx::mpm {
 
+namespace {
+
+// Stress work of the step (eq. 4.11, with the stress the forces used), then
+// dV/dt = V div v and the domain length where the scheme tracks it; the material's
+// stress, the viscosity, the clock.
+void finish(State<1>& s, double dt) {
+  auto& p = s.particles;
+  work_and_volumes(p, dt, s.small_strain, tracks_domain(s.shape->options().scheme), s.tallies);
+  s.material->update_stress(p, dt);
+  artificial_viscosity(*s.material, s.viscosity, p);
+  s.time += dt;
+  ++s.step;
+}
+
+}  // namespace
+
+void step_stencil(State<1>& s, double dt) {
+  auto& g = s.grid;
+  auto& p = s.particles;
+  (*s.shape)(g, p, s.stencil);                      // nearest nodes afresh, S_ip, G_ip
+  p2g(p, s.stencil, s.small_strain, g);             // m_i, v_i^n (eq. 3.16), f_i
+  solve_grid(g, s.boundary, s.time, dt, s.tallies); // v^L (eq. 3.12) with boundaries
+  s.finite_check = g2p(g, s.stencil, dt, s.move, s.midpoint_gradient, p);  // v_p, x_p, grad v
+  finish(s, dt);
+}
+
 void step(State<1>& s, double dt) {
   auto& g = s.grid;
   auto& p = s.particles;
@@ -19,7 +45,7 @@ void step(State<1>& s, double dt) {
     shape::p2g_linear(g, p, s.small_strain, s.linear_cells, g);
     solve_grid(g, s.boundary, s.time, dt, s.tallies);
     // A linear elastic solid without viscosity: g2p, work, volumes and stress in one
-    // pass, the same algorithm as the lines below.
+    // pass, the same algorithm as finish().
     if (s.viscosity <= 0.0 && typeid(*s.material) == typeid(material::LinearElastic<1>)) {
       const auto& mat = static_cast<const material::LinearElastic<1>&>(*s.material);
       s.finite_check = shape::g2p_linear_elastic(g, s.linear_cells, dt, s.move, s.midpoint_gradient,
@@ -37,18 +63,9 @@ void step(State<1>& s, double dt) {
     solve_grid(g, s.boundary, s.time, dt, s.tallies);
     s.finite_check = shape::g2p_ddmp(g, s.linear_cells, dt, s.move, s.midpoint_gradient, sub, p);
   } else {
-    (*s.shape)(g, p, s.stencil);                      // nearest nodes afresh, S_ip, G_ip
-    p2g(p, s.stencil, s.small_strain, g);             // m_i, v_i^n (eq. 3.16), f_i
-    solve_grid(g, s.boundary, s.time, dt, s.tallies); // v^L (eq. 3.12) with boundaries
-    s.finite_check = g2p(g, s.stencil, dt, s.move, s.midpoint_gradient, p);  // v_p, x_p, grad v
+    return step_stencil(s, dt);
   }
-  // Stress work of the step (eq. 4.11, with the stress the forces used), then
-  // dV/dt = V div v and the domain length where the scheme tracks it.
-  work_and_volumes(p, dt, s.small_strain, tracks_domain(scheme), s.tallies);
-  s.material->update_stress(p, dt);
-  artificial_viscosity(*s.material, s.viscosity, p);
-  s.time += dt;
-  ++s.step;
+  finish(s, dt);
 }
 
 }  // namespace mpmx::mpm
