@@ -76,71 +76,42 @@ inline void grow(std::vector<double>& v, std::size_t size) {
 // Zero cells padding the per-cell sums at each end (DDMP sub-points reach two cells over).
 constexpr std::size_t kPad = 2;
 
-// Pass 2: per-cell sums of NS per-particle fields val[f * n + q] (m, m f, m v, m v f,
-// then the force fields) into S[f * stride + cell + kPad] (zeroed here; pads stay zero).
-// In cell order, a running sum restarted at each new cell and stored after every
-// particle leaves each cell's total in place without a branch; two chains over halves
-// that start at a new cell (so they never share a cell) hide the latency of the sums.
-// Each cell's sum is taken in particle order either way. Otherwise plain accumulation.
-template <int NS>
-struct Chain {
-  double a[NS];
-  int prev;
-};
-
-template <int NS>
-[[gnu::always_inline]] inline void chain_add(Chain<NS>& ch, std::size_t q, const int* __restrict cell,
-                                             const double* __restrict val, std::size_t n,
-                                             double* __restrict S, std::size_t stride) {
-  const int c = cell[q];
-  const double keep = c == ch.prev ? 1.0 : 0.0;
-  double* s = S + c + kPad;
-#pragma GCC unroll 8
-  for (int f = 0; f < NS; ++f) {
-    ch.a[f] = ch.a[f] * keep + val[f * n + q];
-    s[f * stride] = ch.a[f];
-  }
-  ch.prev = c;
-}
-
-template <int NS>
-[[gnu::noinline]] void cell_sums(const LinearCells& lc, std::size_t n, bool ordered,
-                                 std::size_t stride, double* __restrict S) {
+// Pass 2: per-cell sums of NS per-particle fields (m, m f, m v, m v f, then the force
+// fields), fields(q, out) computing particle q's, into S[f * stride + cell + kPad]
+// (zeroed here; pads stay zero). Each cell's sum is taken in particle order.
+template <int NS, class Fields>
+[[gnu::always_inline]] inline void cell_sums(const int* __restrict cell, std::size_t n, bool ordered,
+                                             std::size_t stride, double* __restrict S, Fields fields) {
   std::fill(S, S + NS * stride, 0.0);
-  const int* __restrict cell = lc.cell.data();
-  const double* __restrict val = lc.val.data();
-  if (!ordered) {
-    for (std::size_t q = 0; q < n; ++q) {
-      const std::size_t c = static_cast<std::size_t>(cell[q]) + kPad;
-      for (int f = 0; f < NS; ++f) S[f * stride + c] += val[f * n + q];
+  // Run by run (consecutive particles of one cell): the sums of different runs are
+  // independent, so the core overlaps them, and each run touches memory once. In cell
+  // order, which 1-D particles keep unless they cross, a run is the whole cell and is
+  // stored; otherwise runs are added.
+  double a[NS], b[NS];
+  std::size_t q = 0;
+  while (q < n) {
+    const int c = cell[q];
+    fields(q, a);
+    for (++q; q < n && cell[q] == c; ++q) {
+      fields(q, b);
+#pragma GCC unroll 16
+      for (int f = 0; f < NS; ++f) a[f] += b[f];
     }
-    return;
+    double* s = S + c + kPad;
+    if (ordered) {
+#pragma GCC unroll 16
+      for (int f = 0; f < NS; ++f) s[f * stride] = a[f];
+    } else {
+#pragma GCC unroll 16
+      for (int f = 0; f < NS; ++f) s[f * stride] += a[f];
+    }
   }
-  // Two chains: the stores (NS per particle) bound the loop beyond that.
-  std::size_t mid = n / 2;
-  while (mid > 0 && mid < n && cell[mid] == cell[mid - 1]) ++mid;
-  Chain<NS> c0{{}, -1}, c1{{}, -1};
-  const std::size_t len = std::min(mid, n - mid);
-  for (std::size_t j = 0; j < len; ++j) {
-    chain_add(c0, j, cell, val, n, S, stride);
-    chain_add(c1, mid + j, cell, val, n, S, stride);
-  }
-  for (std::size_t q = len; q < mid; ++q) chain_add(c0, q, cell, val, n, S, stride);
-  for (std::size_t q = mid + len; q < n; ++q) chain_add(c1, q, cell, val, n, S, stride);
 }
 
-// The mass and momentum fields of pass 2 (vectorises): m, m f, m v, m v f.
-[[gnu::noinline]] void mass_fields(std::size_t n, const double* __restrict m,
-                                   const double* __restrict v, const double* __restrict frac,
-                                   double* __restrict val) {
-#pragma omp simd
-  for (std::size_t q = 0; q < n; ++q) {
-    const double mv = m[q] * v[q];
-    val[q] = m[q];
-    val[n + q] = m[q] * frac[q];
-    val[2 * n + q] = mv;
-    val[3 * n + q] = mv * frac[q];
-  }
+// The mass and momentum fields of every point: m, m f, m v, m v f.
+[[gnu::always_inline]] inline void mass_fields(double m, double v, double f, double* out) {
+  const double mv = m * v;
+  out[0] = m, out[1] = m * f, out[2] = mv, out[3] = mv * f;
 }
 
 // Pass 3, mass and momentum: node i takes (sum m - sum m f) of cell i and sum m f of
@@ -295,13 +266,14 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume, Li
   const double* __restrict qv = p.viscous_pressure.data();
   const double* __restrict grad = lc.grad.data();
   const std::size_t n = p.size();
-  grow(lc.val, 5 * n);
-  double* __restrict val = lc.val.data();
-  mass_fields(n, p.mass.data(), p.v[0].data(), lc.frac.data(), val);
-#pragma omp simd
-  for (std::size_t q = 0; q < n; ++q) val[4 * n + q] = vol[q] * (sig[q] - qv[q]) * grad[q];
+  const double* __restrict m = p.mass.data();
+  const double* __restrict v = p.v[0].data();
+  const double* __restrict frac = lc.frac.data();
   double* S = lc.sums.data();
-  cell_sums<5>(lc, n, ordered, stride, S);
+  cell_sums<5>(lc.cell.data(), n, ordered, stride, S, [&](std::size_t q, double* out) {
+    mass_fields(m[q], v[q], frac[q], out);
+    out[4] = vol[q] * (sig[q] - qv[q]) * grad[q];
+  });
   node_mass_momentum(S, stride, cells, g);
   // The force is +V sigma/dx from cell i and -V sigma/dx from cell i-1 (G = -1/dx, +1/dx).
   const double* __restrict S4 = S + 4 * stride + kPad;
@@ -483,21 +455,23 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   const double* __restrict vol = reference_volume ? p.volume0.data() : p.volume.data();
   const double* __restrict sig = p.stress[0].data();
   const double* __restrict qv = p.viscous_pressure.data();
-  grow(lc.val, ns * n);
-  double* __restrict val = lc.val.data();
   const double* __restrict W = lc.W.data();
-  mass_fields(n, p.mass.data(), p.v[0].data(), lc.frac.data(), val);
-  for (int k = 0; k < nw; ++k) {
-    double* __restrict vk = val + (4 + k) * n;
-    const double* __restrict wk = W + k * n;
-#pragma omp simd
-    for (std::size_t q = 0; q < n; ++q) vk[q] = vol[q] * (sig[q] - qv[q]) * wk[q];
-  }
+  const double* __restrict m = p.mass.data();
+  const double* __restrict v = p.v[0].data();
+  const double* __restrict frac = lc.frac.data();
   double* S = lc.sums.data();
+  auto fields = [&]<int NW>(std::size_t q, double* out) {
+    mass_fields(m[q], v[q], frac[q], out);
+    const double vs = vol[q] * (sig[q] - qv[q]);
+#pragma GCC unroll 8
+    for (int k = 0; k < NW; ++k) out[4 + k] = vs * W[k * n + q];
+  };
   if (sub)
-    cell_sums<11>(lc, n, ordered, stride, S);
+    cell_sums<11>(cell, n, ordered, stride, S,
+                  [&](std::size_t q, double* out) { fields.template operator()<7>(q, out); });
   else
-    cell_sums<7>(lc, n, ordered, stride, S);
+    cell_sums<7>(cell, n, ordered, stride, S,
+                 [&](std::size_t q, double* out) { fields.template operator()<3>(q, out); });
   node_mass_momentum(S, stride, cells, g);
   // f_i = -sum_p V sigma Gbar_ip: the alpha part gives +-V sigma alpha/dx at the two
   // nodes of the point's cell; the rest is -sum_j D_ji Q_j with Q_j the hat-weighted
