@@ -49,7 +49,7 @@ void step(State<1>& s, double dt) {
     if (s.viscosity <= 0.0 && typeid(*s.material) == typeid(material::LinearElastic<1>)) {
       const auto& mat = static_cast<const material::LinearElastic<1>&>(*s.material);
       s.finite_check = shape::g2p_linear_elastic(g, s.linear_cells, dt, s.move, s.midpoint_gradient,
-                                                 s.small_strain, mat.youngs_modulus(), p,
+                                                 s.small_strain, true, mat.youngs_modulus(), p,
                                                  s.tallies.stress_work);
       s.time += dt;
       ++s.step;

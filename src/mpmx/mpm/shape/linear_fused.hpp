@@ -44,9 +44,11 @@ double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool 
 // g2p_linear followed by what step() does next for a 1-D linear elastic solid without
 // artificial viscosity, in the same pass: stress work with the stress of the forces
 // (eq. 4.11, over V0 for small strain), V *= 1 + dt L, eps += dt L, sigma = E eps.
-// Adds dt * work to `stress_work`.
+// Adds dt * work to `stress_work`. `no_viscous_pressure`: every q_p is zero (no
+// artificial viscosity), so the kernel need not read them.
 double g2p_linear_elastic(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
-                          bool small_strain, double E, Particles<1>& p, double& stress_work);
+                          bool small_strain, bool no_viscous_pressure, double E, Particles<1>& p,
+                          double& stress_work);
 
 // DDMP (subpoints == 0) and DDMP with sub-points (eqs. 4.5-4.6, 6.1-6.3): the hat for S
 // at the particle, the modified gradient of eq. 3.31 at the particle or averaged over
