@@ -44,9 +44,9 @@ void Output::record(const State<1>& s, const NodalFields& nf, const Reference* r
     if (!ref) return;
     for (const auto& f : ref->fields()) {
       if (with_ref)
-        fmt::format_to(std::back_inserter(buf_), ",{:.10g}", ref->value(f, x, t));
+        fmt::format_to(fmt::appender(buf_), ",{:.10g}", ref->value(f, x, t));
       else
-        buf_ += ",";
+        buf_.push_back(',');
     }
   };
   auto ref_header = [&](std::string h) {
@@ -61,13 +61,13 @@ void Output::record(const State<1>& s, const NodalFields& nf, const Reference* r
     buf_.clear();
     for (int i = 0; i <= g.cells[0]; ++i) {
       const std::size_t k = g.index1(i);
-      fmt::format_to(std::back_inserter(buf_), "{:.10g},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}",
+      fmt::format_to(fmt::appender(buf_), "{:.10g},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}",
                      t, i, nf.x[i], nf.mass[i], nf.density[i], nf.velocity[i], nf.strain[i],
                      nf.stress[i], -nf.stress[i], g.force[0][k]);
       ref_columns(nf.x[i]);
-      buf_ += '\n';
+      buf_.push_back('\n');
     }
-    std::fputs(buf_.c_str(), nodes_);
+    std::fwrite(buf_.data(), 1, buf_.size(), nodes_);
     std::fflush(nodes_);
   }
   if (want_particles_) {
@@ -76,13 +76,13 @@ void Output::record(const State<1>& s, const NodalFields& nf, const Reference* r
                         ref_header("time,particle,x,mass,volume,density,velocity,strain,stress,pressure").c_str());
     buf_.clear();
     for (std::size_t q = 0; q < p.size(); ++q) {
-      fmt::format_to(std::back_inserter(buf_), "{:.10g},{},{:.12g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}",
+      fmt::format_to(fmt::appender(buf_), "{:.10g},{},{:.12g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}",
                      t, q, p.x[0][q], p.mass[q], p.volume[q], p.density(q), p.v[0][q],
                      p.strain[0][q], p.stress[0][q], -p.stress[0][q]);
       ref_columns(p.x[0][q]);
-      buf_ += '\n';
+      buf_.push_back('\n');
     }
-    std::fputs(buf_.c_str(), particles_);
+    std::fwrite(buf_.data(), 1, buf_.size(), particles_);
     std::fflush(particles_);
   }
 }

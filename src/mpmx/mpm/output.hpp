@@ -8,6 +8,8 @@
 #include <functional>
 #include <map>
 #include <string>
+
+#include <fmt/format.h>
 #include <vector>
 
 #include "mpmx/mpm/nodal_fields.hpp"
@@ -45,7 +47,7 @@ class Output {
   std::FILE* front_ = nullptr;
   bool want_nodes_, want_particles_;
   Marks resume_;
-  std::string buf_;
+  fmt::memory_buffer buf_;  // one record's rows, written at once
 };
 
 }  // namespace mpmx::mpm
