@@ -42,7 +42,7 @@ void step(State<1>& s, double dt) {
   const SchemeOptions& opt = s.shape->options();
   const Scheme scheme = opt.scheme;
   if (scheme == Scheme::mpm) {                        // fused hat + transfers, same algorithm
-    shape::p2g_linear(g, p, s.small_strain, s.linear_cells, g);
+    shape::p2g_linear(g, p, s.small_strain, s.viscosity <= 0.0, s.linear_cells, g);
     solve_grid(g, s.boundary, s.time, dt, s.tallies);
     // A linear elastic solid without viscosity: g2p, work, volumes and stress in one
     // pass, the same algorithm as finish().

@@ -32,19 +32,23 @@ inline double alpha(double f) {
 }
 
 // Pass 1 kernel (vectorises): cell, fraction and gradient of every particle; returns
-// whether any lies more than a cell past the grid.
+// whether any lies more than a cell past the grid, and in `edge` whether any lies past
+// its ends at all (a zero gradient there).
 [[gnu::noinline]] int locate_kernel(std::size_t n, const double* __restrict x, double x0, double inv, double top,
-                  int* __restrict cell, double* __restrict frac, double* __restrict grad) {
-  int outside = 0;
-#pragma omp simd reduction(| : outside)
+                  int* __restrict cell, double* __restrict frac, double* __restrict grad, int& edge) {
+  int outside = 0, past = 0;
+#pragma omp simd reduction(| : outside, past)
   for (std::size_t q = 0; q < n; ++q) {
     const double xi = (x[q] - x0) * inv;
     outside |= !(xi >= -1.0) | !(xi <= top + 1.0);  // `|`, not `||`: no branch
+    const bool in = (xi >= 0.0) & (xi <= top);
+    past |= !in;
     const Cell cf = cell_of(xi, top);
     cell[q] = static_cast<int>(cf.c);
     frac[q] = cf.f;
-    grad[q] = ((xi >= 0.0) & (xi <= top)) ? inv : 0.0;
+    grad[q] = in ? inv : 0.0;
   }
+  edge = past;
   return outside;
 }
 
@@ -58,13 +62,15 @@ bool locate_all(const Grid<1>& g, const Particles<1>& p, LinearCells& lc) {
   lc.grad.resize(n);
   const double x0 = g.lower[0], inv = g.inv_dx[0];
   const double* x = p.x[0].data();
-  if (locate_kernel(n, x, x0, inv, cells, lc.cell.data(), lc.frac.data(), lc.grad.data()))
+  int edge = 0;
+  if (locate_kernel(n, x, x0, inv, cells, lc.cell.data(), lc.frac.data(), lc.grad.data(), edge))
     for (std::size_t q = 0; q < n; ++q) require_inside((x[q] - x0) * inv, cells, q, x[q]);
   const int* __restrict cell = lc.cell.data();
   int unordered = 0;
 #pragma omp simd reduction(| : unordered)
   for (std::size_t q = 1; q < n; ++q) unordered |= cell[q] < cell[q - 1];
   lc.ordered = !unordered;
+  lc.inside = !edge;
   return lc.ordered;
 }
 
@@ -255,8 +261,8 @@ int subpoint_weights(std::size_t n, const double* __restrict x, const double* __
 
 }  // namespace
 
-void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume, LinearCells& lc,
-                Grid<1>& g) {
+void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
+                bool no_viscous_pressure, LinearCells& lc, Grid<1>& g) {
   const int cells = g.cells[0];
   const bool ordered = locate_all(g, p, lc);
   const std::size_t stride = static_cast<std::size_t>(cells) + 2 * kPad;
@@ -270,16 +276,26 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume, Li
   const double* __restrict v = p.v[0].data();
   const double* __restrict frac = lc.frac.data();
   double* S = lc.sums.data();
-  cell_sums<5>(lc.cell.data(), n, ordered, stride, S, [&](std::size_t q, double* out) {
-    mass_fields(m[q], v[q], frac[q], out);
-    out[4] = vol[q] * (sig[q] - qv[q]) * grad[q];
-  });
+  // Every particle inside the grid and no viscosity (the common case): the gradient is
+  // 1/dx throughout, applied per node, and q is not read.
+  const bool plain = no_viscous_pressure && lc.inside;
+  if (plain)
+    cell_sums<5>(lc.cell.data(), n, ordered, stride, S, [&](std::size_t q, double* out) {
+      mass_fields(m[q], v[q], frac[q], out);
+      out[4] = vol[q] * sig[q];
+    });
+  else
+    cell_sums<5>(lc.cell.data(), n, ordered, stride, S, [&](std::size_t q, double* out) {
+      mass_fields(m[q], v[q], frac[q], out);
+      out[4] = vol[q] * (sig[q] - qv[q]) * grad[q];
+    });
   node_mass_momentum(S, stride, cells, g);
   // The force is +V sigma/dx from cell i and -V sigma/dx from cell i-1 (G = -1/dx, +1/dx).
   const double* __restrict S4 = S + 4 * stride + kPad;
   double* __restrict F = g.force[0].data() + Grid<1>::ghost;
+  const double scale = plain ? g.inv_dx[0] : 1.0;
 #pragma omp simd
-  for (int c = 0; c <= cells; ++c) F[c] = S4[c] - S4[c - 1];
+  for (int c = 0; c <= cells; ++c) F[c] = scale * (S4[c] - S4[c - 1]);
   g.force[0].front() = g.force[0].back() = 0.0;
 }
 
@@ -415,9 +431,9 @@ template <bool SmallStrain>
 // without viscosity (q = 0): eight particles whose cells lie within eight of the first
 // take their cells' table values by one load and a permute each, in registers. Other
 // blocks, and the last, go particle by particle through the same arithmetic.
-template <bool SmallStrain>
+template <bool SmallStrain, bool Inside>
 [[gnu::noinline]] double g2p_elastic_ordered(const LinearCells& lc, double dt, double dtm, double E,
-                                             Particles<1>& p, double& work) {
+                                             double inv, Particles<1>& p, double& work) {
   const std::size_t n = p.size();
   const double* __restrict T0 = lc.d0.data();
   const double* __restrict T1 = lc.dd.data();
@@ -434,7 +450,7 @@ template <bool SmallStrain>
   double* __restrict eps = p.strain[0].data();
   double* __restrict sig = p.stress[0].data();
   const __m512d vdt = _mm512_set1_pd(dt), vdtm = _mm512_set1_pd(dtm), vE = _mm512_set1_pd(E);
-  const __m512d one = _mm512_set1_pd(1.0);
+  const __m512d one = _mm512_set1_pd(1.0), vinv = _mm512_set1_pd(inv);
   __m512d check = _mm512_setzero_pd(), w = _mm512_setzero_pd();
   double check1 = 0.0, w1 = 0.0;
   auto one_particle = [&](std::size_t q) {
@@ -469,7 +485,7 @@ template <bool SmallStrain>
     const __m512d f = _mm512_loadu_pd(frac + q);
     const __m512d vq = _mm512_add_pd(_mm512_loadu_pd(v + q), _mm512_fmadd_pd(f, dd, d0));
     const __m512d xq = _mm512_fmadd_pd(vdtm, _mm512_fmadd_pd(f, dg, g0), _mm512_loadu_pd(x + q));
-    const __m512d Lq = _mm512_mul_pd(dg, _mm512_loadu_pd(grad + q));
+    const __m512d Lq = _mm512_mul_pd(dg, Inside ? vinv : _mm512_loadu_pd(grad + q));
     _mm512_storeu_pd(v + q, vq);
     _mm512_storeu_pd(x + q, xq);
     _mm512_storeu_pd(L + q, Lq);
@@ -495,15 +511,19 @@ template <bool SmallStrain>
 }  // namespace
 
 double g2p_linear_elastic(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
-                          bool small_strain, bool no_viscous_pressure, double E, Particles<1>& p,
-                          double& stress_work) {
+                          bool small_strain, [[maybe_unused]] bool no_viscous_pressure, double E,
+                          Particles<1>& p, double& stress_work) {
   cell_tables(g, lc, midpoint);
   const double dtm = move ? dt : 0.0;
   double w = 0.0;
 #if defined(__AVX512F__)
   if (lc.ordered && no_viscous_pressure) {
-    const double check = small_strain ? g2p_elastic_ordered<true>(lc, dt, dtm, E, p, w)
-                                      : g2p_elastic_ordered<false>(lc, dt, dtm, E, p, w);
+    const double inv = g.inv_dx[0];
+    const double check =
+        small_strain ? (lc.inside ? g2p_elastic_ordered<true, true>(lc, dt, dtm, E, inv, p, w)
+                                  : g2p_elastic_ordered<true, false>(lc, dt, dtm, E, inv, p, w))
+                     : (lc.inside ? g2p_elastic_ordered<false, true>(lc, dt, dtm, E, inv, p, w)
+                                  : g2p_elastic_ordered<false, false>(lc, dt, dtm, E, inv, p, w));
     stress_work += dt * w;
     return check;
   }

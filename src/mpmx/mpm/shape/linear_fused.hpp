@@ -25,6 +25,7 @@ struct LinearCells {
   std::vector<double> d0, dd, g0, dg;
   std::vector<double> pc;  // those four at each particle ([table][particle])
   bool ordered = false;    // particles in cell order at the last p2g
+  bool inside = false;     // and all between the grid's ends (grad = 1/dx for all)
   // DDMP (eq. 3.31): per particle the weights of its gradient (W[k * n + q]): at the
   // particle alpha, (1-alpha)(1-f), (1-alpha) f; with sub-points their averages sorted
   // by the sub-point's cell (see subpoint_weights), so that
@@ -36,8 +37,9 @@ struct LinearCells {
   std::vector<double> vg, Dv;      // scratch: per-cell alpha sums / padded dg; Q / D v
 };
 
-void p2g_linear(const Grid<1>& g, const Particles<1>& p, bool reference_volume, LinearCells& lc,
-                Grid<1>& out);
+// `no_viscous_pressure`: every q_p is zero (no artificial viscosity).
+void p2g_linear(const Grid<1>& g, const Particles<1>& p, bool reference_volume,
+                bool no_viscous_pressure, LinearCells& lc, Grid<1>& out);
 double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
                   Particles<1>& p);
 
