@@ -163,11 +163,27 @@ inline double sub_h(double len, double inv, int n_sub) {
 }
 inline double sub_step(double h, int n_sub) { return n_sub > 1 ? 2.0 * h / (n_sub - 1) : 0.0; }
 
-// out = sqrt(in) elementwise. std::sqrt keeps errno's slow path in a loop and stops it
-// vectorising; the SIMD square root is the same correctly rounded IEEE operation.
+// out = sqrt(in) elementwise, in >= 0. The square root is most of the cost of the DDMP
+// weights (alpha, eq. 3.27), and the divider takes many cycles per vector. With AVX-512:
+// the 14-bit reciprocal square root and two Newton steps (14 -> 28 -> 56 bits), then
+// sqrt = in / sqrt(in): within an ulp or two of the correctly rounded root. Otherwise
+// the SIMD square root (std::sqrt keeps errno's slow path in a loop and stops it
+// vectorising; the SIMD one is the same correctly rounded IEEE operation).
 void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out) {
   std::size_t q = 0;
-#if defined(__AVX__)
+#if defined(__AVX512F__)
+  const __m512d half = _mm512_set1_pd(0.5), three_halves = _mm512_set1_pd(1.5);
+  const __m512d zero = _mm512_setzero_pd();
+  for (; q + 8 <= n; q += 8) {
+    const __m512d r = _mm512_loadu_pd(in + q);
+    const __mmask8 pos = _mm512_cmp_pd_mask(r, zero, _CMP_GT_OQ);
+    const __m512d hr = _mm512_mul_pd(half, r);
+    __m512d y = _mm512_maskz_rsqrt14_pd(pos, r);
+    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
+    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
+    _mm512_storeu_pd(out + q, _mm512_maskz_mul_pd(pos, r, y));
+  }
+#elif defined(__AVX__)
   for (; q + 4 <= n; q += 4) _mm256_storeu_pd(out + q, _mm256_sqrt_pd(_mm256_loadu_pd(in + q)));
 #elif defined(__SSE2__)
   for (; q + 2 <= n; q += 2) _mm_storeu_pd(out + q, _mm_sqrt_pd(_mm_loadu_pd(in + q)));
@@ -191,71 +207,162 @@ void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out
   }
 }
 
-// Sub-point s (at start + s step, in cell units) of every particle added to the
-// weights W (see subpoint_weights); far[q] set where it lies more than a cell from
-// the particle's cell cq. The first sub-point (First) starts the sums: no zero fill.
-// `tmp`: 4 n scratch.
-template <bool First>
-[[gnu::noinline]] void subpoint_add(std::size_t n, const double* __restrict start, const double* __restrict step,
-                  const double* __restrict cq, double s, double top, double* __restrict W,
-                  int* __restrict far, double* __restrict tmp) {
-  double* __restrict fr = tmp;
-  double* __restrict r = tmp + n;
-  double* __restrict sq = tmp + 2 * n;
-  double* __restrict d = tmp + 3 * n;
-#pragma omp simd
-  for (std::size_t q = 0; q < n; ++q) {
-    const Cell cf = cell_of(start[q] + s * step[q], top);
-    fr[q] = cf.f;
-    r[q] = 4.0 * cf.f * (1.0 - cf.f);
-    d[q] = cf.c - cq[q];
-  }
-  sqrt_all(n, r, sq);
-#pragma omp simd
-  for (std::size_t q = 0; q < n; ++q) {
-    const double f = fr[q], al = 0.5 * r[q] * sq[q], be = 1.0 - al;
-    const double b0 = be * (1.0 - f), b1 = be * f;
-    const bool m = d[q] == -1.0, z = d[q] == 0.0, p = d[q] == 1.0;
-    const double w0[7] = {m ? al : 0.0, z ? al : 0.0, p ? al : 0.0, m ? b0 : 0.0,
-                          (m ? b1 : 0.0) + (z ? b0 : 0.0), (z ? b1 : 0.0) + (p ? b0 : 0.0),
-                          p ? b1 : 0.0};
-    if constexpr (First) {
-      far[q] = !(m | z | p);
-      for (int k = 0; k < 7; ++k) W[k * n + q] = 0.0 + w0[k];  // as summing from zero
-    } else {
-      far[q] |= !(m | z | p);
-      for (int k = 0; k < 7; ++k) W[k * n + q] += w0[k];
-    }
-  }
-}
-
 // Sub-point weights of every particle, sorted by the sub-point's cell relative to the
 // particle's cell c: W[0..2] = <alpha> in cells c-1, c, c+1; W[3..6] = <(1-alpha) S_j>
 // at nodes j = c-1 .. c+2 (S_j the hat of the sub-point's cell); the average is over
-// the n_sub points (equal volumes, eq. 6.2). Returns whether any particle has a
-// sub-point further away (far[q]; those are handled apart). `tmp`: 7 n scratch.
-int subpoint_weights(std::size_t n, const double* __restrict x, const double* __restrict len,
-                     const int* __restrict cell, double x0, double inv, double top, int ns,
-                     double* __restrict W, int* __restrict far, double* __restrict tmp) {
-  double* __restrict start = tmp;
-  double* __restrict step = tmp + n;
-  double* __restrict cq = tmp + 2 * n;
-#pragma omp simd
-  for (std::size_t q = 0; q < n; ++q) {
-    const double xi = (x[q] - x0) * inv;
-    const double h = sub_h(len[q], inv, ns);
-    start[q] = xi - h;
-    step[q] = sub_step(h, ns);
-    cq[q] = cell[q];
-  }
-  subpoint_add<true>(n, start, step, cq, 0, top, W, far, tmp + 3 * n);
-  for (int s = 1; s < ns; ++s) subpoint_add<false>(n, start, step, cq, s, top, W, far, tmp + 3 * n);
+// the n_sub points (equal volumes, eq. 6.2), placed as evaluate_ddmp_subpoints places
+// them, and summed in their order. Returns whether any particle has a sub-point more
+// than a cell away (far[q]; those are handled apart).
+//
+// Most particles keep all their sub-points in their own cell; for those the fraction
+// is xi - c, no cell search or sorting, and only W[1], W[4], W[5] are non-zero. They go
+// chunk by chunk, particles side by side; the others (listed in `mixed`) go one by one.
+[[gnu::noinline]] int subpoint_weights(std::size_t n, const double* __restrict x,
+                                       const double* __restrict len, const int* __restrict cell,
+                                       double x0, double inv, double top, int ns,
+                                       double* __restrict W, int* __restrict far,
+                                       std::vector<int>& mixed) {
+  constexpr int B = 64;  // a chunk's sums and scratch stay in L1
   const double w = 1.0 / ns;
+  mixed.clear();
+  std::size_t done = 0;
+#if defined(__AVX512F__)
+  // Eight particles at a time, every sub-point in registers (the same arithmetic as the
+  // loops below, without contraction, and the square root of sqrt_all).
+  const __m512d vx0 = _mm512_set1_pd(x0), vinv = _mm512_set1_pd(inv), vw = _mm512_set1_pd(w);
+  const __m512d hfac = _mm512_set1_pd(0.5), keep = _mm512_set1_pd(1.0 - 1.0 / ns);
+  const __m512d one = _mm512_set1_pd(1.0), four = _mm512_set1_pd(4.0), zero = _mm512_setzero_pd();
+  const __m512d three_halves = _mm512_set1_pd(1.5), vtop1 = _mm512_set1_pd(top - 1.0);
+  const __m512d span = _mm512_set1_pd(ns - 1), two = _mm512_set1_pd(2.0);
+  for (; done + 8 <= n; done += 8) {
+    const std::size_t q = done;
+    const __m512d xi = _mm512_mul_pd(_mm512_sub_pd(_mm512_loadu_pd(x + q), vx0), vinv);
+    // sub_h, sub_step
+    const __m512d h = _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(hfac, _mm512_loadu_pd(len + q)), vinv), keep);
+    const __m512d step = ns > 1 ? _mm512_div_pd(_mm512_mul_pd(two, h), span) : zero;
+    const __m512d c = _mm512_cvtepi32_pd(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(cell + q)));
+    const __m512d lo = _mm512_sub_pd(xi, h);
+    const __m512d hi = _mm512_add_pd(lo, _mm512_mul_pd(span, step));
+    const __mmask8 own = _mm512_cmp_pd_mask(lo, c, _CMP_GE_OQ) &
+                         _mm512_cmp_pd_mask(hi, _mm512_add_pd(c, one), _CMP_LT_OQ) &
+                         _mm512_cmp_pd_mask(c, vtop1, _CMP_LE_OQ);
+    __m512d a1 = zero, a4 = zero, a5 = zero;
+    for (int sp = 0; sp < ns; ++sp) {
+      const __m512d f = _mm512_sub_pd(_mm512_add_pd(lo, _mm512_mul_pd(_mm512_set1_pd(sp), step)), c);
+      const __m512d omf = _mm512_sub_pd(one, f);
+      const __m512d r = _mm512_mul_pd(_mm512_mul_pd(four, f), omf);
+      const __mmask8 pos = _mm512_cmp_pd_mask(r, zero, _CMP_GT_OQ);
+      const __m512d hr = _mm512_mul_pd(hfac, r);
+      __m512d y = _mm512_maskz_rsqrt14_pd(pos, r);
+      y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
+      y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
+      const __m512d sq = _mm512_maskz_mul_pd(pos, r, y);
+      const __m512d al = _mm512_mul_pd(_mm512_mul_pd(hfac, r), sq), be = _mm512_sub_pd(one, al);
+      a1 = _mm512_add_pd(a1, al);
+      a4 = _mm512_add_pd(a4, _mm512_mul_pd(be, omf));
+      a5 = _mm512_add_pd(a5, _mm512_mul_pd(be, f));
+    }
+    _mm512_storeu_pd(W + q, zero);
+    _mm512_storeu_pd(W + 2 * n + q, zero);
+    _mm512_storeu_pd(W + 3 * n + q, zero);
+    _mm512_storeu_pd(W + 6 * n + q, zero);
+    _mm512_storeu_pd(W + n + q, _mm512_mul_pd(a1, vw));
+    _mm512_storeu_pd(W + 4 * n + q, _mm512_mul_pd(a4, vw));
+    _mm512_storeu_pd(W + 5 * n + q, _mm512_mul_pd(a5, vw));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(far + q), _mm256_setzero_si256());
+    for (unsigned m = static_cast<unsigned char>(~own); m; m &= m - 1)
+      mixed.push_back(static_cast<int>(q + __builtin_ctz(m)));
+  }
+#endif
+  for (std::size_t q0 = done; q0 < n; q0 += B) {
+    const int nb = static_cast<int>(std::min<std::size_t>(B, n - q0));
+    alignas(64) double df[B], fr[B], r[B], sq[B], a1[B], a4[B], a5[B];
+    alignas(64) int own[B];
 #pragma omp simd
-  for (std::size_t k = 0; k < 7 * n; ++k) W[k] *= w;
+    for (int j = 0; j < nb; ++j) {
+      const std::size_t q = q0 + j;
+      const double xi = (x[q] - x0) * inv;
+      const double h = sub_h(len[q], inv, ns), step = sub_step(h, ns);
+      const double c = cell[q], lo = xi - h, hi = lo + (ns - 1) * step;
+      own[j] = (lo >= c) & (hi < c + 1.0) & (c <= top - 1.0);
+      df[j] = step;
+      a1[j] = a4[j] = a5[j] = 0.0;
+    }
+    for (int sp = 0; sp < ns; ++sp) {
+      // As cell_of: inside its own cell a sub-point's fraction is (start + s step) - c.
+#pragma omp simd
+      for (int j = 0; j < nb; ++j) {
+        const std::size_t q = q0 + j;
+        const double xi = (x[q] - x0) * inv;
+        const double h = sub_h(len[q], inv, ns);
+        const double f = (xi - h + sp * df[j]) - static_cast<double>(cell[q]);
+        fr[j] = f;
+        r[j] = 4.0 * f * (1.0 - f);
+      }
+      sqrt_all(nb, r, sq);
+#pragma omp simd
+      for (int j = 0; j < nb; ++j) {
+        const double f = fr[j], al = 0.5 * r[j] * sq[j], be = 1.0 - al;
+        a1[j] += al;
+        a4[j] += be * (1.0 - f);
+        a5[j] += be * f;
+      }
+    }
+    for (int j = 0; j < nb; ++j) {
+      const std::size_t q = q0 + j;
+      W[q] = W[2 * n + q] = W[3 * n + q] = W[6 * n + q] = 0.0;
+      W[n + q] = a1[j] * w, W[4 * n + q] = a4[j] * w, W[5 * n + q] = a5[j] * w;
+      far[q] = 0;
+      if (!own[j]) mixed.push_back(static_cast<int>(q));
+    }
+  }
+  // Particles whose sub-points reach into other cells: sorted by cell relative to the
+  // particle's, as the sums above, chunk by chunk over the list.
   int any = 0;
-#pragma omp simd reduction(| : any)
-  for (std::size_t q = 0; q < n; ++q) any |= far[q];
+  for (std::size_t k0 = 0; k0 < mixed.size(); k0 += B) {
+    const int nb = static_cast<int>(std::min<std::size_t>(B, mixed.size() - k0));
+    const int* __restrict ids = mixed.data() + k0;
+    alignas(64) double start[B], step[B], cq[B], fr[B], r[B], sq[B], d[B], acc[7][B];
+    alignas(64) int out[B];
+    for (int j = 0; j < nb; ++j) {
+      const std::size_t q = static_cast<std::size_t>(ids[j]);
+      const double xi = (x[q] - x0) * inv;
+      const double h = sub_h(len[q], inv, ns);
+      start[j] = xi - h, step[j] = sub_step(h, ns), cq[j] = cell[q];
+      out[j] = 0;
+      for (int k = 0; k < 7; ++k) acc[k][j] = 0.0;
+    }
+    for (int sp = 0; sp < ns; ++sp) {
+#pragma omp simd
+      for (int j = 0; j < nb; ++j) {
+        const Cell cf = cell_of(start[j] + sp * step[j], top);
+        fr[j] = cf.f;
+        r[j] = 4.0 * cf.f * (1.0 - cf.f);
+        d[j] = cf.c - cq[j];
+      }
+      sqrt_all(nb, r, sq);
+#pragma omp simd
+      for (int j = 0; j < nb; ++j) {
+        const double f = fr[j], al = 0.5 * r[j] * sq[j], be = 1.0 - al;
+        const double b0 = be * (1.0 - f), b1 = be * f;
+        const bool m = d[j] == -1.0, z = d[j] == 0.0, p = d[j] == 1.0;
+        out[j] |= !(m | z | p);
+        acc[0][j] += m ? al : 0.0;
+        acc[1][j] += z ? al : 0.0;
+        acc[2][j] += p ? al : 0.0;
+        acc[3][j] += m ? b0 : 0.0;
+        acc[4][j] += (m ? b1 : 0.0) + (z ? b0 : 0.0);
+        acc[5][j] += (z ? b1 : 0.0) + (p ? b0 : 0.0);
+        acc[6][j] += p ? b1 : 0.0;
+      }
+    }
+    for (int j = 0; j < nb; ++j) {
+      const std::size_t q = static_cast<std::size_t>(ids[j]);
+      for (int k = 0; k < 7; ++k) W[k * n + q] = acc[k][j] * w;
+      far[q] = out[j];
+      any |= out[j];
+    }
+  }
   return any;
 }
 
@@ -553,9 +660,8 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
     ddmp_weights(n, lc.frac.data(), lc.W.data(), lc.val.data());
   } else {
     lc.far.resize(n);
-    grow(lc.val, 7 * n);
     if (subpoint_weights(n, x, p.length[0].data(), cell, x0, inv, top, subpoints, lc.W.data(),
-                         lc.far.data(), lc.val.data()))
+                         lc.far.data(), lc.mixed))
       for (std::size_t q = 0; q < n; ++q)
         if (lc.far[q]) lc.stray.push_back(static_cast<int>(q));
   }

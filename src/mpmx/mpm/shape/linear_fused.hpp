@@ -32,6 +32,7 @@ struct LinearCells {
   // Gbar_i = sum alpha dS_i/dx + sum_j D_ji Q_j.
   std::vector<double> W;
   std::vector<int> far;    // sub-points more than a cell from the particle's cell
+  std::vector<int> mixed;  // particles with sub-points outside their own cell
   std::vector<int> stray;  // those particles
   std::vector<double> dm, dc, dp;  // D_{j,j-1}, D_{j,j}, D_{j,j+1} by node storage index
   std::vector<double> vg, Dv;      // scratch: per-cell alpha sums / padded dg; Q / D v
