@@ -207,21 +207,23 @@ void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out
   }
 }
 
-// Sub-point weights of every particle, sorted by the sub-point's cell relative to the
-// particle's cell c: W[0..2] = <alpha> in cells c-1, c, c+1; W[3..6] = <(1-alpha) S_j>
-// at nodes j = c-1 .. c+2 (S_j the hat of the sub-point's cell); the average is over
-// the n_sub points (equal volumes, eq. 6.2), placed as evaluate_ddmp_subpoints places
-// them, and summed in their order. Returns whether any particle has a sub-point more
-// than a cell away (far[q]; those are handled apart).
+// Sub-point weights of every particle (eqs. 3.31, 6.1-6.3), averaged over the n_sub
+// points (equal volumes, eq. 6.2) placed as evaluate_ddmp_subpoints places them, summed
+// in their order, and sorted by the sub-point's cell relative to the particle's cell c.
+// In plain DDMP's layout, W[0..2] = <alpha> in cell c and <(1-alpha) S_j> at nodes c and
+// c+1 (S_j the hat of the sub-point's cell). Particles with sub-points in cells c-1 or
+// c+1 are listed in `mixed`, with Wx[4 k ..] = <alpha> in cells c-1, c+1 and
+// <(1-alpha) S_j> at nodes c-1, c+2 for the k-th. Returns whether any particle has a
+// sub-point further away (far[q]; those are handled apart).
 //
-// Most particles keep all their sub-points in their own cell; for those the fraction
-// is xi - c, no cell search or sorting, and only W[1], W[4], W[5] are non-zero. They go
-// chunk by chunk, particles side by side; the others (listed in `mixed`) go one by one.
+// Most particles keep all their sub-points in their own cell: their fraction is xi - c,
+// with no cell search or sorting. Those go eight at a time in registers (AVX-512) or
+// chunk by chunk; the mixed ones chunk by chunk over their list.
 [[gnu::noinline]] int subpoint_weights(std::size_t n, const double* __restrict x,
                                        const double* __restrict len, const int* __restrict cell,
                                        double x0, double inv, double top, int ns,
                                        double* __restrict W, int* __restrict far,
-                                       std::vector<int>& mixed) {
+                                       std::vector<int>& mixed, std::vector<double>& Wx) {
   constexpr int B = 64;  // a chunk's sums and scratch stay in L1
   const double w = 1.0 / ns;
   mixed.clear();
@@ -262,13 +264,9 @@ void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out
       a4 = _mm512_add_pd(a4, _mm512_mul_pd(be, omf));
       a5 = _mm512_add_pd(a5, _mm512_mul_pd(be, f));
     }
-    _mm512_storeu_pd(W + q, zero);
-    _mm512_storeu_pd(W + 2 * n + q, zero);
-    _mm512_storeu_pd(W + 3 * n + q, zero);
-    _mm512_storeu_pd(W + 6 * n + q, zero);
-    _mm512_storeu_pd(W + n + q, _mm512_mul_pd(a1, vw));
-    _mm512_storeu_pd(W + 4 * n + q, _mm512_mul_pd(a4, vw));
-    _mm512_storeu_pd(W + 5 * n + q, _mm512_mul_pd(a5, vw));
+    _mm512_storeu_pd(W + q, _mm512_mul_pd(a1, vw));
+    _mm512_storeu_pd(W + n + q, _mm512_mul_pd(a4, vw));
+    _mm512_storeu_pd(W + 2 * n + q, _mm512_mul_pd(a5, vw));
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(far + q), _mm256_setzero_si256());
     for (unsigned m = static_cast<unsigned char>(~own); m; m &= m - 1)
       mixed.push_back(static_cast<int>(q + __builtin_ctz(m)));
@@ -310,14 +308,14 @@ void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out
     }
     for (int j = 0; j < nb; ++j) {
       const std::size_t q = q0 + j;
-      W[q] = W[2 * n + q] = W[3 * n + q] = W[6 * n + q] = 0.0;
-      W[n + q] = a1[j] * w, W[4 * n + q] = a4[j] * w, W[5 * n + q] = a5[j] * w;
+      W[q] = a1[j] * w, W[n + q] = a4[j] * w, W[2 * n + q] = a5[j] * w;
       far[q] = 0;
       if (!own[j]) mixed.push_back(static_cast<int>(q));
     }
   }
   // Particles whose sub-points reach into other cells: sorted by cell relative to the
   // particle's, as the sums above, chunk by chunk over the list.
+  Wx.resize(4 * mixed.size());
   int any = 0;
   for (std::size_t k0 = 0; k0 < mixed.size(); k0 += B) {
     const int nb = static_cast<int>(std::min<std::size_t>(B, mixed.size() - k0));
@@ -358,7 +356,9 @@ void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out
     }
     for (int j = 0; j < nb; ++j) {
       const std::size_t q = static_cast<std::size_t>(ids[j]);
-      for (int k = 0; k < 7; ++k) W[k * n + q] = acc[k][j] * w;
+      W[q] = acc[1][j] * w, W[n + q] = acc[4][j] * w, W[2 * n + q] = acc[5][j] * w;
+      double* wx = Wx.data() + 4 * (k0 + j);
+      wx[0] = acc[0][j] * w, wx[1] = acc[2][j] * w, wx[2] = acc[3][j] * w, wx[3] = acc[6][j] * w;
       far[q] = out[j];
       any |= out[j];
     }
@@ -650,8 +650,9 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   const bool sub = subpoints > 0;
   ddmp_table(g, lc);
   const bool ordered = locate_all(g, p, lc);
-  const int nw = sub ? 7 : 3;  // weights per particle
+  const int nw = 3;  // weights per particle (sub-points in other cells: lc.Wx)
   lc.W.resize(nw * n);
+  lc.mixed.clear();
   lc.stray.clear();
   const int* __restrict cell = lc.cell.data();
   const double* __restrict x = p.x[0].data();
@@ -661,7 +662,7 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   } else {
     lc.far.resize(n);
     if (subpoint_weights(n, x, p.length[0].data(), cell, x0, inv, top, subpoints, lc.W.data(),
-                         lc.far.data(), lc.mixed))
+                         lc.far.data(), lc.mixed, lc.Wx))
       for (std::size_t q = 0; q < n; ++q)
         if (lc.far[q]) lc.stray.push_back(static_cast<int>(q));
   }
@@ -683,12 +684,8 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
 #pragma GCC unroll 8
     for (int k = 0; k < NW; ++k) out[4 + k] = vs * W[k * n + q];
   };
-  if (sub)
-    cell_sums<11>(cell, n, ordered, stride, S,
-                  [&](std::size_t q, double* out) { fields.template operator()<7>(q, out); });
-  else
-    cell_sums<7>(cell, n, ordered, stride, S,
-                 [&](std::size_t q, double* out) { fields.template operator()<3>(q, out); });
+  cell_sums<7>(cell, n, ordered, stride, S,
+               [&](std::size_t q, double* out) { fields.template operator()<3>(q, out); });
   node_mass_momentum(S, stride, cells, g);
   // f_i = -sum_p V sigma Gbar_ip: the alpha part gives +-V sigma alpha/dx at the two
   // nodes of the point's cell; the rest is -sum_j D_ji Q_j with Q_j the hat-weighted
@@ -700,26 +697,20 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   double* __restrict Q = lc.Dv.data() + Grid<1>::ghost;   // nodes -1 .. cells + 1
   SA[-1] = SA[cells] = 0.0;
   Q[-1] = Q[cells + 1] = 0.0;
-  if (!sub) {
-    const double* __restrict A = F0;
-    const double* __restrict B = A + stride;
-    const double* __restrict C = B + stride;
+  const double* __restrict A = F0;
+  const double* __restrict B = A + stride;
+  const double* __restrict C = B + stride;
 #pragma omp simd
-    for (int c = 0; c < cells; ++c) SA[c] = A[c];
+  for (int c = 0; c < cells; ++c) SA[c] = A[c];
 #pragma omp simd
-    for (int j = 0; j <= cells; ++j) Q[j] = B[j] + C[j - 1];
-  } else {
-    const double* __restrict Am = F0;
-    const double* __restrict A0 = Am + stride;
-    const double* __restrict Ap = A0 + stride;
-    const double* __restrict Qm = Ap + stride;
-    const double* __restrict Q0 = Qm + stride;
-    const double* __restrict Q1 = Q0 + stride;
-    const double* __restrict Q2 = Q1 + stride;
-#pragma omp simd
-    for (int c = 0; c < cells; ++c) SA[c] = A0[c] + Am[c + 1] + Ap[c - 1];
-#pragma omp simd
-    for (int j = 0; j <= cells; ++j) Q[j] = Q0[j] + Qm[j + 1] + Q1[j - 1] + Q2[j - 2];
+  for (int j = 0; j <= cells; ++j) Q[j] = B[j] + C[j - 1];
+  // Sub-points in the neighbouring cells (their cells and nodes lie inside the grid).
+  for (std::size_t k = 0; k < lc.mixed.size(); ++k) {
+    const int q = lc.mixed[k], c = cell[q];
+    const double vs = vol[q] * (sig[q] - qv[q]);
+    const double* wx = lc.Wx.data() + 4 * k;
+    SA[c - 1] += vs * wx[0], SA[c + 1] += vs * wx[1];
+    Q[c - 1] += vs * wx[2], Q[c + 2] += vs * wx[3];
   }
   const double* __restrict dm = lc.dm.data() + Grid<1>::ghost;
   const double* __restrict dc = lc.dc.data() + Grid<1>::ghost;
@@ -752,16 +743,14 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
 
 namespace {
 
-// grad v from the DDMP weights: sum over the point's cells of alpha dv/dx plus the
-// hat-weighted nodal gradients Dv (eq. 3.31).
-template <bool Sub>
+// grad v from the DDMP weights: alpha dv/dx in the point's cell plus the hat-weighted
+// nodal gradients Dv (eq. 3.31); sub-points in other cells are added by the caller.
 [[gnu::noinline]] double ddmp_g2p_kernel(const LinearCells& lc, std::size_t n, double dtm,
                                          double inv, Particles<1>& p) {
   const double* __restrict d0 = lc.d0.data();
   const double* __restrict dd = lc.dd.data();
   const double* __restrict g0 = lc.g0.data();
   const double* __restrict dg = lc.dg.data();
-  const double* __restrict dgp = lc.vg.data() + 1;           // dg with a zero each side
   const double* __restrict Dn = lc.Dv.data() + Grid<1>::ghost;  // by node, -1 .. cells + 1
   const int* __restrict cell = lc.cell.data();
   const double* __restrict frac = lc.frac.data();
@@ -777,12 +766,7 @@ template <bool Sub>
     const double vq = v[q] + (d0[c] + f * dd[c]);
     const double xq = x[q] + dtm * (g0[c] + f * dg[c]);
     v[q] = vq, x[q] = xq;
-    if constexpr (Sub)
-      L[q] = inv * (W[q] * dgp[c - 1] + W[n + q] * dgp[c] + W[2 * n + q] * dgp[c + 1]) +
-             (W[3 * n + q] * Dn[c - 1] + W[4 * n + q] * Dn[c] + W[5 * n + q] * Dn[c + 1] +
-              W[6 * n + q] * Dn[c + 2]);
-    else
-      L[q] = W[q] * inv * dg[c] + W[n + q] * Dn[c] + W[2 * n + q] * Dn[c + 1];
+    L[q] = W[q] * inv * dg[c] + W[n + q] * Dn[c] + W[2 * n + q] * Dn[c + 1];
     check += vq + xq;
   }
   return check;
@@ -834,9 +818,14 @@ double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool mi
     extra[k] = e / subpoints;
   }
   const double dtm = move ? dt : 0.0;
-  const double check = subpoints > 0 ? ddmp_g2p_kernel<true>(lc, n, dtm, inv, p)
-                                     : ddmp_g2p_kernel<false>(lc, n, dtm, inv, p);
+  const double check = ddmp_g2p_kernel(lc, n, dtm, inv, p);
   double* L = p.grad_v[0].data();
+  const double* __restrict dgp = lc.vg.data() + 1;  // dg with a zero each side
+  for (std::size_t k = 0; k < lc.mixed.size(); ++k) {
+    const int q = lc.mixed[k], c = lc.cell[q];
+    const double* wx = lc.Wx.data() + 4 * k;
+    L[q] += inv * (wx[0] * dgp[c - 1] + wx[1] * dgp[c + 1]) + (wx[2] * Dn[c - 1] + wx[3] * Dn[c + 2]);
+  }
   for (std::size_t k = 0; k < lc.stray.size(); ++k) L[lc.stray[k]] += extra[k];
   return check;
 }

@@ -27,12 +27,13 @@ struct LinearCells {
   bool ordered = false;    // particles in cell order at the last p2g
   bool inside = false;     // and all between the grid's ends (grad = 1/dx for all)
   // DDMP (eq. 3.31): per particle the weights of its gradient (W[k * n + q]): at the
-  // particle alpha, (1-alpha)(1-f), (1-alpha) f; with sub-points their averages sorted
-  // by the sub-point's cell (see subpoint_weights), so that
+  // particle alpha, (1-alpha)(1-f), (1-alpha) f; with sub-points their averages over
+  // the sub-points in the particle's cell (see subpoint_weights), so that
   // Gbar_i = sum alpha dS_i/dx + sum_j D_ji Q_j.
   std::vector<double> W;
+  std::vector<int> mixed;  // particles with sub-points in a neighbouring cell,
+  std::vector<double> Wx;  // and their weights there (4 each)
   std::vector<int> far;    // sub-points more than a cell from the particle's cell
-  std::vector<int> mixed;  // particles with sub-points outside their own cell
   std::vector<int> stray;  // those particles
   std::vector<double> dm, dc, dp;  // D_{j,j-1}, D_{j,j}, D_{j,j+1} by node storage index
   std::vector<double> vg, Dv;      // scratch: per-cell alpha sums / padded dg; Q / D v
