@@ -166,7 +166,7 @@ inline double sub_step(double h, int n_sub) { return n_sub > 1 ? 2.0 * h / (n_su
 // out = sqrt(in) elementwise, in >= 0. The square root is most of the cost of the DDMP
 // weights (alpha, eq. 3.27), and the divider takes many cycles per vector. With AVX-512:
 // the 14-bit reciprocal square root and two Newton steps (14 -> 28 -> 56 bits), then
-// sqrt = in / sqrt(in): within an ulp or two of the correctly rounded root. Otherwise
+// sqrt(in) = in * (1 / sqrt(in)): within an ulp or two of the correctly rounded root. Otherwise
 // the SIMD square root (std::sqrt keeps errno's slow path in a loop and stops it
 // vectorising; the SIMD one is the same correctly rounded IEEE operation).
 void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out) {
@@ -415,10 +415,11 @@ void cell_tables(const Grid<1>& g, LinearCells& lc, bool midpoint) {
   const int cells = g.cells[0];
   const double* __restrict VL = g.velocity_L[0].data() + Grid<1>::ghost;
   const double* __restrict VN = g.velocity[0].data() + Grid<1>::ghost;
-  lc.d0.resize(cells + 8);  // padded for expand_cells
-  lc.dd.resize(cells + 8);  // padded for expand_cells
-  lc.g0.resize(cells + 8);  // padded for expand_cells
-  lc.dg.resize(cells + 8);  // padded for expand_cells
+  // Padded: g2p_elastic_ordered loads eight entries from any cell on.
+  lc.d0.resize(cells + 8);
+  lc.dd.resize(cells + 8);
+  lc.g0.resize(cells + 8);
+  lc.dg.resize(cells + 8);
   double* __restrict d0 = lc.d0.data();
   double* __restrict dd = lc.dd.data();
   double* __restrict g0 = lc.g0.data();
@@ -462,32 +463,14 @@ double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool 
 
 namespace {
 
-// The per-cell g2p tables at every particle (pc[k * n + q] = table_k[cell[q]]). With
-// AVX-512 and particles in cell order, eight particles span few cells: one load of
-// the cells from the first on and a permute replace four gathers.
+// The per-cell g2p tables at every particle (pc[k * n + q] = table_k[cell[q]]), for the
+// portable kernel (g2p_elastic_ordered reads the tables directly).
 void expand_cells(LinearCells& lc, std::size_t n) {
   lc.pc.resize(4 * n);
   const double* tab[4] = {lc.d0.data(), lc.dd.data(), lc.g0.data(), lc.dg.data()};
   const int* __restrict cell = lc.cell.data();
   double* __restrict out = lc.pc.data();
   std::size_t q = 0;
-#if defined(__AVX512F__)
-  if (lc.ordered)
-    for (; q + 8 <= n; q += 8) {
-      const int c0 = cell[q];
-      if (cell[q + 7] - c0 >= 8) {
-        for (std::size_t r = q; r < q + 8; ++r)
-          for (int k = 0; k < 4; ++k) out[k * n + r] = tab[k][cell[r]];
-        continue;
-      }
-      const __m256i ci = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(cell + q));
-      const __m512i idx =
-          _mm512_maskz_cvtepi32_epi64(0xFF, _mm256_sub_epi32(ci, _mm256_set1_epi32(c0)));
-      for (int k = 0; k < 4; ++k)
-        _mm512_storeu_pd(out + k * n + q,
-                         _mm512_maskz_permutexvar_pd(0xFF, idx, _mm512_loadu_pd(tab[k] + c0)));
-    }
-#endif
   for (; q < n; ++q)
     for (int k = 0; k < 4; ++k) out[k * n + q] = tab[k][cell[q]];
 }

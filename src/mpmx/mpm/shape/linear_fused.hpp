@@ -17,9 +17,9 @@ struct LinearCells {
   std::vector<double> frac;
   std::vector<double> grad;  // 1/dx inside the grid, 0 past its ends
   // Per-cell sums ([field][cell + 2], two zero cells padding each end): m, m f, m v, m v f, then
-  // the force fields (V sigma G for MPM; V sigma times the DDMP weights below).
+  // the force fields (V sigma, or V sigma G, for MPM; V sigma times the DDMP weights below).
   std::vector<double> sums;
-  std::vector<double> val;  // the summed per-particle fields ([field][particle])
+  std::vector<double> val;  // scratch of the DDMP passes
   // Per-cell node values for g2p: dv at the left node and its jump, same for the
   // velocity that moves the particle.
   std::vector<double> d0, dd, g0, dg;
