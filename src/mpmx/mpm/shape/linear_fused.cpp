@@ -675,7 +675,7 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   // nodal sum of V sigma (1 - alpha) (eq. 3.31). Per cell: SA[c]; per node: Q[j].
   const double* __restrict F0 = S + 4 * stride + kPad;  // force fields by particle cell
   lc.vg.resize(cells + 2);
-  lc.Dv.resize(g.storage);
+  lc.Dv.resize(g.storage + 8);  // padded: eight-wide loads from any node
   double* __restrict SA = lc.vg.data() + 1;                // cells -1 .. cells
   double* __restrict Q = lc.Dv.data() + Grid<1>::ghost;   // nodes -1 .. cells + 1
   SA[-1] = SA[cells] = 0.0;
@@ -742,8 +742,39 @@ namespace {
   double* __restrict v = p.v[0].data();
   double* __restrict L = p.grad_v[0].data();
   double check = 0.0;
+  std::size_t q0 = 0;
+#if defined(__AVX512F__)
+  // In cell order: eight particles whose cells lie within eight of the first take the
+  // tables by one load and a permute each (as g2p_elastic_ordered).
+  if (lc.ordered) {
+    const __m512d vinv = _mm512_set1_pd(inv), vdtm = _mm512_set1_pd(dtm);
+    __m512d vcheck = _mm512_setzero_pd();
+    for (; q0 + 8 <= n; q0 += 8) {
+      const int c0 = cell[q0];
+      if (cell[q0 + 7] - c0 >= 8) break;  // the rest one by one
+      const __m256i ci = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(cell + q0));
+      const __m512i idx = _mm512_maskz_cvtepi32_epi64(0xFF, _mm256_sub_epi32(ci, _mm256_set1_epi32(c0)));
+      auto at = [&](const double* t) { return _mm512_maskz_permutexvar_pd(0xFF, idx, _mm512_loadu_pd(t + c0)); };
+      const __m512d f = _mm512_loadu_pd(frac + q0);
+      const __m512d vq = _mm512_add_pd(_mm512_loadu_pd(v + q0), _mm512_fmadd_pd(f, at(dd), at(d0)));
+      const __m512d dgc = at(dg);
+      const __m512d xq = _mm512_fmadd_pd(vdtm, _mm512_fmadd_pd(f, dgc, at(g0)), _mm512_loadu_pd(x + q0));
+      _mm512_storeu_pd(v + q0, vq);
+      _mm512_storeu_pd(x + q0, xq);
+      const __m512d Lq = _mm512_fmadd_pd(
+          _mm512_loadu_pd(W + q0), _mm512_mul_pd(vinv, dgc),
+          _mm512_fmadd_pd(_mm512_loadu_pd(W + n + q0), at(Dn),
+                          _mm512_mul_pd(_mm512_loadu_pd(W + 2 * n + q0), at(Dn + 1))));
+      _mm512_storeu_pd(L + q0, Lq);
+      vcheck = _mm512_add_pd(vcheck, _mm512_add_pd(vq, xq));
+    }
+    alignas(64) double cl[8];
+    _mm512_store_pd(cl, vcheck);
+    for (int k = 0; k < 8; ++k) check += cl[k];
+  }
+#endif
 #pragma omp simd reduction(+ : check)
-  for (std::size_t q = 0; q < n; ++q) {
+  for (std::size_t q = q0; q < n; ++q) {
     const int c = cell[q];
     const double f = frac[q];
     const double vq = v[q] + (d0[c] + f * dd[c]);
@@ -766,7 +797,7 @@ double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool mi
   const double top = cells, inv = g.inv_dx[0], x0 = g.lower[0];
   // Nodal gradient of the velocity that gives grad v: Dv_j = sum_i D_ji vg_i (ghosts 0).
   grow(lc.val, g.storage);  // free after p2g: scratch
-  lc.Dv.resize(g.storage);
+  lc.Dv.resize(g.storage + 8);  // padded: eight-wide loads from any node
   const double* __restrict VL = g.velocity_L[0].data();
   const double* __restrict VN = g.velocity[0].data();
   double* __restrict vg = lc.val.data();
