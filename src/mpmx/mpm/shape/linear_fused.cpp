@@ -57,7 +57,8 @@ inline double alpha(double f) {
 bool locate_all(const Grid<1>& g, const Particles<1>& p, LinearCells& lc) {
   const std::size_t n = p.size();
   const int cells = g.cells[0];
-  lc.cell.resize(n);
+  lc.cell.resize(n + 1);
+  lc.cell[n] = -1;  // a sentinel: no particle's cell
   lc.frac.resize(n);
   lc.grad.resize(n);
   const double x0 = g.lower[0], inv = g.inv_dx[0];
@@ -98,7 +99,7 @@ template <int NS, class Fields>
   while (q < n) {
     const int c = cell[q];
     fields(q, a);
-    for (++q; q < n && cell[q] == c; ++q) {
+    for (++q; cell[q] == c; ++q) {  // cell[n] = -1 ends the last run
       fields(q, b);
 #pragma GCC unroll 16
       for (int f = 0; f < NS; ++f) a[f] += b[f];
