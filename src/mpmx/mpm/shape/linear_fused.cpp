@@ -8,28 +8,42 @@
 
 #include "mpmx/mpm/shape/ddmp.hpp"
 #include "mpmx/mpm/shape/hat.hpp"
+#include "mpmx/mpm/shape/linear_fused_detail.hpp"
+#include "mpmx/mpm/shape/simd.hpp"
 
 namespace mpmx::mpm::shape {
 
+using namespace fused;
+
+// out = sqrt(in) elementwise, in >= 0. The square root is most of the cost of the DDMP
+// weights (alpha, eq. 3.27), and the divider takes many cycles per vector. With AVX-512:
+// the 14-bit reciprocal square root and two Newton steps (14 -> 28 -> 56 bits), then
+// sqrt(in) = in * (1 / sqrt(in)): within an ulp or two of the correctly rounded root. Otherwise
+// the SIMD square root (std::sqrt keeps errno's slow path in a loop and stops it
+// vectorising; the SIMD one is the same correctly rounded IEEE operation).
+void fused::sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out) {
+  std::size_t q = 0;
+#if defined(__AVX512F__)
+  const __m512d half = _mm512_set1_pd(0.5), three_halves = _mm512_set1_pd(1.5);
+  const __m512d zero = _mm512_setzero_pd();
+  for (; q + 8 <= n; q += 8) {
+    const __m512d r = _mm512_loadu_pd(in + q);
+    const __mmask8 pos = _mm512_cmp_pd_mask(r, zero, _CMP_GT_OQ);
+    const __m512d hr = _mm512_mul_pd(half, r);
+    __m512d y = _mm512_maskz_rsqrt14_pd(pos, r);
+    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
+    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
+    _mm512_storeu_pd(out + q, _mm512_maskz_mul_pd(pos, r, y));
+  }
+#elif defined(__AVX__)
+  for (; q + 4 <= n; q += 4) _mm256_storeu_pd(out + q, _mm256_sqrt_pd(_mm256_loadu_pd(in + q)));
+#elif defined(__SSE2__)
+  for (; q + 2 <= n; q += 2) _mm_storeu_pd(out + q, _mm_sqrt_pd(_mm_loadu_pd(in + q)));
+#endif
+  for (; q < n; ++q) out[q] = std::sqrt(in[q]);
+}
+
 namespace {
-
-// Cell (clamped to the grid, eq. 3.9: the flat continuation past the ends) and fraction
-// of a point at xi in cell units, as locate(clamp_to_grid(xi)) but free of int round
-// trips so that loops over it vectorise. xc >= 0: truncation is floor.
-struct Cell {
-  double c, f;
-};
-inline Cell cell_of(double xi, double top) {
-  const double xc = std::min(std::max(xi, 0.0), top);
-  const double cc = std::min(static_cast<double>(static_cast<int>(xc)), top - 1.0);
-  return {cc, xc - cc};
-}
-
-// alpha of eq. 3.27 (as ddmp_alpha); q >= 0 always, so sqrt needs no errno path.
-inline double alpha(double f) {
-  const double q = 4.0 * f * (1.0 - f);
-  return 0.5 * q * __builtin_sqrt(q);
-}
 
 // Pass 1 kernel (vectorises): cell, fraction and gradient of every particle; returns
 // whether any lies more than a cell past the grid, and in `edge` whether any lies past
@@ -146,51 +160,7 @@ void ddmp_table(const Grid<1>& g, LinearCells& lc) {
   lc.dm = t.dm, lc.dc = t.d0, lc.dp = t.dp;
 }
 
-// A sub-point's cell and weights (eq. 3.31 at xi): as add_ddmp_gradient.
-struct SubWeights {
-  int c;
-  double a, b0, b1;  // alpha, (1 - alpha)(1 - f), (1 - alpha) f
-};
-inline SubWeights sub_weights(double xi, double top) {
-  const Cell cf = cell_of(xi, top);
-  const double a = alpha(cf.f), b = 1.0 - a;
-  return {static_cast<int>(cf.c), a, b * (1.0 - cf.f), b * cf.f};
-}
 
-// Sub-point s of a particle at xi with half width h and spacing step (cell units), as
-// evaluate_ddmp_subpoints places them.
-inline double sub_h(double len, double inv, int n_sub) {
-  return 0.5 * len * inv * (1.0 - 1.0 / n_sub);
-}
-inline double sub_step(double h, int n_sub) { return n_sub > 1 ? 2.0 * h / (n_sub - 1) : 0.0; }
-
-// out = sqrt(in) elementwise, in >= 0. The square root is most of the cost of the DDMP
-// weights (alpha, eq. 3.27), and the divider takes many cycles per vector. With AVX-512:
-// the 14-bit reciprocal square root and two Newton steps (14 -> 28 -> 56 bits), then
-// sqrt(in) = in * (1 / sqrt(in)): within an ulp or two of the correctly rounded root. Otherwise
-// the SIMD square root (std::sqrt keeps errno's slow path in a loop and stops it
-// vectorising; the SIMD one is the same correctly rounded IEEE operation).
-void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out) {
-  std::size_t q = 0;
-#if defined(__AVX512F__)
-  const __m512d half = _mm512_set1_pd(0.5), three_halves = _mm512_set1_pd(1.5);
-  const __m512d zero = _mm512_setzero_pd();
-  for (; q + 8 <= n; q += 8) {
-    const __m512d r = _mm512_loadu_pd(in + q);
-    const __mmask8 pos = _mm512_cmp_pd_mask(r, zero, _CMP_GT_OQ);
-    const __m512d hr = _mm512_mul_pd(half, r);
-    __m512d y = _mm512_maskz_rsqrt14_pd(pos, r);
-    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
-    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
-    _mm512_storeu_pd(out + q, _mm512_maskz_mul_pd(pos, r, y));
-  }
-#elif defined(__AVX__)
-  for (; q + 4 <= n; q += 4) _mm256_storeu_pd(out + q, _mm256_sqrt_pd(_mm256_loadu_pd(in + q)));
-#elif defined(__SSE2__)
-  for (; q + 2 <= n; q += 2) _mm_storeu_pd(out + q, _mm_sqrt_pd(_mm_loadu_pd(in + q)));
-#endif
-  for (; q < n; ++q) out[q] = std::sqrt(in[q]);
-}
 
 // DDMP weights of every particle: W[0..2] = alpha, (1-alpha)(1-f), (1-alpha) f at the
 // particle (as ddmp_alpha and add_ddmp_gradient). `tmp`: 2 n scratch.
@@ -208,164 +178,6 @@ void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out
   }
 }
 
-// Sub-point weights of every particle (eqs. 3.31, 6.1-6.3), averaged over the n_sub
-// points (equal volumes, eq. 6.2) placed as evaluate_ddmp_subpoints places them, summed
-// in their order, and sorted by the sub-point's cell relative to the particle's cell c.
-// In plain DDMP's layout, W[0..2] = <alpha> in cell c and <(1-alpha) S_j> at nodes c and
-// c+1 (S_j the hat of the sub-point's cell). Particles with sub-points in cells c-1 or
-// c+1 are listed in `mixed`, with Wx[4 k ..] = <alpha> in cells c-1, c+1 and
-// <(1-alpha) S_j> at nodes c-1, c+2 for the k-th. Returns whether any particle has a
-// sub-point further away (far[q]; those are handled apart).
-//
-// Most particles keep all their sub-points in their own cell: their fraction is xi - c,
-// with no cell search or sorting. Those go eight at a time in registers (AVX-512) or
-// chunk by chunk; the mixed ones chunk by chunk over their list.
-[[gnu::noinline]] int subpoint_weights(std::size_t n, const double* __restrict x,
-                                       const double* __restrict len, const int* __restrict cell,
-                                       double x0, double inv, double top, int ns,
-                                       double* __restrict W, int* __restrict far,
-                                       std::vector<int>& mixed, std::vector<double>& Wx) {
-  constexpr int B = 64;  // a chunk's sums and scratch stay in L1
-  const double w = 1.0 / ns;
-  mixed.clear();
-  std::size_t done = 0;
-#if defined(__AVX512F__)
-  // Eight particles at a time, every sub-point in registers (the same arithmetic as the
-  // loops below, without contraction, and the square root of sqrt_all).
-  const __m512d vx0 = _mm512_set1_pd(x0), vinv = _mm512_set1_pd(inv), vw = _mm512_set1_pd(w);
-  const __m512d hfac = _mm512_set1_pd(0.5), keep = _mm512_set1_pd(1.0 - 1.0 / ns);
-  const __m512d one = _mm512_set1_pd(1.0), four = _mm512_set1_pd(4.0), zero = _mm512_setzero_pd();
-  const __m512d three_halves = _mm512_set1_pd(1.5), vtop1 = _mm512_set1_pd(top - 1.0);
-  const __m512d span = _mm512_set1_pd(ns - 1), two = _mm512_set1_pd(2.0);
-  for (; done + 8 <= n; done += 8) {
-    const std::size_t q = done;
-    const __m512d xi = _mm512_mul_pd(_mm512_sub_pd(_mm512_loadu_pd(x + q), vx0), vinv);
-    // sub_h, sub_step
-    const __m512d h = _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(hfac, _mm512_loadu_pd(len + q)), vinv), keep);
-    const __m512d step = ns > 1 ? _mm512_div_pd(_mm512_mul_pd(two, h), span) : zero;
-    const __m512d c = _mm512_cvtepi32_pd(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(cell + q)));
-    const __m512d lo = _mm512_sub_pd(xi, h);
-    const __m512d hi = _mm512_add_pd(lo, _mm512_mul_pd(span, step));
-    const __mmask8 own = _mm512_cmp_pd_mask(lo, c, _CMP_GE_OQ) &
-                         _mm512_cmp_pd_mask(hi, _mm512_add_pd(c, one), _CMP_LT_OQ) &
-                         _mm512_cmp_pd_mask(c, vtop1, _CMP_LE_OQ);
-    __m512d a1 = zero, a4 = zero, a5 = zero;
-    for (int sp = 0; sp < ns; ++sp) {
-      const __m512d f = _mm512_sub_pd(_mm512_add_pd(lo, _mm512_mul_pd(_mm512_set1_pd(sp), step)), c);
-      const __m512d omf = _mm512_sub_pd(one, f);
-      const __m512d r = _mm512_mul_pd(_mm512_mul_pd(four, f), omf);
-      const __mmask8 pos = _mm512_cmp_pd_mask(r, zero, _CMP_GT_OQ);
-      const __m512d hr = _mm512_mul_pd(hfac, r);
-      __m512d y = _mm512_maskz_rsqrt14_pd(pos, r);
-      y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
-      y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
-      const __m512d sq = _mm512_maskz_mul_pd(pos, r, y);
-      const __m512d al = _mm512_mul_pd(_mm512_mul_pd(hfac, r), sq), be = _mm512_sub_pd(one, al);
-      a1 = _mm512_add_pd(a1, al);
-      a4 = _mm512_add_pd(a4, _mm512_mul_pd(be, omf));
-      a5 = _mm512_add_pd(a5, _mm512_mul_pd(be, f));
-    }
-    _mm512_storeu_pd(W + q, _mm512_mul_pd(a1, vw));
-    _mm512_storeu_pd(W + n + q, _mm512_mul_pd(a4, vw));
-    _mm512_storeu_pd(W + 2 * n + q, _mm512_mul_pd(a5, vw));
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(far + q), _mm256_setzero_si256());
-    for (unsigned m = static_cast<unsigned char>(~own); m; m &= m - 1)
-      mixed.push_back(static_cast<int>(q + __builtin_ctz(m)));
-  }
-#endif
-  for (std::size_t q0 = done; q0 < n; q0 += B) {
-    const int nb = static_cast<int>(std::min<std::size_t>(B, n - q0));
-    alignas(64) double df[B], fr[B], r[B], sq[B], a1[B], a4[B], a5[B];
-    alignas(64) int own[B];
-#pragma omp simd
-    for (int j = 0; j < nb; ++j) {
-      const std::size_t q = q0 + j;
-      const double xi = (x[q] - x0) * inv;
-      const double h = sub_h(len[q], inv, ns), step = sub_step(h, ns);
-      const double c = cell[q], lo = xi - h, hi = lo + (ns - 1) * step;
-      own[j] = (lo >= c) & (hi < c + 1.0) & (c <= top - 1.0);
-      df[j] = step;
-      a1[j] = a4[j] = a5[j] = 0.0;
-    }
-    for (int sp = 0; sp < ns; ++sp) {
-      // As cell_of: inside its own cell a sub-point's fraction is (start + s step) - c.
-#pragma omp simd
-      for (int j = 0; j < nb; ++j) {
-        const std::size_t q = q0 + j;
-        const double xi = (x[q] - x0) * inv;
-        const double h = sub_h(len[q], inv, ns);
-        const double f = (xi - h + sp * df[j]) - static_cast<double>(cell[q]);
-        fr[j] = f;
-        r[j] = 4.0 * f * (1.0 - f);
-      }
-      sqrt_all(nb, r, sq);
-#pragma omp simd
-      for (int j = 0; j < nb; ++j) {
-        const double f = fr[j], al = 0.5 * r[j] * sq[j], be = 1.0 - al;
-        a1[j] += al;
-        a4[j] += be * (1.0 - f);
-        a5[j] += be * f;
-      }
-    }
-    for (int j = 0; j < nb; ++j) {
-      const std::size_t q = q0 + j;
-      W[q] = a1[j] * w, W[n + q] = a4[j] * w, W[2 * n + q] = a5[j] * w;
-      far[q] = 0;
-      if (!own[j]) mixed.push_back(static_cast<int>(q));
-    }
-  }
-  // Particles whose sub-points reach into other cells: sorted by cell relative to the
-  // particle's, as the sums above, chunk by chunk over the list.
-  Wx.resize(4 * mixed.size());
-  int any = 0;
-  for (std::size_t k0 = 0; k0 < mixed.size(); k0 += B) {
-    const int nb = static_cast<int>(std::min<std::size_t>(B, mixed.size() - k0));
-    const int* __restrict ids = mixed.data() + k0;
-    alignas(64) double start[B], step[B], cq[B], fr[B], r[B], sq[B], d[B], acc[7][B];
-    alignas(64) int out[B];
-    for (int j = 0; j < nb; ++j) {
-      const std::size_t q = static_cast<std::size_t>(ids[j]);
-      const double xi = (x[q] - x0) * inv;
-      const double h = sub_h(len[q], inv, ns);
-      start[j] = xi - h, step[j] = sub_step(h, ns), cq[j] = cell[q];
-      out[j] = 0;
-      for (int k = 0; k < 7; ++k) acc[k][j] = 0.0;
-    }
-    for (int sp = 0; sp < ns; ++sp) {
-#pragma omp simd
-      for (int j = 0; j < nb; ++j) {
-        const Cell cf = cell_of(start[j] + sp * step[j], top);
-        fr[j] = cf.f;
-        r[j] = 4.0 * cf.f * (1.0 - cf.f);
-        d[j] = cf.c - cq[j];
-      }
-      sqrt_all(nb, r, sq);
-#pragma omp simd
-      for (int j = 0; j < nb; ++j) {
-        const double f = fr[j], al = 0.5 * r[j] * sq[j], be = 1.0 - al;
-        const double b0 = be * (1.0 - f), b1 = be * f;
-        const bool m = d[j] == -1.0, z = d[j] == 0.0, p = d[j] == 1.0;
-        out[j] |= !(m | z | p);
-        acc[0][j] += m ? al : 0.0;
-        acc[1][j] += z ? al : 0.0;
-        acc[2][j] += p ? al : 0.0;
-        acc[3][j] += m ? b0 : 0.0;
-        acc[4][j] += (m ? b1 : 0.0) + (z ? b0 : 0.0);
-        acc[5][j] += (z ? b1 : 0.0) + (p ? b0 : 0.0);
-        acc[6][j] += p ? b1 : 0.0;
-      }
-    }
-    for (int j = 0; j < nb; ++j) {
-      const std::size_t q = static_cast<std::size_t>(ids[j]);
-      W[q] = acc[1][j] * w, W[n + q] = acc[4][j] * w, W[2 * n + q] = acc[5][j] * w;
-      double* wx = Wx.data() + 4 * (k0 + j);
-      wx[0] = acc[0][j] * w, wx[1] = acc[2][j] * w, wx[2] = acc[3][j] * w, wx[3] = acc[6][j] * w;
-      far[q] = out[j];
-      any |= out[j];
-    }
-  }
-  return any;
-}
 
 }  // namespace
 
@@ -517,14 +329,26 @@ template <bool SmallStrain>
   return check;
 }
 
-#if defined(__AVX512F__)
+// a * b + c for one value, rounded once where the machine has FMA (as simd::fmadd).
+inline double fmadd1(double a, double b, double c) {
+#if defined(__FMA__)
+  return std::fma(a, b, c);
+#else
+  return a * b + c;
+#endif
+}
+
 // g2p_elastic_kernel without the expanded tables, for particles in cell order and
-// without viscosity (q = 0): eight particles whose cells lie within eight of the first
-// take their cells' table values by one load and a permute each, in registers. Other
-// blocks, and the last, go particle by particle through the same arithmetic.
+// without viscosity (q = 0): a vector of particles whose cells lie within a vector's
+// width of the first take their cells' table values by one load and a permute each,
+// in registers. Other blocks, and the last, go particle by particle through the same
+// arithmetic.
 template <bool SmallStrain, bool Inside>
 [[gnu::noinline]] double g2p_elastic_ordered(const LinearCells& lc, double dt, double dtm, double E,
                                              double inv, Particles<1>& p, double& work) {
+  using simd::fmadd;
+  using simd::vdouble;
+  constexpr int K = simd::kLanes;
   const std::size_t n = p.size();
   const double* __restrict T0 = lc.d0.data();
   const double* __restrict T1 = lc.dd.data();
@@ -540,64 +364,51 @@ template <bool SmallStrain, bool Inside>
   const double* __restrict V0 = p.volume0.data();
   double* __restrict eps = p.strain[0].data();
   double* __restrict sig = p.stress[0].data();
-  const __m512d vdt = _mm512_set1_pd(dt), vdtm = _mm512_set1_pd(dtm), vE = _mm512_set1_pd(E);
-  const __m512d one = _mm512_set1_pd(1.0), vinv = _mm512_set1_pd(inv);
-  __m512d check = _mm512_setzero_pd(), w = _mm512_setzero_pd();
+  const vdouble vdt = simd::splat(dt), vdtm = simd::splat(dtm), one = simd::splat(1.0);
+  vdouble check{}, w{};
   double check1 = 0.0, w1 = 0.0;
   auto one_particle = [&](std::size_t q) {
     const int c = cell[q];
     const double f = frac[q];
-    const double vq = v[q] + std::fma(f, T1[c], T0[c]);
-    const double xq = std::fma(dtm, std::fma(f, T3[c], T2[c]), x[q]);
+    const double vq = v[q] + fmadd1(f, T1[c], T0[c]);
+    const double xq = fmadd1(dtm, fmadd1(f, T3[c], T2[c]), x[q]);
     const double Lq = T3[c] * grad[q];
     v[q] = vq, x[q] = xq, L[q] = Lq;
     check1 += vq + xq;
     const double Vq = V[q];
-    w1 += (SmallStrain ? V0[q] : Vq) * sig[q] * Lq;
-    V[q] = Vq * std::fma(dt, Lq, 1.0);
-    const double e = std::fma(dt, Lq, eps[q]);
+    w1 = fmadd1((SmallStrain ? V0[q] : Vq) * sig[q], Lq, w1);
+    V[q] = Vq * fmadd1(dt, Lq, 1.0);
+    const double e = fmadd1(dt, Lq, eps[q]);
     eps[q] = e;
     sig[q] = E * e;
   };
   std::size_t q = 0;
-  for (; q + 8 <= n; q += 8) {
+  for (; q + K <= n; q += K) {
     const int c0 = cell[q];
-    if (cell[q + 7] - c0 >= 8) {
-      for (std::size_t r = q; r < q + 8; ++r) one_particle(r);
+    if (cell[q + K - 1] - c0 >= K) {
+      for (std::size_t r = q; r < q + K; ++r) one_particle(r);
       continue;
     }
-    // maskz forms: GCC 12 warns on the unmasked ones' undefined pass-through operand.
-    const __m256i ci = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(cell + q));
-    const __m512i idx = _mm512_maskz_cvtepi32_epi64(0xFF, _mm256_sub_epi32(ci, _mm256_set1_epi32(c0)));
-    const __m512d d0 = _mm512_maskz_permutexvar_pd(0xFF, idx, _mm512_loadu_pd(T0 + c0));
-    const __m512d dd = _mm512_maskz_permutexvar_pd(0xFF, idx, _mm512_loadu_pd(T1 + c0));
-    const __m512d g0 = _mm512_maskz_permutexvar_pd(0xFF, idx, _mm512_loadu_pd(T2 + c0));
-    const __m512d dg = _mm512_maskz_permutexvar_pd(0xFF, idx, _mm512_loadu_pd(T3 + c0));
-    const __m512d f = _mm512_loadu_pd(frac + q);
-    const __m512d vq = _mm512_add_pd(_mm512_loadu_pd(v + q), _mm512_fmadd_pd(f, dd, d0));
-    const __m512d xq = _mm512_fmadd_pd(vdtm, _mm512_fmadd_pd(f, dg, g0), _mm512_loadu_pd(x + q));
-    const __m512d Lq = _mm512_mul_pd(dg, Inside ? vinv : _mm512_loadu_pd(grad + q));
-    _mm512_storeu_pd(v + q, vq);
-    _mm512_storeu_pd(x + q, xq);
-    _mm512_storeu_pd(L + q, Lq);
-    check = _mm512_add_pd(check, _mm512_add_pd(vq, xq));
-    const __m512d Vq = _mm512_loadu_pd(V + q);
-    const __m512d Vw = SmallStrain ? _mm512_loadu_pd(V0 + q) : Vq;
-    w = _mm512_fmadd_pd(_mm512_mul_pd(Vw, _mm512_loadu_pd(sig + q)), Lq, w);
-    _mm512_storeu_pd(V + q, _mm512_mul_pd(Vq, _mm512_fmadd_pd(vdt, Lq, one)));
-    const __m512d e = _mm512_fmadd_pd(vdt, Lq, _mm512_loadu_pd(eps + q));
-    _mm512_storeu_pd(eps + q, e);
-    _mm512_storeu_pd(sig + q, _mm512_mul_pd(vE, e));
+    const simd::Lookup idx = simd::lookup_index(cell + q, c0);
+    const vdouble dg = simd::lookup(T3 + c0, idx);
+    const vdouble f = simd::load(frac + q);
+    const vdouble vq = simd::load(v + q) + fmadd(f, simd::lookup(T1 + c0, idx), simd::lookup(T0 + c0, idx));
+    const vdouble xq = fmadd(vdtm, fmadd(f, dg, simd::lookup(T2 + c0, idx)), simd::load(x + q));
+    const vdouble Lq = dg * (Inside ? simd::splat(inv) : simd::load(grad + q));
+    simd::store(v + q, vq), simd::store(x + q, xq), simd::store(L + q, Lq);
+    check += vq + xq;
+    const vdouble Vq = simd::load(V + q);
+    w = fmadd((SmallStrain ? simd::load(V0 + q) : Vq) * simd::load(sig + q), Lq, w);
+    simd::store(V + q, Vq * fmadd(vdt, Lq, one));
+    const vdouble e = fmadd(vdt, Lq, simd::load(eps + q));
+    simd::store(eps + q, e);
+    simd::store(sig + q, E * e);
   }
   for (; q < n; ++q) one_particle(q);
-  alignas(64) double wl[8], cl[8];
-  _mm512_store_pd(wl, w);
-  _mm512_store_pd(cl, check);
-  for (int k = 0; k < 8; ++k) w1 += wl[k], check1 += cl[k];
-  work = w1;
-  return check1;
+  work = w1 + simd::sum(w);
+  return check1 + simd::sum(check);
 }
-#endif
+
 
 }  // namespace
 
@@ -607,7 +418,6 @@ double g2p_linear_elastic(const Grid<1>& g, LinearCells& lc, double dt, bool mov
   cell_tables(g, lc, midpoint);
   const double dtm = move ? dt : 0.0;
   double w = 0.0;
-#if defined(__AVX512F__)
   if (lc.ordered && no_viscous_pressure) {
     const double inv = g.inv_dx[0];
     const double check =
@@ -618,7 +428,6 @@ double g2p_linear_elastic(const Grid<1>& g, LinearCells& lc, double dt, bool mov
     stress_work += dt * w;
     return check;
   }
-#endif
   expand_cells(lc, p.size());
   const double check = small_strain ? g2p_elastic_kernel<true>(lc, dt, dtm, E, p, w)
                                     : g2p_elastic_kernel<false>(lc, dt, dtm, E, p, w);
@@ -744,36 +553,31 @@ namespace {
   double* __restrict L = p.grad_v[0].data();
   double check = 0.0;
   std::size_t q0 = 0;
-#if defined(__AVX512F__)
-  // In cell order: eight particles whose cells lie within eight of the first take the
-  // tables by one load and a permute each (as g2p_elastic_ordered).
+  // In cell order: a vector of particles whose cells lie within its width of the first
+  // take the tables by one load and a permute each (as g2p_elastic_ordered).
   if (lc.ordered) {
-    const __m512d vinv = _mm512_set1_pd(inv), vdtm = _mm512_set1_pd(dtm);
-    __m512d vcheck = _mm512_setzero_pd();
-    for (; q0 + 8 <= n; q0 += 8) {
+    using simd::fmadd;
+    using simd::vdouble;
+    constexpr int K = simd::kLanes;
+    const vdouble vinv = simd::splat(inv), vdtm = simd::splat(dtm);
+    vdouble vcheck{};
+    for (; q0 + K <= n; q0 += K) {
       const int c0 = cell[q0];
-      if (cell[q0 + 7] - c0 >= 8) break;  // the rest one by one
-      const __m256i ci = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(cell + q0));
-      const __m512i idx = _mm512_maskz_cvtepi32_epi64(0xFF, _mm256_sub_epi32(ci, _mm256_set1_epi32(c0)));
-      auto at = [&](const double* t) { return _mm512_maskz_permutexvar_pd(0xFF, idx, _mm512_loadu_pd(t + c0)); };
-      const __m512d f = _mm512_loadu_pd(frac + q0);
-      const __m512d vq = _mm512_add_pd(_mm512_loadu_pd(v + q0), _mm512_fmadd_pd(f, at(dd), at(d0)));
-      const __m512d dgc = at(dg);
-      const __m512d xq = _mm512_fmadd_pd(vdtm, _mm512_fmadd_pd(f, dgc, at(g0)), _mm512_loadu_pd(x + q0));
-      _mm512_storeu_pd(v + q0, vq);
-      _mm512_storeu_pd(x + q0, xq);
-      const __m512d Lq = _mm512_fmadd_pd(
-          _mm512_loadu_pd(W + q0), _mm512_mul_pd(vinv, dgc),
-          _mm512_fmadd_pd(_mm512_loadu_pd(W + n + q0), at(Dn),
-                          _mm512_mul_pd(_mm512_loadu_pd(W + 2 * n + q0), at(Dn + 1))));
-      _mm512_storeu_pd(L + q0, Lq);
-      vcheck = _mm512_add_pd(vcheck, _mm512_add_pd(vq, xq));
+      if (cell[q0 + K - 1] - c0 >= K) break;  // the rest one by one
+      const simd::Lookup idx = simd::lookup_index(cell + q0, c0);
+      auto at = [&](const double* t) { return simd::lookup(t + c0, idx); };
+      const vdouble f = simd::load(frac + q0);
+      const vdouble vq = simd::load(v + q0) + fmadd(f, at(dd), at(d0));
+      const vdouble dgc = at(dg);
+      const vdouble xq = fmadd(vdtm, fmadd(f, dgc, at(g0)), simd::load(x + q0));
+      simd::store(v + q0, vq), simd::store(x + q0, xq);
+      const vdouble Lq = fmadd(simd::load(W + q0), vinv * dgc,
+                               fmadd(simd::load(W + n + q0), at(Dn), simd::load(W + 2 * n + q0) * at(Dn + 1)));
+      simd::store(L + q0, Lq);
+      vcheck += vq + xq;
     }
-    alignas(64) double cl[8];
-    _mm512_store_pd(cl, vcheck);
-    for (int k = 0; k < 8; ++k) check += cl[k];
+    check += simd::sum(vcheck);
   }
-#endif
 #pragma omp simd reduction(+ : check)
   for (std::size_t q = q0; q < n; ++q) {
     const int c = cell[q];

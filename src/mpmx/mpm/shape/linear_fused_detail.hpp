@@ -1,0 +1,62 @@
+#pragma once
+// Pieces shared by the fused 1-D kernels (linear_fused.cpp) and the DDMP sub-point
+// weights (subpoint_weights.cpp); not part of the library's interface.
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace mpmx::mpm::shape::fused {
+
+// Cell (clamped to the grid, eq. 3.9: the flat continuation past the ends) and fraction
+// of a point at xi in cell units, as locate(clamp_to_grid(xi)) but free of int round
+// trips so that loops over it vectorise. xc >= 0: truncation is floor.
+struct Cell {
+  double c, f;
+};
+inline Cell cell_of(double xi, double top) {
+  const double xc = std::min(std::max(xi, 0.0), top);
+  const double cc = std::min(static_cast<double>(static_cast<int>(xc)), top - 1.0);
+  return {cc, xc - cc};
+}
+
+// alpha of eq. 3.27 (as ddmp_alpha); q >= 0 always, so sqrt needs no errno path.
+inline double alpha(double f) {
+  const double q = 4.0 * f * (1.0 - f);
+  return 0.5 * q * __builtin_sqrt(q);
+}
+
+// A sub-point's cell and weights (eq. 3.31 at xi): as add_ddmp_gradient.
+struct SubWeights {
+  int c;
+  double a, b0, b1;  // alpha, (1 - alpha)(1 - f), (1 - alpha) f
+};
+inline SubWeights sub_weights(double xi, double top) {
+  const Cell cf = cell_of(xi, top);
+  const double a = alpha(cf.f), b = 1.0 - a;
+  return {static_cast<int>(cf.c), a, b * (1.0 - cf.f), b * cf.f};
+}
+
+// Sub-point s of a particle at xi with half width h and spacing step (cell units), as
+// evaluate_ddmp_subpoints places them.
+inline double sub_h(double len, double inv, int n_sub) {
+  return 0.5 * len * inv * (1.0 - 1.0 / n_sub);
+}
+inline double sub_step(double h, int n_sub) { return n_sub > 1 ? 2.0 * h / (n_sub - 1) : 0.0; }
+
+// out = sqrt(in) elementwise, in >= 0, to within an ulp or two (linear_fused.cpp).
+void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out);
+
+// DDMP weights of every particle averaged over its n_sub sub-points (eqs. 3.31, 6.1-6.3),
+// summed per cell of the sub-points relative to the particle's cell c. In plain DDMP's
+// layout, W[k * n + q] for k = 0..2 = <alpha> in cell c and <(1-alpha) S_j> at nodes c and
+// c+1 (S_j the hat of the sub-point's cell). Particles with sub-points in cells c-1 or
+// c+1 are listed in `mixed`, in particle order, with Wx[4 k ..] = <alpha> in cells c-1,
+// c+1 and <(1-alpha) S_j> at nodes c-1, c+2 for the k-th. Returns whether any particle
+// has a sub-point further away (far[q]; those are handled apart). subpoint_weights.cpp.
+int subpoint_weights(std::size_t n, const double* __restrict x, const double* __restrict len,
+                     const int* __restrict cell, double x0, double inv, double top, int ns,
+                     double* __restrict W, int* __restrict far, std::vector<int>& mixed,
+                     std::vector<double>& Wx);
+
+}  // namespace mpmx::mpm::shape::fused
