@@ -20,17 +20,16 @@ void solve_grid(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& 
     force_sum += f[i];
     force_abs += std::abs(f[i]);
   }
-  // Nodes without mass (outside the material) stay at rest. Branch-free (the divisor
-  // is 1 where unused) so the loop vectorises.
+  // Nodes without mass (outside the material) stay at rest. Branch-free (the divisor is
+  // 1 where unused) so that the loop vectorises; one divide per node.
   const double tiny = 1e-14 * mass_sum / (N + 1);
 #pragma omp simd
   for (std::size_t i = i0; i <= i1; ++i) {
     const bool has = m[i] > tiny;
-    const double r = 1.0 / (has ? m[i] : 1.0);  // one divide per node, not two
+    const double r = 1.0 / (has ? m[i] : 1.0);
     const double vi = mom[i] * r;
-    const double vli = vi + dt * f[i] * r;
     v[i] = has ? vi : 0.0;
-    vL[i] = has ? vli : 0.0;
+    vL[i] = has ? vi + dt * f[i] * r : 0.0;
   }
   // Prescribed ends: v^n at t, v^L at t + dt. What they add is tallied.
   auto hold = [&](std::size_t i, const BoundarySide& side) {

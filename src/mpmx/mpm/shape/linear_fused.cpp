@@ -45,25 +45,44 @@ void fused::sqrt_all(std::size_t n, const double* __restrict in, double* __restr
 
 namespace {
 
-// Pass 1 kernel (vectorises): cell, fraction and gradient of every particle; returns
+// Pass 1 kernel: cell, fraction and gradient of every particle (as cell_of); returns
 // whether any lies more than a cell past the grid, and in `edge` whether any lies past
-// its ends at all (a zero gradient there).
+// its ends at all (a zero gradient there). A vector at a time: the flags are lane masks
+// until the end, and the cell goes to int and back once.
 [[gnu::noinline]] int locate_kernel(std::size_t n, const double* __restrict x, double x0, double inv, double top,
                   int* __restrict cell, double* __restrict frac, double* __restrict grad, int& edge) {
-  int outside = 0, past = 0;
-#pragma omp simd reduction(| : outside, past)
-  for (std::size_t q = 0; q < n; ++q) {
+  using simd::vdouble;
+  using simd::vmask;
+  constexpr int K = simd::kLanes;
+  const vdouble zero{}, vtop = simd::splat(top), vinv = simd::splat(inv);
+  const simd::vint last = simd::vint{} + (static_cast<int>(top) - 1);
+  vmask outside{}, past{};
+  std::size_t q = 0;
+  for (; q + K <= n; q += K) {
+    const vdouble xi = (simd::load(x + q) - x0) * inv;
+    outside |= (xi < -1.0) | (xi > top + 1.0) | (xi != xi);
+    const vmask in = (xi >= zero) & (xi <= vtop);
+    past |= ~in;
+    const vdouble xc = simd::min(simd::max(xi, zero), vtop);
+    simd::vint ci = __builtin_convertvector(xc, simd::vint);  // xc >= 0: floor
+    ci = ci < last ? ci : last;
+    std::memcpy(cell + q, &ci, sizeof ci);
+    simd::store(frac + q, xc - __builtin_convertvector(ci, vdouble));
+    simd::store(grad + q, in ? vinv : zero);
+  }
+  int out1 = simd::bits(outside) != 0, past1 = simd::bits(past) != 0;
+  for (; q < n; ++q) {
     const double xi = (x[q] - x0) * inv;
-    outside |= !(xi >= -1.0) | !(xi <= top + 1.0);  // `|`, not `||`: no branch
+    out1 |= !(xi >= -1.0) | !(xi <= top + 1.0);  // `|`, not `||`: no branch
     const bool in = (xi >= 0.0) & (xi <= top);
-    past |= !in;
+    past1 |= !in;
     const Cell cf = cell_of(xi, top);
     cell[q] = static_cast<int>(cf.c);
     frac[q] = cf.f;
     grad[q] = in ? inv : 0.0;
   }
-  edge = past;
-  return outside;
+  edge = past1;
+  return out1;
 }
 
 // Pass 1: locate every particle (stops the run for one off the grid). Returns whether
@@ -128,6 +147,64 @@ template <int NS, class Fields>
     }
   }
 }
+
+#if defined(__AVX2__)
+// Pass 2 of plain MPM for particles in cell order: where four or more particles share a
+// cell (all of them at four or more per cell), their fields go four at a time in vectors,
+// summed down the run and across the lanes at its end; the rest of a run one by one.
+// Fewer instructions than cell_sums per particle; the order of the additions differs
+// (the same to round-off). Fields: m, m f, m v, m v f, and V (sigma - q) G, with q
+// left out without viscosity and G (1/dx) applied later where every particle is inside.
+template <bool Inside, bool Viscous>
+[[gnu::noinline]] void mpm_sums_ordered(const int* __restrict cell, std::size_t n, std::size_t stride,
+                                        double* __restrict S, const double* __restrict m,
+                                        const double* __restrict v, const double* __restrict frac,
+                                        const double* __restrict vol, const double* __restrict sig,
+                                        const double* __restrict qv, const double* __restrict grad) {
+  // Every cell is written once, in order: a run's sums, or zero in the gaps between runs
+  // and in the pads (no fill beforehand).
+  std::size_t next = 0;  // the first cell of S not yet written
+  auto zero_to = [&](std::size_t end) {
+    for (int k = 0; k < 5; ++k) std::fill(S + k * stride + next, S + k * stride + end, 0.0);
+  };
+  std::size_t q = 0;
+  while (q < n) {
+    const int c = cell[q];
+    __m256d a0 = _mm256_setzero_pd(), a1 = a0, a2 = a0, a3 = a0, a4 = a0;
+    for (; q + 3 < n && cell[q + 3] == c; q += 4) {
+      const __m256d mq = _mm256_loadu_pd(m + q), f = _mm256_loadu_pd(frac + q);
+      const __m256d mv = _mm256_mul_pd(mq, _mm256_loadu_pd(v + q));
+      a0 = _mm256_add_pd(a0, mq);
+      a1 = _mm256_add_pd(a1, _mm256_mul_pd(mq, f));
+      a2 = _mm256_add_pd(a2, mv);
+      a3 = _mm256_add_pd(a3, _mm256_mul_pd(mv, f));
+      const __m256d sq = Viscous ? _mm256_sub_pd(_mm256_loadu_pd(sig + q), _mm256_loadu_pd(qv + q))
+                                 : _mm256_loadu_pd(sig + q);
+      const __m256d e = _mm256_mul_pd(_mm256_loadu_pd(vol + q), sq);
+      a4 = _mm256_add_pd(a4, Inside ? e : _mm256_mul_pd(e, _mm256_loadu_pd(grad + q)));
+    }
+    // Across the lanes: (sum a0, sum a1, sum a2, sum a3) and sum a4.
+    const __m256d h01 = _mm256_hadd_pd(a0, a1), h23 = _mm256_hadd_pd(a2, a3);
+    const __m256d t = _mm256_add_pd(_mm256_permute2f128_pd(h01, h23, 0x20),
+                                    _mm256_permute2f128_pd(h01, h23, 0x31));
+    alignas(32) double r[5];
+    _mm256_store_pd(r, t);
+    const __m128d h4 = _mm_add_pd(_mm256_castpd256_pd128(a4), _mm256_extractf128_pd(a4, 1));
+    r[4] = _mm_cvtsd_f64(_mm_add_sd(h4, _mm_unpackhi_pd(h4, h4)));
+    for (; cell[q] == c; ++q) {  // cell[n] = -1 ends the last run
+      const double mv = m[q] * v[q];
+      r[0] += m[q], r[1] += m[q] * frac[q], r[2] += mv, r[3] += mv * frac[q];
+      const double e = vol[q] * (Viscous ? sig[q] - qv[q] : sig[q]);
+      r[4] += Inside ? e : e * grad[q];
+    }
+    const std::size_t at = static_cast<std::size_t>(c) + kPad;
+    if (at > next) zero_to(at);
+    for (int k = 0; k < 5; ++k) S[k * stride + at] = r[k];
+    next = at + 1;
+  }
+  zero_to(stride);
+}
+#endif
 
 // The mass and momentum fields of every point: m, m f, m v, m v f.
 [[gnu::always_inline]] inline void mass_fields(double m, double v, double f, double* out) {
@@ -199,16 +276,28 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
   // Every particle inside the grid and no viscosity (the common case): the gradient is
   // 1/dx throughout, applied per node, and q is not read.
   const bool plain = no_viscous_pressure && lc.inside;
-  if (plain)
-    cell_sums<5>(lc.cell.data(), n, ordered, stride, S, [&](std::size_t q, double* out) {
+  const int* cell = lc.cell.data();
+#if defined(__AVX2__)
+  if (ordered) {
+    auto sums = [&]<bool Inside, bool Viscous>() {
+      mpm_sums_ordered<Inside, Viscous>(cell, n, stride, S, m, v, frac, vol, sig, qv, grad);
+    };
+    if (plain) sums.template operator()<true, false>();
+    else if (no_viscous_pressure) sums.template operator()<false, false>();
+    else sums.template operator()<false, true>();
+  } else
+#endif
+  if (plain) {
+    cell_sums<5>(cell, n, ordered, stride, S, [&](std::size_t q, double* out) {
       mass_fields(m[q], v[q], frac[q], out);
       out[4] = vol[q] * sig[q];
     });
-  else
-    cell_sums<5>(lc.cell.data(), n, ordered, stride, S, [&](std::size_t q, double* out) {
+  } else {
+    cell_sums<5>(cell, n, ordered, stride, S, [&](std::size_t q, double* out) {
       mass_fields(m[q], v[q], frac[q], out);
       out[4] = vol[q] * (sig[q] - qv[q]) * grad[q];
     });
+  }
   node_mass_momentum(S, stride, cells, g);
   // The force is +V sigma/dx from cell i and -V sigma/dx from cell i-1 (G = -1/dx, +1/dx).
   const double* __restrict S4 = S + 4 * stride + kPad;

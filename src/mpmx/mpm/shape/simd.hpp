@@ -131,6 +131,18 @@ using Lookup = vint;
 #endif
 }
 
+[[gnu::always_inline]] inline vdouble min(vdouble a, vdouble b) {
+#if defined(__AVX512F__)
+  return (vdouble)_mm512_maskz_min_pd(0xFF, (__m512d)a, (__m512d)b);
+#elif defined(__AVX__)
+  return (vdouble)_mm256_min_pd((__m256d)a, (__m256d)b);
+#elif defined(__SSE2__)
+  return (vdouble)_mm_min_pd((__m128d)a, (__m128d)b);
+#else
+  return a < b ? a : b;
+#endif
+}
+
 // 1/sqrt(r) to 14 bits (AVX-512) or 12 (the float estimate elsewhere), r in [1e-30, 1].
 [[gnu::always_inline]] inline vdouble rsqrt_estimate(vdouble r) {
 #if defined(__AVX512F__)
