@@ -19,6 +19,159 @@ namespace mpmx::md {
 // line alignment, an 80-byte record touches two lines either way).
 constexpr int kPairStride = 10;
 
+#if defined(__AVX2__)
+namespace {
+
+// Lane choices for a 4-bit mask: the set lanes first, in order (as 32-bit indices, and
+// as pairs of them for 64-bit lanes).
+struct Compact {
+  alignas(16) int i4[16][4];
+  alignas(32) int i8[16][8];
+  Compact() {
+    for (int m = 0; m < 16; ++m) {
+      int n = 0;
+      for (int l = 0; l < 4; ++l)
+        if (m >> l & 1) i4[m][n] = l, i8[m][2 * n] = 2 * l, i8[m][2 * n + 1] = 2 * l + 1, ++n;
+      for (; n < 4; ++n) i4[m][n] = 0, i8[m][2 * n] = 0, i8[m][2 * n + 1] = 1;
+    }
+  }
+};
+const Compact kCompact;
+
+// The filter of compute_one_type four candidates at a time: r^2 from the positions
+// (x, y, z, pad per atom: one load each, transposed in registers), and the neighbours
+// within the cut-off written packed by a permute (no branch). The same arithmetic as
+// the scalar loop, in the same order. Returns the first candidate left for it.
+template <class Real>
+int filter4(const double* __restrict q, int i, const int* __restrict list, int s, int end,
+            double cutsq, int* __restrict ck, Real* __restrict cr, int& npair) {
+  const __m256d xi = _mm256_loadu_pd(q + 4 * i), cut = _mm256_set1_pd(cutsq);
+  for (; s + 4 <= end; s += 4) {
+    const __m128i k = _mm_loadu_si128(reinterpret_cast<const __m128i*>(list + s));
+    const __m256d d0 = _mm256_sub_pd(xi, _mm256_loadu_pd(q + 4 * list[s]));
+    const __m256d d1 = _mm256_sub_pd(xi, _mm256_loadu_pd(q + 4 * list[s + 1]));
+    const __m256d d2 = _mm256_sub_pd(xi, _mm256_loadu_pd(q + 4 * list[s + 2]));
+    const __m256d d3 = _mm256_sub_pd(xi, _mm256_loadu_pd(q + 4 * list[s + 3]));
+    const __m256d t0 = _mm256_unpacklo_pd(d0, d1), t1 = _mm256_unpackhi_pd(d0, d1);
+    const __m256d t2 = _mm256_unpacklo_pd(d2, d3), t3 = _mm256_unpackhi_pd(d2, d3);
+    const __m256d dx = _mm256_permute2f128_pd(t0, t2, 0x20), dz = _mm256_permute2f128_pd(t0, t2, 0x31);
+    const __m256d dy = _mm256_permute2f128_pd(t1, t3, 0x20);
+#if defined(__FMA__)
+    // As GCC contracts the scalar dx dx + dy dy + dz dz.
+    const __m256d rsq = _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dx, dx, _mm256_mul_pd(dy, dy)));
+#else
+    const __m256d rsq = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                      _mm256_mul_pd(dz, dz));
+#endif
+    const int m = _mm256_movemask_pd(_mm256_cmp_pd(rsq, cut, _CMP_LT_OQ));
+    const __m128i pick = _mm_load_si128(reinterpret_cast<const __m128i*>(kCompact.i4[m]));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(ck + npair),
+                     _mm_castps_si128(_mm_permutevar_ps(_mm_castsi128_ps(k), pick)));
+    if constexpr (std::is_same_v<Real, float>) {
+      _mm_storeu_ps(cr + npair, _mm_permutevar_ps(_mm256_cvtpd_ps(rsq), pick));
+    } else {
+      const __m256i pick8 = _mm256_load_si256(reinterpret_cast<const __m256i*>(kCompact.i8[m]));
+      _mm256_storeu_pd(cr + npair, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(rsq), pick8)));
+    }
+    npair += __builtin_popcount(static_cast<unsigned>(m));
+  }
+  return s;
+}
+
+
+#if defined(__FMA__)
+// The force pass of compute_one_type (mixed precision, no per-atom tallies) four pairs
+// of atom i at a time: the four knot records transposed in registers, the spline and
+// pair force in float lanes, and each pair's force (x, y, z, 0) as one double vector
+// (the positions are packed so), added to i's sum and taken from k's in pair order.
+// The same operations as the scalar loop, contracted as GCC contracts it there, so the
+// result is the same to the bit. Returns the first pair left for the scalar loop.
+template <bool Tally>
+int force4(const double* __restrict q, int i, float fpi, const double* __restrict fpa,
+           const float* __restrict pair_tab, const int* __restrict ck, const float* __restrict cr,
+           const float* __restrict cri, const int* __restrict cm, int s, int end,
+           double* __restrict f, __m256d& fi, double& epair) {
+  const __m256d xi = _mm256_loadu_pd(q + 4 * i);
+  const __m128 vfpi = _mm_set1_ps(fpi);
+  for (; s + 4 <= end; s += 4) {
+    const int k0 = ck[s], k1 = ck[s + 1], k2 = ck[s + 2], k3 = ck[s + 3];
+    const float* c0 = pair_tab + kPairStride * cm[s];
+    const float* c1 = pair_tab + kPairStride * cm[s + 1];
+    const float* c2 = pair_tab + kPairStride * cm[s + 2];
+    const float* c3 = pair_tab + kPairStride * cm[s + 3];
+    __m128 A0 = _mm_loadu_ps(c0), A1 = _mm_loadu_ps(c1), A2 = _mm_loadu_ps(c2), A3 = _mm_loadu_ps(c3);
+    _MM_TRANSPOSE4_PS(A0, A1, A2, A3);  // coefficients 0..3 of the four pairs
+    __m128 B0 = _mm_loadu_ps(c0 + 4), B1 = _mm_loadu_ps(c1 + 4), B2 = _mm_loadu_ps(c2 + 4),
+           B3 = _mm_loadu_ps(c3 + 4);
+    _MM_TRANSPOSE4_PS(B0, B1, B2, B3);  // 4..7
+    auto tail = [](const float* c) {     // 8, 9
+      return _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(c + 8)));
+    };
+    const __m128 h01 = _mm_unpacklo_ps(tail(c0), tail(c1)), h23 = _mm_unpacklo_ps(tail(c2), tail(c3));
+    const __m128 C8 = _mm_movelh_ps(h01, h23), C9 = _mm_movehl_ps(h23, h01);
+    const __m128 p = _mm_loadu_ps(cr + s), recip = _mm_loadu_ps(cri + s);
+    const __m128 rhop = _mm_fmadd_ps(_mm_fmadd_ps(A0, p, A1), p, A2);
+    const __m128 z2p = _mm_fmadd_ps(_mm_fmadd_ps(A3, p, B0), p, B1);
+    const __m128 z2 = _mm_fmadd_ps(_mm_fmadd_ps(_mm_fmadd_ps(B2, p, B3), p, C8), p, C9);
+    const __m128 phi = _mm_mul_ps(z2, recip);
+    const __m128 phip = _mm_fmsub_ps(z2p, recip, _mm_mul_ps(phi, recip));
+    const __m128 fpk = _mm256_cvtpd_ps(_mm256_set_pd(fpa[k3], fpa[k2], fpa[k1], fpa[k0]));
+    const __m128 psip = _mm_add_ps(_mm_fmadd_ps(vfpi, rhop, _mm_mul_ps(fpk, rhop)), phip);
+    const __m256d fpair = _mm256_cvtps_pd(_mm_mul_ps(_mm_xor_ps(psip, _mm_set1_ps(-0.0f)), recip));
+    auto pair = [&](int k, __m256d fp) {
+      const __m256d ff = _mm256_mul_pd(_mm256_sub_pd(xi, _mm256_loadu_pd(q + 4 * k)), fp);
+      fi = _mm256_add_pd(fi, ff);
+      _mm256_storeu_pd(f + 4 * k, _mm256_sub_pd(_mm256_loadu_pd(f + 4 * k), ff));
+    };
+    pair(k0, _mm256_permute4x64_pd(fpair, 0x00));
+    pair(k1, _mm256_permute4x64_pd(fpair, 0x55));
+    pair(k2, _mm256_permute4x64_pd(fpair, 0xAA));
+    pair(k3, _mm256_permute4x64_pd(fpair, 0xFF));
+    if constexpr (Tally) {
+      alignas(16) float e[4];
+      _mm_store_ps(e, phi);
+      for (int l = 0; l < 4; ++l) epair += e[l];
+    }
+  }
+  return s;
+}
+
+// The density pass of compute_one_type (mixed precision) four pairs of atom i at a time:
+// knot and offset in float lanes (kept for the force pass), the four knot records
+// transposed in registers, the spline in lanes, then the sums in pair order. The same
+// operations as the scalar loop, contracted as GCC contracts it there. Returns the first
+// pair left for the scalar loop.
+int density4(const float* __restrict rho_tab, float rdr, int nrm1, const int* __restrict ck,
+             float* __restrict cr, int* __restrict cm, int s, int end, double* __restrict rho,
+             double& rho_i) {
+  const __m128 vrdr = _mm_set1_ps(rdr), one = _mm_set1_ps(1.0f);
+  const __m128i last = _mm_set1_epi32(nrm1);
+  for (; s + 4 <= end; s += 4) {
+    __m128 p = _mm_fmadd_ps(_mm_loadu_ps(cr + s), vrdr, one);
+    const __m128i m = _mm_min_epi32(_mm_cvttps_epi32(p), last);
+    p = _mm_min_ps(one, _mm_sub_ps(p, _mm_cvtepi32_ps(m)));
+    _mm_storeu_ps(cr + s, p);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(cm + s), m);
+    alignas(16) int mi[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(mi), m);
+    __m128 C0 = _mm_loadu_ps(rho_tab + 4 * mi[0]), C1 = _mm_loadu_ps(rho_tab + 4 * mi[1]),
+           C2 = _mm_loadu_ps(rho_tab + 4 * mi[2]), C3 = _mm_loadu_ps(rho_tab + 4 * mi[3]);
+    _MM_TRANSPOSE4_PS(C0, C1, C2, C3);
+    const __m128 v = _mm_fmadd_ps(_mm_fmadd_ps(_mm_fmadd_ps(C0, p, C1), p, C2), p, C3);
+    alignas(32) double vd[4];
+    _mm256_store_pd(vd, _mm256_cvtps_pd(v));
+    for (int l = 0; l < 4; ++l) {
+      rho_i += vd[l];
+      rho[ck[s + l]] += vd[l];
+    }
+  }
+  return s;
+}
+#endif
+
+}  // namespace
+#endif
+
 void eam_spline(int n, double delta, const std::vector<double>& f, double* out) {
   auto s = [out](int m, int c) -> double& { return out[7 * m + c]; };
   for (int m = 1; m <= n; ++m) s(m, 6) = f[m];
@@ -233,7 +386,11 @@ ForceSums Eam::compute_one_type(const Neighbors& nb, ForceWork& w, const Real* r
     for (int i = i0; i < i1; ++i) {
       cfirst[i] = npair;
       const double xi = q[4 * i], yi = q[4 * i + 1], zi = q[4 * i + 2];
-      for (int s = first[i]; s < first[i + 1]; ++s) {
+      int s = first[i];
+#if defined(__AVX2__)
+      s = filter4(q, i, list, s, first[i + 1], cutsq, ck, cr, npair);
+#endif
+      for (; s < first[i + 1]; ++s) {
         const int k = list[s];
         const double dx = xi - q[4 * k], dy = yi - q[4 * k + 1], dz = zi - q[4 * k + 2];
         const double rsq = dx * dx + dy * dy + dz * dz;
@@ -268,7 +425,12 @@ ForceSums Eam::compute_one_type(const Neighbors& nb, ForceWork& w, const Real* r
     }
     for (int i = i0; i < i1; ++i) {
       double rho_i = 0;
-      for (int s = cfirst[i]; s < cfirst[i + 1]; ++s) {
+      int s = cfirst[i];
+#if defined(__AVX2__) && defined(__FMA__)
+      if constexpr (std::is_same_v<Real, float>)
+        s = density4(rho_tab, rdr, nrm1, ck, cr, cm, s, cfirst[i + 1], rho, rho_i);
+#endif
+      for (; s < cfirst[i + 1]; ++s) {
         const int k = ck[s];
         Real p;
         int m;
@@ -311,7 +473,17 @@ ForceSums Eam::compute_one_type(const Neighbors& nb, ForceWork& w, const Real* r
     const double xi = q[4 * i], yi = q[4 * i + 1], zi = q[4 * i + 2];
     const Real fpi = static_cast<Real>(fpa[i]);
     double fxi = 0, fyi = 0, fzi = 0;
-    for (int s = cfirst[i]; s < cfirst[i + 1]; ++s) {
+    int s = cfirst[i];
+#if defined(__AVX2__) && defined(__FMA__)
+    if constexpr (std::is_same_v<Real, float> && !PerAtom) {
+      __m256d fi = _mm256_setzero_pd();
+      s = force4<Tally>(q, i, fpi, fpa, pair_tab, ck, cr, cri, cm, s, cfirst[i + 1], f, fi, epair);
+      alignas(32) double a[4];
+      _mm256_store_pd(a, fi);
+      fxi = a[0], fyi = a[1], fzi = a[2];
+    }
+#endif
+    for (; s < cfirst[i + 1]; ++s) {
       const int k = ck[s];
       const Real p = cr[s];
       const Real* c = pair_tab + kPairStride * cm[s];
