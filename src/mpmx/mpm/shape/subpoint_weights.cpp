@@ -10,6 +10,8 @@
 // evaluate_ddmp_subpoints.
 
 #include <algorithm>
+#include <array>
+#include <utility>
 
 #include "mpmx/mpm/shape/linear_fused_detail.hpp"
 #include "mpmx/mpm/shape/simd.hpp"
@@ -38,6 +40,33 @@ struct SpreadScale {
                                             double x0, double inv, const SpreadScale& k) {
   const vdouble xi = (simd::load(x) - x0) * inv, l = simd::load(len);
   return {simd::load_cells(cell), xi - k.h * l, k.step * l};
+}
+
+// Particles with every sub-point in their cell: the sums of alpha and alpha f only (the
+// sum of f is n times the particle's own fraction: the points are centred on it), so
+// W = <alpha>, 1 - <alpha> - <(1-alpha) f>, <f> - <alpha f>.
+struct OwnSums {
+  vdouble w0, w1, w2;
+};
+template <int V>
+[[gnu::always_inline]] inline void own_sums(const Spread* s, int ns, OwnSums* o) {
+  vdouble f0[V], A[V], AF[V];
+  for (int v = 0; v < V; ++v) f0[v] = s[v].lo - s[v].c, A[v] = AF[v] = vdouble{};
+  vdouble kv{};
+  for (int k = 0; k < ns; ++k, kv += 1.0) {
+    for (int v = 0; v < V; ++v) {
+      const vdouble f = fmadd(kv, s[v].step, f0[v]);
+      const vdouble al = simd::alpha_of_t(f - f * f);
+      A[v] += al;
+      AF[v] = fmadd(al, f, AF[v]);
+    }
+  }
+  const double w = 1.0 / ns;
+  for (int v = 0; v < V; ++v) {
+    // The mean of the fractions is the particle's own (the points are centred on it).
+    const vdouble a = A[v] * w, bf = (s[v].lo + 0.5 * (ns - 1) * s[v].step - s[v].c) - AF[v] * w;
+    o[v] = {a, 1.0 - a - bf, bf};
+  }
 }
 
 // The weights of a vector of particles: W0..2 = <alpha> in c, <(1-alpha) S> at nodes c
@@ -127,61 +156,87 @@ int subpoint_weights(std::size_t n, const double* __restrict x, const double* __
   constexpr int V = 2, K = V * kLanes;  // particles per block
   const SpreadScale scale(inv, ns);
   mixed.clear();
-  Wx.clear();
   std::fill(far, far + n, 0);
-  thread_local std::vector<int> rest;  // positions in `mixed` for general_weights
-  rest.clear();
-  for (std::size_t q = 0; q < n; q += K) {
-    // The last block from a padded copy.
-    const std::size_t m = std::min<std::size_t>(K, n - q);
-    const bool full = m == static_cast<std::size_t>(K);
-    alignas(64) double xs[K], ls[K], w[3][K];
-    alignas(64) int cs[K];
+  // Which particles keep their sub-points in their cell (`own`), reach one neighbour
+  // inside the grid (`two`), or neither (`rest`): a vector at a time. The mixed ones are
+  // listed in `mixed` (two and rest are positions in it).
+  thread_local std::vector<int> own_tls, two_tls, rest_tls;
+  std::vector<int>&own = own_tls, &two = two_tls, &rest = rest_tls;  // one TLS lookup
+  own.clear(), two.clear(), rest.clear();
+  for (std::size_t q = 0; q < n; q += kLanes) {
+    const std::size_t m = std::min<std::size_t>(kLanes, n - q);
+    alignas(64) double xs[kLanes], ls[kLanes];
+    alignas(64) int cs[kLanes];
     const double *px = x + q, *pl = len + q;
     const int* pc = cell + q;
-    if (!full) {
-      for (int j = 0; j < K; ++j) {
+    if (m < static_cast<std::size_t>(kLanes)) {  // the last block from a padded copy
+      for (int j = 0; j < kLanes; ++j) {
         const std::size_t r = q + std::min<std::size_t>(j, m - 1);
         xs[j] = x[r], ls[j] = len[r], cs[j] = cell[r];
       }
       px = xs, pl = ls, pc = cs;
     }
-    Spread s[V];
-    vdouble side[V];
-    Weights o[V];
-    for (int v = 0; v < V; ++v) {
-      s[v] = spread(px + v * kLanes, pl + v * kLanes, pc + v * kLanes, x0, inv, scale);
-      side[v] = s[v].lo < s[v].c ? splat(-1.0) : splat(1.0);
-    }
-    weights<V>(s, side, ns, o);
-    for (int v = 0; v < V; ++v) {
-      const int at = v * kLanes;
-      double* w0 = full ? W + q + at : w[0] + at;
-      double* w1 = full ? W + n + q + at : w[1] + at;
-      double* w2 = full ? W + 2 * n + q + at : w[2] + at;
-      simd::store(w0, o[v].w[0]), simd::store(w1, o[v].w[1]), simd::store(w2, o[v].w[2]);
-      // Particles with sub-points outside c: listed with their neighbour weights, and
-      // those not in c and one neighbour inside the grid again for general_weights.
-      const vdouble lo = s[v].lo, hi = lo + (ns - 1) * s[v].step, c = s[v].c;
-      const unsigned lanes = (1u << std::min<std::size_t>(kLanes, m - std::min<std::size_t>(m, at))) - 1;
-      const unsigned other = ~simd::bits((lo >= c) & (hi < c + 1.0)) & lanes;
-      if (!other) continue;
-      const unsigned two = simd::bits((lo >= simd::max(c - 1.0, vdouble{})) & (hi < c + 2.0) &
-                                      (hi < top)) &
-                           ~(simd::bits(lo < c) & simd::bits(hi >= c + 1.0));
-      alignas(64) double wx[4][kLanes];
-      for (int i = 0; i < 4; ++i) simd::store(wx[i], o[v].x[i]);
-      for (unsigned b = other; b; b &= b - 1) {
-        const int j = __builtin_ctz(b);
-        if (!(two >> j & 1)) rest.push_back(static_cast<int>(mixed.size()));
-        mixed.push_back(static_cast<int>(q + at + j));
-        for (int i = 0; i < 4; ++i) Wx.push_back(wx[i][j]);
+    const Spread sp = spread(px, pl, pc, x0, inv, scale);
+    const vdouble lo = sp.lo, hi = lo + (ns - 1) * sp.step, c = sp.c;
+    const unsigned mine = simd::bits((lo >= c) & (hi < c + 1.0));
+    const unsigned in_two = simd::bits((lo >= simd::max(c - 1.0, vdouble{})) & (hi < c + 2.0) & (hi < top)) &
+                            ~(simd::bits(lo < c) & simd::bits(hi >= c + 1.0));
+    for (std::size_t j = 0; j < m; ++j) {
+      const int id = static_cast<int>(q + j);
+      if (mine >> j & 1) {
+        own.push_back(id);
+      } else {
+        (in_two >> j & 1 ? two : rest).push_back(static_cast<int>(mixed.size()));
+        mixed.push_back(id);
       }
     }
-    if (!full) {
-      std::copy(w[0], w[0] + m, W + q);
-      std::copy(w[1], w[1] + m, W + n + q);
-      std::copy(w[2], w[2] + m, W + 2 * n + q);
+  }
+  Wx.assign(4 * mixed.size(), 0.0);
+  // K particles of a list at a time, copied together (the last block padded).
+  alignas(64) double xs[K], ls[K];
+  alignas(64) int cs[K];
+  auto stage = [&](const std::vector<int>& list, std::size_t b, const std::vector<int>* via) {
+    const std::size_t m = std::min<std::size_t>(K, list.size() - b);
+    for (int j = 0; j < K; ++j) {
+      const int at = list[b + std::min<std::size_t>(j, m - 1)];
+      const std::size_t q = static_cast<std::size_t>(via ? (*via)[static_cast<std::size_t>(at)] : at);
+      xs[j] = x[q], ls[j] = len[q], cs[j] = cell[q];
+    }
+    Spread s[V];
+    for (int v = 0; v < V; ++v) s[v] = spread(xs + v * kLanes, ls + v * kLanes, cs + v * kLanes, x0, inv, scale);
+    return std::pair{m, std::to_array(s)};
+  };
+  for (std::size_t b = 0; b < own.size(); b += K) {
+    const auto [m, s] = stage(own, b, nullptr);
+    OwnSums o[V];
+    own_sums<V>(s.data(), ns, o);
+    alignas(64) double w[3][K];
+    for (int v = 0; v < V; ++v) {
+      simd::store(w[0] + v * kLanes, o[v].w0);
+      simd::store(w[1] + v * kLanes, o[v].w1);
+      simd::store(w[2] + v * kLanes, o[v].w2);
+    }
+    for (std::size_t j = 0; j < m; ++j) {
+      const std::size_t q = static_cast<std::size_t>(own[b + j]);
+      W[q] = w[0][j], W[n + q] = w[1][j], W[2 * n + q] = w[2][j];
+    }
+  }
+  for (std::size_t b = 0; b < two.size(); b += K) {
+    const auto [m, s] = stage(two, b, &mixed);
+    vdouble side[V];
+    Weights o[V];
+    for (int v = 0; v < V; ++v) side[v] = s[v].lo < s[v].c ? splat(-1.0) : splat(1.0);
+    weights<V>(s.data(), side, ns, o);
+    alignas(64) double w[3][K], wx[4][K];
+    for (int v = 0; v < V; ++v) {
+      for (int i = 0; i < 3; ++i) simd::store(w[i] + v * kLanes, o[v].w[i]);
+      for (int i = 0; i < 4; ++i) simd::store(wx[i] + v * kLanes, o[v].x[i]);
+    }
+    for (std::size_t j = 0; j < m; ++j) {
+      const std::size_t k = static_cast<std::size_t>(two[b + j]);
+      const std::size_t q = static_cast<std::size_t>(mixed[k]);
+      W[q] = w[0][j], W[n + q] = w[1][j], W[2 * n + q] = w[2][j];
+      for (int i = 0; i < 4; ++i) Wx[4 * k + i] = wx[i][j];
     }
   }
   return general_weights(rest, mixed, x, len, cell, x0, inv, top, ns, n, W, far, Wx.data());
