@@ -158,15 +158,16 @@ using Lookup = vint;
 #endif
 }
 
-// alpha of eq. 3.27 as a function of t = f (1 - f): alpha = 0.5 (4 t)^{3/2} = 4 t sqrt(t).
-// Two ways, the faster one by machine (alpha_of_t):
+// alpha of eq. 3.27 at the fraction f: with t = f (1 - f), alpha = 0.5 (4 t)^{3/2} =
+// 4 t sqrt(t). t as f (1 - f): 1 - f is exact near f = 1, where f - f^2 would cancel.
+// Two ways, the faster one by machine (alpha):
 //
 // alpha_series: without the divider. y the estimate of 1/sqrt(t) and e = 1 - t y^2
 // (|e| < 8e-4), 1/sqrt(t) = y (1 - e)^{-1/2}, whose series to e^5 leaves 4e-20: within a
 // few ulp of the correctly rounded formula. t is clamped below at 1e-30 (alpha there is
 // below 1e-44: zero to the precision of anything it is added to).
-[[gnu::always_inline]] inline vdouble alpha_series(vdouble t) {
-  t = max(t, splat(1e-30));
+[[gnu::always_inline]] inline vdouble alpha_series(vdouble f) {
+  const vdouble t = max(f * (1.0 - f), splat(1e-30));
   const vdouble y = rsqrt_estimate(t);
   const vdouble ty = t * y;  // ~ sqrt(t)
   const vdouble e = splat(1.0) - ty * y;
@@ -179,19 +180,19 @@ using Lookup = vint;
   return (t * ty) * fmadd(e4, p45, fmadd(e2, p23, p01));
 }
 
-// alpha_sqrt: the SIMD square root. t may round a hair below zero at a cell's end: clamped.
-[[gnu::always_inline]] inline vdouble alpha_sqrt(vdouble t) {
-  t = max(t, vdouble{});
+// alpha_sqrt: the SIMD square root. t may come a hair below zero at a cell's end: clamped.
+[[gnu::always_inline]] inline vdouble alpha_sqrt(vdouble f) {
+  const vdouble t = max(f * (1.0 - f), vdouble{});
   return (4.0 * t) * sqrt(t);
 }
 
 // AVX-512 cores (Zen 4) take the series; with only the 12-bit float estimate to start
 // from, the divider is faster (Zen 3: 2.3 against 3.4 cycles per value).
-[[gnu::always_inline]] inline vdouble alpha_of_t(vdouble t) {
+[[gnu::always_inline]] inline vdouble alpha(vdouble f) {
 #if defined(__AVX512F__)
-  return alpha_series(t);
+  return alpha_series(f);
 #else
-  return alpha_sqrt(t);
+  return alpha_sqrt(f);
 #endif
 }
 

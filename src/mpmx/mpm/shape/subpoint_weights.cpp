@@ -56,7 +56,7 @@ template <int V>
   for (int k = 0; k < ns; ++k, kv += 1.0) {
     for (int v = 0; v < V; ++v) {
       const vdouble f = fmadd(kv, s[v].step, f0[v]);
-      const vdouble al = simd::alpha_of_t(f - f * f);
+      const vdouble al = simd::alpha(f);
       A[v] += al;
       AF[v] = fmadd(al, f, AF[v]);
     }
@@ -91,7 +91,7 @@ template <int V>
       const vdouble fc = fmadd(kv, s[v].step, f0[v]);  // fraction in the particle's cell
       const auto out = (fc < 0.0) | (fc >= 1.0);
       const vdouble f = out ? fc - side[v] : fc;  // in the sub-point's own cell
-      const vdouble al = simd::alpha_of_t(f - f * f), alf = al * f;
+      const vdouble al = simd::alpha(f), alf = al * f;
       A[v] += al, AF[v] += alf, F[v] += f;
       An[v] += out ? al : zero;
       AFn[v] += out ? alf : zero;
