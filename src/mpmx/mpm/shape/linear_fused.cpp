@@ -277,6 +277,7 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
   // 1/dx throughout, applied per node, and q is not read.
   const bool plain = no_viscous_pressure && lc.inside;
   const int* cell = lc.cell.data();
+  bool summed = false;  // by the vector sums, where the build has them
 #if defined(__AVX2__)
   if (ordered) {
     auto sums = [&]<bool Inside, bool Viscous>() {
@@ -285,19 +286,19 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
     if (plain) sums.template operator()<true, false>();
     else if (no_viscous_pressure) sums.template operator()<false, false>();
     else sums.template operator()<false, true>();
-  } else
+    summed = true;
+  }
 #endif
-  if (plain) {
+  if (!summed && plain)
     cell_sums<5>(cell, n, ordered, stride, S, [&](std::size_t q, double* out) {
       mass_fields(m[q], v[q], frac[q], out);
       out[4] = vol[q] * sig[q];
     });
-  } else {
+  else if (!summed)
     cell_sums<5>(cell, n, ordered, stride, S, [&](std::size_t q, double* out) {
       mass_fields(m[q], v[q], frac[q], out);
       out[4] = vol[q] * (sig[q] - qv[q]) * grad[q];
     });
-  }
   node_mass_momentum(S, stride, cells, g);
   // The force is +V sigma/dx from cell i and -V sigma/dx from cell i-1 (G = -1/dx, +1/dx).
   const double* __restrict S4 = S + 4 * stride + kPad;

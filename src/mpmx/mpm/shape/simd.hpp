@@ -1,8 +1,8 @@
 #pragma once
 // The vector width of the build and the few operations the 1-D kernels need on it,
 // written once for AVX-512 (8 doubles), AVX (4) and SSE2 (2) with GCC's vector types.
-// Arithmetic on `vdouble` is element-wise; the build does not contract a * b + c, so
-// fused multiply-adds are asked for by name.
+// Arithmetic on `vdouble` is element-wise. GCC may fuse a * b + c on its own (as in
+// scalar C++ code) or not; where the kernels rely on one rounding, fmadd asks for it.
 
 #include <cstring>
 #if defined(__SSE2__)
