@@ -55,7 +55,6 @@ namespace {
   using simd::vmask;
   constexpr int K = simd::kLanes;
   const vdouble zero{}, vtop = simd::splat(top), vinv = simd::splat(inv);
-  const simd::vint last = simd::vint{} + (static_cast<int>(top) - 1);
   vmask outside{}, past{};
   std::size_t q = 0;
   for (; q + K <= n; q += K) {
@@ -64,10 +63,11 @@ namespace {
     const vmask in = (xi >= zero) & (xi <= vtop);
     past |= ~in;
     const vdouble xc = simd::min(simd::max(xi, zero), vtop);
-    simd::vint ci = __builtin_convertvector(xc, simd::vint);  // xc >= 0: floor
-    ci = ci < last ? ci : last;
+    // xc >= 0: truncation is floor; the last cell takes the grid's end.
+    const vdouble cc = simd::to_double(simd::to_int(simd::min(xc, vtop - 1.0)));
+    const simd::vint ci = simd::to_int(cc);
     std::memcpy(cell + q, &ci, sizeof ci);
-    simd::store(frac + q, xc - __builtin_convertvector(ci, vdouble));
+    simd::store(frac + q, xc - cc);
     simd::store(grad + q, in ? vinv : zero);
   }
   int out1 = simd::bits(outside) != 0, past1 = simd::bits(past) != 0;

@@ -35,6 +35,26 @@ using vint = int __attribute__((vector_size(4 * kLanes)));
 }
 [[gnu::always_inline]] inline vdouble splat(double a) { return vdouble{} + a; }
 
+// Truncation to int and back, one instruction each where the machine has it.
+[[gnu::always_inline]] inline vint to_int(vdouble a) {
+#if defined(__AVX512F__)
+  return (vint)_mm512_cvttpd_epi32((__m512d)a);
+#elif defined(__AVX__)
+  return (vint)_mm256_cvttpd_epi32((__m256d)a);
+#else
+  return __builtin_convertvector(a, vint);
+#endif
+}
+[[gnu::always_inline]] inline vdouble to_double(vint a) {
+#if defined(__AVX512F__)
+  return (vdouble)_mm512_cvtepi32_pd((__m256i)a);
+#elif defined(__AVX__)
+  return (vdouble)_mm256_cvtepi32_pd((__m128i)a);
+#else
+  return __builtin_convertvector(a, vdouble);
+#endif
+}
+
 // A lane mask (a comparison's result: all ones or zero per lane) as bits, lane k at bit k.
 using vmask = long long __attribute__((vector_size(8 * kLanes)));
 [[gnu::always_inline]] inline unsigned bits(vmask m) {
