@@ -38,7 +38,7 @@ using vint = int __attribute__((vector_size(4 * kLanes)));
 // Truncation to int and back, one instruction each where the machine has it.
 [[gnu::always_inline]] inline vint to_int(vdouble a) {
 #if defined(__AVX512F__)
-  return (vint)_mm512_cvttpd_epi32((__m512d)a);
+  return (vint)_mm512_maskz_cvttpd_epi32(0xFF, (__m512d)a);  // maskz: GCC 12 warns on the plain form
 #elif defined(__AVX__)
   return (vint)_mm256_cvttpd_epi32((__m256d)a);
 #else
@@ -47,7 +47,7 @@ using vint = int __attribute__((vector_size(4 * kLanes)));
 }
 [[gnu::always_inline]] inline vdouble to_double(vint a) {
 #if defined(__AVX512F__)
-  return (vdouble)_mm512_cvtepi32_pd((__m256i)a);
+  return (vdouble)_mm512_maskz_cvtepi32_pd(0xFF, (__m256i)a);
 #elif defined(__AVX__)
   return (vdouble)_mm256_cvtepi32_pd((__m128i)a);
 #else
