@@ -1,13 +1,13 @@
 // DDMP weights averaged over each particle's sub-points (eqs. 3.31, 6.1-6.3): the cost of
 // `ddmp_subpoints` is almost all here, one alpha (eq. 3.27) per sub-point per step.
 //
-// A particle's evenly spaced sub-points lie in its cell c and at most one neighbour
-// (all but a few), or not. The first kind go a vector of particles at a time, every
-// sub-point in registers: sums of alpha, alpha f and f over the sub-points, in all and
-// in the neighbour, give the three weights of each cell, as <(1-alpha) f> =
-// <f> - <alpha f> and <(1-alpha)(1-f)> = <1> - <alpha> - <(1-alpha) f>. The rest
-// (past a grid end, three cells or further) go point by point as the stencil path's
-// evaluate_ddmp_subpoints.
+// The particles are sorted by where their evenly spaced sub-points lie: all in the
+// particle's cell c (most of them), in c and one neighbour inside the grid, or neither.
+// The first two kinds go a vector of particles at a time, every sub-point in registers:
+// sums of alpha, alpha f and f (per cell for the second kind) give the three weights of
+// a cell, as <(1-alpha) f> = <f> - <alpha f> and <(1-alpha)(1-f)> = <1> - <alpha> -
+// <(1-alpha) f>. The rest (past a grid end, three cells or further) go point by point
+// as the stencil path's evaluate_ddmp_subpoints.
 
 #include <algorithm>
 #include <array>
