@@ -15,34 +15,6 @@ namespace mpmx::mpm::shape {
 
 using namespace fused;
 
-// out = sqrt(in) elementwise, in >= 0. The square root is most of the cost of the DDMP
-// weights (alpha, eq. 3.27), and the divider takes many cycles per vector. With AVX-512:
-// the 14-bit reciprocal square root and two Newton steps (14 -> 28 -> 56 bits), then
-// sqrt(in) = in * (1 / sqrt(in)): within an ulp or two of the correctly rounded root. Otherwise
-// the SIMD square root (std::sqrt keeps errno's slow path in a loop and stops it
-// vectorising; the SIMD one is the same correctly rounded IEEE operation).
-void fused::sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out) {
-  std::size_t q = 0;
-#if defined(__AVX512F__)
-  const __m512d half = _mm512_set1_pd(0.5), three_halves = _mm512_set1_pd(1.5);
-  const __m512d zero = _mm512_setzero_pd();
-  for (; q + 8 <= n; q += 8) {
-    const __m512d r = _mm512_loadu_pd(in + q);
-    const __mmask8 pos = _mm512_cmp_pd_mask(r, zero, _CMP_GT_OQ);
-    const __m512d hr = _mm512_mul_pd(half, r);
-    __m512d y = _mm512_maskz_rsqrt14_pd(pos, r);
-    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
-    y = _mm512_mul_pd(y, _mm512_fnmadd_pd(_mm512_mul_pd(hr, y), y, three_halves));
-    _mm512_storeu_pd(out + q, _mm512_maskz_mul_pd(pos, r, y));
-  }
-#elif defined(__AVX__)
-  for (; q + 4 <= n; q += 4) _mm256_storeu_pd(out + q, _mm256_sqrt_pd(_mm256_loadu_pd(in + q)));
-#elif defined(__SSE2__)
-  for (; q + 2 <= n; q += 2) _mm_storeu_pd(out + q, _mm_sqrt_pd(_mm_loadu_pd(in + q)));
-#endif
-  for (; q < n; ++q) out[q] = std::sqrt(in[q]);
-}
-
 namespace {
 
 // Pass 1 kernel: cell, fraction and gradient of every particle (as cell_of); returns
@@ -148,6 +120,12 @@ template <int NS, class Fields>
   }
 }
 
+// The mass and momentum fields of every point: m, m f, m v, m v f.
+[[gnu::always_inline]] inline void mass_fields(double m, double v, double f, double* out) {
+  const double mv = m * v;
+  out[0] = m, out[1] = m * f, out[2] = mv, out[3] = mv * f;
+}
+
 #if defined(__AVX2__)
 // Pass 2 of plain MPM for particles in cell order: where four or more particles share a
 // cell (all of them at four or more per cell), their fields go four at a time in vectors,
@@ -192,8 +170,9 @@ template <bool Inside, bool Viscous>
     const __m128d h4 = _mm_add_pd(_mm256_castpd256_pd128(a4), _mm256_extractf128_pd(a4, 1));
     r[4] = _mm_cvtsd_f64(_mm_add_sd(h4, _mm_unpackhi_pd(h4, h4)));
     for (; cell[q] == c; ++q) {  // cell[n] = -1 ends the last run
-      const double mv = m[q] * v[q];
-      r[0] += m[q], r[1] += m[q] * frac[q], r[2] += mv, r[3] += mv * frac[q];
+      double b[4];
+      mass_fields(m[q], v[q], frac[q], b);
+      for (int k = 0; k < 4; ++k) r[k] += b[k];
       const double e = vol[q] * (Viscous ? sig[q] - qv[q] : sig[q]);
       r[4] += Inside ? e : e * grad[q];
     }
@@ -205,12 +184,6 @@ template <bool Inside, bool Viscous>
   zero_to(stride);
 }
 #endif
-
-// The mass and momentum fields of every point: m, m f, m v, m v f.
-[[gnu::always_inline]] inline void mass_fields(double m, double v, double f, double* out) {
-  const double mv = m * v;
-  out[0] = m, out[1] = m * f, out[2] = mv, out[3] = mv * f;
-}
 
 // Pass 3, mass and momentum: node i takes (sum m - sum m f) of cell i and sum m f of
 // cell i-1 (S = 1 - f, f). Written, not accumulated: no fill, no chain through memory.
@@ -240,21 +213,19 @@ void ddmp_table(const Grid<1>& g, LinearCells& lc) {
 
 
 // DDMP weights of every particle: W[0..2] = alpha, (1-alpha)(1-f), (1-alpha) f at the
-// particle (as ddmp_alpha and add_ddmp_gradient). `tmp`: 2 n scratch.
-[[gnu::noinline]] void ddmp_weights(std::size_t n, const double* __restrict frac, double* __restrict W,
-                  double* __restrict tmp) {
-  double* __restrict r = tmp;
-  double* __restrict sq = tmp + n;
-#pragma omp simd
-  for (std::size_t q = 0; q < n; ++q) r[q] = 4.0 * frac[q] * (1.0 - frac[q]);
-  sqrt_all(n, r, sq);
-#pragma omp simd
-  for (std::size_t q = 0; q < n; ++q) {
-    const double f = frac[q], a = 0.5 * r[q] * sq[q], b = 1.0 - a;
+// particle (as ddmp_alpha and add_ddmp_gradient), a vector at a time.
+[[gnu::noinline]] void ddmp_weights(std::size_t n, const double* __restrict frac, double* __restrict W) {
+  constexpr int K = simd::kLanes;
+  std::size_t q = 0;
+  for (; q + K <= n; q += K) {
+    const simd::vdouble f = simd::load(frac + q), a = simd::alpha(f), b = 1.0 - a;
+    simd::store(W + q, a), simd::store(W + n + q, b * (1.0 - f)), simd::store(W + 2 * n + q, b * f);
+  }
+  for (; q < n; ++q) {
+    const double f = frac[q], a = ddmp_alpha(f), b = 1.0 - a;
     W[q] = a, W[n + q] = b * (1.0 - f), W[2 * n + q] = b * f;
   }
 }
-
 
 }  // namespace
 
@@ -540,8 +511,7 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   const int* __restrict cell = lc.cell.data();
   const double* __restrict x = p.x[0].data();
   if (!sub) {
-    grow(lc.val, 2 * n);
-    ddmp_weights(n, lc.frac.data(), lc.W.data(), lc.val.data());
+    ddmp_weights(n, lc.frac.data(), lc.W.data());
   } else {
     lc.far.resize(n);
     if (subpoint_weights(n, x, p.length[0].data(), cell, x0, inv, top, subpoints, lc.W.data(),

@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "mpmx/mpm/shape/hat.hpp"
+
 namespace mpmx::mpm::shape::fused {
 
 // Cell (clamped to the grid, eq. 3.9: the flat continuation past the ends) and fraction
@@ -20,12 +22,6 @@ inline Cell cell_of(double xi, double top) {
   return {cc, xc - cc};
 }
 
-// alpha of eq. 3.27 (as ddmp_alpha); q >= 0 always, so sqrt needs no errno path.
-inline double alpha(double f) {
-  const double q = 4.0 * f * (1.0 - f);
-  return 0.5 * q * __builtin_sqrt(q);
-}
-
 // A sub-point's cell and weights (eq. 3.31 at xi): as add_ddmp_gradient.
 struct SubWeights {
   int c;
@@ -33,7 +29,7 @@ struct SubWeights {
 };
 inline SubWeights sub_weights(double xi, double top) {
   const Cell cf = cell_of(xi, top);
-  const double a = alpha(cf.f), b = 1.0 - a;
+  const double a = ddmp_alpha(cf.f), b = 1.0 - a;
   return {static_cast<int>(cf.c), a, b * (1.0 - cf.f), b * cf.f};
 }
 
@@ -43,9 +39,6 @@ inline double sub_h(double len, double inv, int n_sub) {
   return 0.5 * len * inv * (1.0 - 1.0 / n_sub);
 }
 inline double sub_step(double h, int n_sub) { return n_sub > 1 ? 2.0 * h / (n_sub - 1) : 0.0; }
-
-// out = sqrt(in) elementwise, in >= 0, to within an ulp or two (linear_fused.cpp).
-void sqrt_all(std::size_t n, const double* __restrict in, double* __restrict out);
 
 // DDMP weights of every particle averaged over its n_sub sub-points (eqs. 3.31, 6.1-6.3),
 // summed per cell of the sub-points relative to the particle's cell c. In plain DDMP's

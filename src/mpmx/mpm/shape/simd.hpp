@@ -28,11 +28,6 @@ using vint = int __attribute__((vector_size(4 * kLanes)));
   return v;
 }
 [[gnu::always_inline]] inline void store(double* p, vdouble v) { std::memcpy(p, &v, sizeof v); }
-[[gnu::always_inline]] inline vdouble load_cells(const int* p) {
-  vint c;
-  std::memcpy(&c, p, sizeof c);
-  return __builtin_convertvector(c, vdouble);
-}
 [[gnu::always_inline]] inline vdouble splat(double a) { return vdouble{} + a; }
 
 // Truncation to int and back, one instruction each where the machine has it.
@@ -53,6 +48,11 @@ using vint = int __attribute__((vector_size(4 * kLanes)));
 #else
   return __builtin_convertvector(a, vdouble);
 #endif
+}
+[[gnu::always_inline]] inline vdouble load_cells(const int* p) {
+  vint c;
+  std::memcpy(&c, p, sizeof c);
+  return to_double(c);
 }
 
 // A lane mask (a comparison's result: all ones or zero per lane) as bits, lane k at bit k.

@@ -33,8 +33,7 @@ struct Spread {
 };
 struct SpreadScale {
   double h, step;  // half width and spacing per unit length
-  SpreadScale(double inv, int ns)
-      : h(0.5 * inv * (1.0 - 1.0 / ns)), step(ns > 1 ? 2.0 * h / (ns - 1) : 0.0) {}
+  SpreadScale(double inv, int ns) : h(sub_h(1.0, inv, ns)), step(sub_step(h, ns)) {}
 };
 [[gnu::always_inline]] inline Spread spread(const double* x, const double* len, const int* cell,
                                             double x0, double inv, const SpreadScale& k) {
