@@ -506,18 +506,16 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   const bool ordered = locate_all(g, p, lc);
   const int nw = 3;  // weights per particle (sub-points in other cells: lc.Wx)
   lc.W.resize(nw * n);
-  lc.mixed.clear();
-  lc.stray.clear();
   const int* __restrict cell = lc.cell.data();
   const double* __restrict x = p.x[0].data();
   if (!sub) {
+    lc.mixed.clear();
+    lc.stray.clear();
     ddmp_weights(n, lc.frac.data(), lc.W.data());
   } else {
-    lc.far.resize(n);
-    if (subpoint_weights(n, x, p.length[0].data(), cell, x0, inv, top, subpoints, lc.W.data(),
-                         lc.far.data(), lc.mixed, lc.Wx))
-      for (std::size_t q = 0; q < n; ++q)
-        if (lc.far[q]) lc.stray.push_back(static_cast<int>(q));
+    lc.Wx.resize(4 * n);
+    subpoint_weights(n, x, p.length[0].data(), cell, x0, inv, top, subpoints, lc.W.data(), lc.Wx.data(),
+                     lc.mixed, lc.stray);
   }
   // Pass 2 over m, m f, m v, m v f and V sigma times each weight.
   const std::size_t stride = static_cast<std::size_t>(cells) + 2 * kPad;
@@ -558,12 +556,12 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
 #pragma omp simd
   for (int j = 0; j <= cells; ++j) Q[j] = B[j] + C[j - 1];
   // Sub-points in the neighbouring cells (their cells and nodes lie inside the grid).
-  for (std::size_t k = 0; k < lc.mixed.size(); ++k) {
-    const int q = lc.mixed[k], c = cell[q];
+  const double* __restrict Wx = lc.Wx.data();
+  for (const int q : lc.mixed) {
+    const int c = cell[q];
     const double vs = vol[q] * (sig[q] - qv[q]);
-    const double* wx = lc.Wx.data() + 4 * k;
-    SA[c - 1] += vs * wx[0], SA[c + 1] += vs * wx[1];
-    Q[c - 1] += vs * wx[2], Q[c + 2] += vs * wx[3];
+    SA[c - 1] += vs * Wx[q], SA[c + 1] += vs * Wx[n + q];
+    Q[c - 1] += vs * Wx[2 * n + q], Q[c + 2] += vs * Wx[3 * n + q];
   }
   const double* __restrict dm = lc.dm.data() + Grid<1>::ghost;
   const double* __restrict dc = lc.dc.data() + Grid<1>::ghost;
@@ -700,10 +698,11 @@ double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool mi
   const double check = ddmp_g2p_kernel(lc, n, dtm, inv, p);
   double* L = p.grad_v[0].data();
   const double* __restrict dgp = lc.vg.data() + 1;  // dg with a zero each side
-  for (std::size_t k = 0; k < lc.mixed.size(); ++k) {
-    const int q = lc.mixed[k], c = lc.cell[q];
-    const double* wx = lc.Wx.data() + 4 * k;
-    L[q] += inv * (wx[0] * dgp[c - 1] + wx[1] * dgp[c + 1]) + (wx[2] * Dn[c - 1] + wx[3] * Dn[c + 2]);
+  const double* __restrict Wx = lc.Wx.data();
+  for (const int q : lc.mixed) {
+    const int c = lc.cell[q];
+    L[q] += inv * (Wx[q] * dgp[c - 1] + Wx[n + q] * dgp[c + 1]) +
+            (Wx[2 * n + q] * Dn[c - 1] + Wx[3 * n + q] * Dn[c + 2]);
   }
   for (std::size_t k = 0; k < lc.stray.size(); ++k) L[lc.stray[k]] += extra[k];
   return check;

@@ -31,10 +31,9 @@ struct LinearCells {
   // the sub-points in the particle's cell (see subpoint_weights), so that
   // Gbar_i = sum alpha dS_i/dx + sum_j D_ji Q_j.
   std::vector<double> W;
-  std::vector<int> mixed;  // particles with sub-points in a neighbouring cell,
-  std::vector<double> Wx;  // and their weights there (4 each)
-  std::vector<int> far;    // sub-points more than a cell from the particle's cell
-  std::vector<int> stray;  // those particles
+  std::vector<double> Wx;  // weights in the neighbouring cells (Wx[k * n + q], k = 0..3)
+  std::vector<int> mixed;  // particles with sub-points in a neighbouring cell
+  std::vector<int> stray;  // particles with sub-points more than a cell from theirs
   std::vector<double> dm, dc, dp;  // D_{j,j-1}, D_{j,j}, D_{j,j+1} by node storage index
   std::vector<double> vg, Dv;      // scratch: per-cell alpha sums / padded dg; Q / D v
 };

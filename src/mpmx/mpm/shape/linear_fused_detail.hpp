@@ -43,13 +43,13 @@ inline double sub_step(double h, int n_sub) { return n_sub > 1 ? 2.0 * h / (n_su
 // DDMP weights of every particle averaged over its n_sub sub-points (eqs. 3.31, 6.1-6.3),
 // summed per cell of the sub-points relative to the particle's cell c. In plain DDMP's
 // layout, W[k * n + q] for k = 0..2 = <alpha> in cell c and <(1-alpha) S_j> at nodes c and
-// c+1 (S_j the hat of the sub-point's cell). Particles with sub-points in cells c-1 or
-// c+1 are listed in `mixed`, in particle order, with Wx[4 k ..] = <alpha> in cells c-1,
-// c+1 and <(1-alpha) S_j> at nodes c-1, c+2 for the k-th. Returns whether any particle
-// has a sub-point further away (far[q]; those are handled apart). subpoint_weights.cpp.
-int subpoint_weights(std::size_t n, const double* __restrict x, const double* __restrict len,
-                     const int* __restrict cell, double x0, double inv, double top, int ns,
-                     double* __restrict W, int* __restrict far, std::vector<int>& mixed,
-                     std::vector<double>& Wx);
+// c+1 (S_j the hat of the sub-point's cell); Wx[k * n + q] for k = 0..3 = <alpha> in cells
+// c-1, c+1 and <(1-alpha) S_j> at nodes c-1, c+2 (zero for a particle that keeps its
+// sub-points in c). `mixed` lists, in order, the particles with sub-points outside c;
+// `stray` those with one more than a cell away (handled apart). subpoint_weights.cpp.
+void subpoint_weights(std::size_t n, const double* __restrict x, const double* __restrict len,
+                      const int* __restrict cell, double x0, double inv, double top, int ns,
+                      double* __restrict W, double* __restrict Wx, std::vector<int>& mixed,
+                      std::vector<int>& stray);
 
 }  // namespace mpmx::mpm::shape::fused
