@@ -61,7 +61,22 @@ void step(State<1>& s, double dt) {
     const int sub = scheme == Scheme::ddmp ? 0 : opt.subpoints;
     shape::p2g_ddmp(g, p, s.small_strain, sub, s.linear_cells, g);
     solve_grid(g, s.boundary, s.time, dt, s.tallies);
-    s.finite_check = shape::g2p_ddmp(g, s.linear_cells, dt, s.move, s.midpoint_gradient, sub, p);
+    // A linear elastic solid without viscosity: work, volumes and stress in the g2p pass
+    // where it can, the same algorithm as finish().
+    shape::ElasticUpdate update;
+    const bool elastic = s.viscosity <= 0.0 && typeid(*s.material) == typeid(material::LinearElastic<1>);
+    if (elastic) {
+      update.small_strain = s.small_strain;
+      update.youngs_modulus = static_cast<const material::LinearElastic<1>&>(*s.material).youngs_modulus();
+    }
+    s.finite_check = shape::g2p_ddmp(g, s.linear_cells, dt, s.move, s.midpoint_gradient, sub, p,
+                                     elastic ? &update : nullptr);
+    if (update.done) {
+      s.tallies.stress_work += update.stress_work;
+      s.time += dt;
+      ++s.step;
+      return;
+    }
   } else {
     return step_stencil(s, dt);
   }

@@ -88,17 +88,14 @@ inline void grow(std::vector<double>& v, std::size_t size) {
 // Zero cells padding the per-cell sums at each end (DDMP sub-points reach two cells over).
 constexpr std::size_t kPad = 2;
 
-// Pass 2: per-cell sums of NS per-particle fields (m, m f, m v, m v f, then the force
-// fields), fields(q, out) computing particle q's, into S[f * stride + cell + kPad]
-// (zeroed here; pads stay zero). Each cell's sum is taken in particle order.
+// Pass 2 for particles out of cell order: per-cell sums of NS per-particle fields (m, m f,
+// m v, m v f, then the force fields), fields(q, out) computing particle q's, into
+// S[f * stride + cell + kPad] (zeroed here; pads stay zero). Run by run (consecutive
+// particles of one cell), each run added to its cell once.
 template <int NS, class Fields>
-[[gnu::always_inline]] inline void cell_sums(const int* __restrict cell, std::size_t n, bool ordered,
-                                             std::size_t stride, double* __restrict S, Fields fields) {
+[[gnu::always_inline]] inline void cell_sums(const int* __restrict cell, std::size_t n, std::size_t stride,
+                                             double* __restrict S, Fields fields) {
   std::fill(S, S + NS * stride, 0.0);
-  // Run by run (consecutive particles of one cell): the sums of different runs are
-  // independent, so the core overlaps them, and each run touches memory once. In cell
-  // order, which 1-D particles keep unless they cross, a run is the whole cell and is
-  // stored; otherwise runs are added.
   double a[NS], b[NS];
   std::size_t q = 0;
   while (q < n) {
@@ -110,13 +107,8 @@ template <int NS, class Fields>
       for (int f = 0; f < NS; ++f) a[f] += b[f];
     }
     double* s = S + c + kPad;
-    if (ordered) {
 #pragma GCC unroll 16
-      for (int f = 0; f < NS; ++f) s[f * stride] = a[f];
-    } else {
-#pragma GCC unroll 16
-      for (int f = 0; f < NS; ++f) s[f * stride] += a[f];
-    }
+    for (int f = 0; f < NS; ++f) s[f * stride] += a[f];
   }
 }
 
@@ -126,64 +118,45 @@ template <int NS, class Fields>
   out[0] = m, out[1] = m * f, out[2] = mv, out[3] = mv * f;
 }
 
-#if defined(__AVX2__)
-// Pass 2 of plain MPM for particles in cell order: where four or more particles share a
-// cell (all of them at four or more per cell), their fields go four at a time in vectors,
-// summed down the run and across the lanes at its end; the rest of a run one by one.
-// Fewer instructions than cell_sums per particle; the order of the additions differs
-// (the same to round-off). Fields: m, m f, m v, m v f, and V (sigma - q) G, with q
-// left out without viscosity and G (1/dx) applied later where every particle is inside.
-template <bool Inside, bool Viscous>
-[[gnu::noinline]] void mpm_sums_ordered(const int* __restrict cell, std::size_t n, std::size_t stride,
-                                        double* __restrict S, const double* __restrict m,
-                                        const double* __restrict v, const double* __restrict frac,
-                                        const double* __restrict vol, const double* __restrict sig,
-                                        const double* __restrict qv, const double* __restrict grad) {
-  // Every cell is written once, in order: a run's sums, or zero in the gaps between runs
-  // and in the pads (no fill beforehand).
+// Pass 2 for particles in cell order: where a vector's worth of particles share a cell
+// (all of them at four or more per cell with AVX2), their fields go a vector at a time,
+// summed down the run and across the lanes at its end; the rest of a run one by one. Every
+// cell is written once, in order: a run's sums, or zero in the gaps between runs and in
+// the pads (no fill). The order of the additions differs from cell_sums (the same to
+// round-off). vfields(q, out): the NS fields of particles q .. q + kLanes - 1;
+// sfields(q, out): one particle's.
+template <int NS, class VFields, class SFields>
+[[gnu::always_inline]] inline void ordered_sums(const int* __restrict cell, std::size_t n, std::size_t stride,
+                                                double* __restrict S, VFields vfields, SFields sfields) {
+  using simd::vdouble;
+  constexpr int K = simd::kLanes, NG = (NS + 3) / 4;  // lane sums go four fields at a time
   std::size_t next = 0;  // the first cell of S not yet written
   auto zero_to = [&](std::size_t end) {
-    for (int k = 0; k < 5; ++k) std::fill(S + k * stride + next, S + k * stride + end, 0.0);
+    for (int f = 0; f < NS; ++f) std::fill(S + f * stride + next, S + f * stride + end, 0.0);
   };
   std::size_t q = 0;
   while (q < n) {
     const int c = cell[q];
-    __m256d a0 = _mm256_setzero_pd(), a1 = a0, a2 = a0, a3 = a0, a4 = a0;
-    for (; q + 3 < n && cell[q + 3] == c; q += 4) {
-      const __m256d mq = _mm256_loadu_pd(m + q), f = _mm256_loadu_pd(frac + q);
-      const __m256d mv = _mm256_mul_pd(mq, _mm256_loadu_pd(v + q));
-      a0 = _mm256_add_pd(a0, mq);
-      a1 = _mm256_add_pd(a1, _mm256_mul_pd(mq, f));
-      a2 = _mm256_add_pd(a2, mv);
-      a3 = _mm256_add_pd(a3, _mm256_mul_pd(mv, f));
-      const __m256d sq = Viscous ? _mm256_sub_pd(_mm256_loadu_pd(sig + q), _mm256_loadu_pd(qv + q))
-                                 : _mm256_loadu_pd(sig + q);
-      const __m256d e = _mm256_mul_pd(_mm256_loadu_pd(vol + q), sq);
-      a4 = _mm256_add_pd(a4, Inside ? e : _mm256_mul_pd(e, _mm256_loadu_pd(grad + q)));
+    vdouble a[4 * NG] = {};
+    for (; q + K - 1 < n && cell[q + K - 1] == c; q += K) {  // in order: all K in cell c
+      vdouble b[NS];
+      vfields(q, b);
+      for (int f = 0; f < NS; ++f) a[f] += b[f];
     }
-    // Across the lanes: (sum a0, sum a1, sum a2, sum a3) and sum a4.
-    const __m256d h01 = _mm256_hadd_pd(a0, a1), h23 = _mm256_hadd_pd(a2, a3);
-    const __m256d t = _mm256_add_pd(_mm256_permute2f128_pd(h01, h23, 0x20),
-                                    _mm256_permute2f128_pd(h01, h23, 0x31));
-    alignas(32) double r[5];
-    _mm256_store_pd(r, t);
-    const __m128d h4 = _mm_add_pd(_mm256_castpd256_pd128(a4), _mm256_extractf128_pd(a4, 1));
-    r[4] = _mm_cvtsd_f64(_mm_add_sd(h4, _mm_unpackhi_pd(h4, h4)));
+    double r[4 * NG];
+    for (int g = 0; g < NG; ++g) simd::sum4(a + 4 * g, r + 4 * g);
     for (; cell[q] == c; ++q) {  // cell[n] = -1 ends the last run
-      double b[4];
-      mass_fields(m[q], v[q], frac[q], b);
-      for (int k = 0; k < 4; ++k) r[k] += b[k];
-      const double e = vol[q] * (Viscous ? sig[q] - qv[q] : sig[q]);
-      r[4] += Inside ? e : e * grad[q];
+      double b[NS];
+      sfields(q, b);
+      for (int f = 0; f < NS; ++f) r[f] += b[f];
     }
     const std::size_t at = static_cast<std::size_t>(c) + kPad;
     if (at > next) zero_to(at);
-    for (int k = 0; k < 5; ++k) S[k * stride + at] = r[k];
+    for (int f = 0; f < NS; ++f) S[f * stride + at] = r[f];
     next = at + 1;
   }
   zero_to(stride);
 }
-#endif
 
 // Pass 3, mass and momentum: node i takes (sum m - sum m f) of cell i and sum m f of
 // cell i-1 (S = 1 - f, f). Written, not accumulated: no fill, no chain through memory.
@@ -248,28 +221,40 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
   // 1/dx throughout, applied per node, and q is not read.
   const bool plain = no_viscous_pressure && lc.inside;
   const int* cell = lc.cell.data();
-  bool summed = false;  // by the vector sums, where the build has them
-#if defined(__AVX2__)
   if (ordered) {
+    using simd::load;
+    using simd::vdouble;
+    // The force field: V (sigma - q) G, with q left out without viscosity and G (1/dx)
+    // applied per node where every particle is inside.
     auto sums = [&]<bool Inside, bool Viscous>() {
-      mpm_sums_ordered<Inside, Viscous>(cell, n, stride, S, m, v, frac, vol, sig, qv, grad);
+      ordered_sums<5>(
+          cell, n, stride, S,
+          [&](std::size_t q, vdouble* o) {
+            const vdouble mq = load(m + q), f = load(frac + q), mv = mq * load(v + q);
+            o[0] = mq, o[1] = mq * f, o[2] = mv, o[3] = mv * f;
+            const vdouble e = load(vol + q) * (Viscous ? load(sig + q) - load(qv + q) : load(sig + q));
+            o[4] = Inside ? e : e * load(grad + q);
+          },
+          [&](std::size_t q, double* o) {
+            mass_fields(m[q], v[q], frac[q], o);
+            const double e = vol[q] * (Viscous ? sig[q] - qv[q] : sig[q]);
+            o[4] = Inside ? e : e * grad[q];
+          });
     };
     if (plain) sums.template operator()<true, false>();
     else if (no_viscous_pressure) sums.template operator()<false, false>();
     else sums.template operator()<false, true>();
-    summed = true;
-  }
-#endif
-  if (!summed && plain)
-    cell_sums<5>(cell, n, ordered, stride, S, [&](std::size_t q, double* out) {
+  } else if (plain) {
+    cell_sums<5>(cell, n, stride, S, [&](std::size_t q, double* out) {
       mass_fields(m[q], v[q], frac[q], out);
       out[4] = vol[q] * sig[q];
     });
-  else if (!summed)
-    cell_sums<5>(cell, n, ordered, stride, S, [&](std::size_t q, double* out) {
+  } else {
+    cell_sums<5>(cell, n, stride, S, [&](std::size_t q, double* out) {
       mass_fields(m[q], v[q], frac[q], out);
       out[4] = vol[q] * (sig[q] - qv[q]) * grad[q];
     });
+  }
   node_mass_momentum(S, stride, cells, g);
   // The force is +V sigma/dx from cell i and -V sigma/dx from cell i-1 (G = -1/dx, +1/dx).
   const double* __restrict S4 = S + 4 * stride + kPad;
@@ -535,8 +520,21 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
 #pragma GCC unroll 8
     for (int k = 0; k < NW; ++k) out[4 + k] = vs * W[k * n + q];
   };
-  cell_sums<7>(cell, n, ordered, stride, S,
-               [&](std::size_t q, double* out) { fields.template operator()<3>(q, out); });
+  if (ordered) {
+    using simd::load;
+    using simd::vdouble;
+    ordered_sums<7>(
+        cell, n, stride, S,
+        [&](std::size_t q, vdouble* o) {
+          const vdouble mq = load(m + q), f = load(frac + q), mv = mq * load(v + q);
+          o[0] = mq, o[1] = mq * f, o[2] = mv, o[3] = mv * f;
+          const vdouble vs = load(vol + q) * (load(sig + q) - load(qv + q));
+          for (int k = 0; k < 3; ++k) o[4 + k] = vs * load(W + k * n + q);
+        },
+        [&](std::size_t q, double* out) { fields.template operator()<3>(q, out); });
+  } else {
+    cell_sums<7>(cell, n, stride, S, [&](std::size_t q, double* out) { fields.template operator()<3>(q, out); });
+  }
   node_mass_momentum(S, stride, cells, g);
   // f_i = -sum_p V sigma Gbar_ip: the alpha part gives +-V sigma alpha/dx at the two
   // nodes of the point's cell; the rest is -sum_j D_ji Q_j with Q_j the hat-weighted
@@ -595,64 +593,104 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
 namespace {
 
 // grad v from the DDMP weights: alpha dv/dx in the point's cell plus the hat-weighted
-// nodal gradients Dv (eq. 3.31); sub-points in other cells are added by the caller.
-[[gnu::noinline]] double ddmp_g2p_kernel(const LinearCells& lc, std::size_t n, double dtm,
-                                         double inv, Particles<1>& p) {
+// nodal gradients Dv (eq. 3.31), with sub-points (Sub) their parts in the neighbouring
+// cells too (Wx; sub-points further away are added by the caller). With Update, what
+// finish() does next for a linear elastic solid without viscosity, in the same pass (as
+// g2p_elastic_ordered): the stress work, V and the domain length *= 1 + dt L, eps += dt L,
+// sigma = E eps.
+template <bool Sub, bool Update, bool SmallStrain>
+[[gnu::noinline]] double ddmp_g2p_kernel(const LinearCells& lc, std::size_t n, double dt, double dtm,
+                                         double inv, double E, Particles<1>& p, double& work) {
+  using simd::fmadd;
+  using simd::load;
+  using simd::store;
+  using simd::vdouble;
+  constexpr int K = simd::kLanes;
   const double* __restrict d0 = lc.d0.data();
   const double* __restrict dd = lc.dd.data();
   const double* __restrict g0 = lc.g0.data();
   const double* __restrict dg = lc.dg.data();
+  const double* __restrict dgp = lc.vg.data() + 1;               // dg with a zero each side
   const double* __restrict Dn = lc.Dv.data() + Grid<1>::ghost;  // by node, -1 .. cells + 1
   const int* __restrict cell = lc.cell.data();
   const double* __restrict frac = lc.frac.data();
   const double* __restrict W = lc.W.data();
+  const double* __restrict Wx = lc.Wx.data();
   double* __restrict x = p.x[0].data();
   double* __restrict v = p.v[0].data();
   double* __restrict L = p.grad_v[0].data();
-  double check = 0.0;
-  std::size_t q0 = 0;
-  // In cell order: a vector of particles whose cells lie within its width of the first
-  // take the tables by one load and a permute each (as g2p_elastic_ordered).
-  if (lc.ordered) {
-    using simd::fmadd;
-    using simd::vdouble;
-    constexpr int K = simd::kLanes;
-    const vdouble vinv = simd::splat(inv), vdtm = simd::splat(dtm);
-    vdouble vcheck{};
-    for (; q0 + K <= n; q0 += K) {
-      const int c0 = cell[q0];
-      if (cell[q0 + K - 1] - c0 >= K) break;  // the rest one by one
-      const simd::Lookup idx = simd::lookup_index(cell + q0, c0);
-      auto at = [&](const double* t) { return simd::lookup(t + c0, idx); };
-      const vdouble f = simd::load(frac + q0);
-      const vdouble vq = simd::load(v + q0) + fmadd(f, at(dd), at(d0));
-      const vdouble dgc = at(dg);
-      const vdouble xq = fmadd(vdtm, fmadd(f, dgc, at(g0)), simd::load(x + q0));
-      simd::store(v + q0, vq), simd::store(x + q0, xq);
-      const vdouble Lq = fmadd(simd::load(W + q0), vinv * dgc,
-                               fmadd(simd::load(W + n + q0), at(Dn), simd::load(W + 2 * n + q0) * at(Dn + 1)));
-      simd::store(L + q0, Lq);
-      vcheck += vq + xq;
-    }
-    check += simd::sum(vcheck);
-  }
-#pragma omp simd reduction(+ : check)
-  for (std::size_t q = q0; q < n; ++q) {
+  double* __restrict V = p.volume.data();
+  const double* __restrict V0 = p.volume0.data();
+  double* __restrict eps = p.strain[0].data();
+  double* __restrict sig = p.stress[0].data();
+  double* __restrict len = p.length[0].data();
+  double check = 0.0, w = 0.0;
+  auto one_particle = [&](std::size_t q) {
     const int c = cell[q];
     const double f = frac[q];
     const double vq = v[q] + (d0[c] + f * dd[c]);
     const double xq = x[q] + dtm * (g0[c] + f * dg[c]);
     v[q] = vq, x[q] = xq;
-    L[q] = W[q] * inv * dg[c] + W[n + q] * Dn[c] + W[2 * n + q] * Dn[c + 1];
+    double Lq = W[q] * inv * dg[c] + W[n + q] * Dn[c] + W[2 * n + q] * Dn[c + 1];
+    if constexpr (Sub)
+      Lq += inv * (Wx[q] * dgp[c - 1] + Wx[n + q] * dgp[c + 1]) +
+            (Wx[2 * n + q] * Dn[c - 1] + Wx[3 * n + q] * Dn[c + 2]);
+    L[q] = Lq;
     check += vq + xq;
+    if constexpr (Update) {
+      const double Vq = V[q];
+      w = fmadd1((SmallStrain ? V0[q] : Vq) * sig[q], Lq, w);
+      V[q] = Vq * fmadd1(dt, Lq, 1.0);
+      if constexpr (Sub) len[q] *= fmadd1(dt, Lq, 1.0);
+      const double e = fmadd1(dt, Lq, eps[q]);
+      eps[q] = e;
+      sig[q] = E * e;
+    }
+  };
+  std::size_t q0 = 0;
+  // In cell order: a vector of particles whose cells lie within its width of the first
+  // take the tables by one load and a permute each (as g2p_elastic_ordered).
+  if (lc.ordered) {
+    const vdouble vinv = simd::splat(inv), vdtm = simd::splat(dtm), vdt = simd::splat(dt), one = simd::splat(1.0);
+    vdouble vcheck{}, vw{};
+    for (; q0 + K <= n; q0 += K) {
+      const int c0 = cell[q0];
+      if (cell[q0 + K - 1] - c0 >= K) break;  // the rest one by one
+      const simd::Lookup idx = simd::lookup_index(cell + q0, c0);
+      auto at = [&](const double* t) { return simd::lookup(t + c0, idx); };
+      const vdouble f = load(frac + q0);
+      const vdouble vq = load(v + q0) + fmadd(f, at(dd), at(d0));
+      const vdouble dgc = at(dg);
+      const vdouble xq = fmadd(vdtm, fmadd(f, dgc, at(g0)), load(x + q0));
+      store(v + q0, vq), store(x + q0, xq);
+      vdouble Lq = fmadd(load(W + q0), vinv * dgc, fmadd(load(W + n + q0), at(Dn), load(W + 2 * n + q0) * at(Dn + 1)));
+      if constexpr (Sub)
+        Lq += vinv * (load(Wx + q0) * at(dgp - 1) + load(Wx + n + q0) * at(dgp + 1)) +
+              (load(Wx + 2 * n + q0) * at(Dn - 1) + load(Wx + 3 * n + q0) * at(Dn + 2));
+      store(L + q0, Lq);
+      vcheck += vq + xq;
+      if constexpr (Update) {
+        const vdouble Vq = load(V + q0), grow = fmadd(vdt, Lq, one);
+        vw = fmadd((SmallStrain ? load(V0 + q0) : Vq) * load(sig + q0), Lq, vw);
+        store(V + q0, Vq * grow);
+        if constexpr (Sub) store(len + q0, load(len + q0) * grow);
+        const vdouble e = fmadd(vdt, Lq, load(eps + q0));
+        store(eps + q0, e);
+        store(sig + q0, E * e);
+      }
+    }
+    check += simd::sum(vcheck);
+    w += simd::sum(vw);
   }
+  for (std::size_t q = q0; q < n; ++q) one_particle(q);
+  work = w;
   return check;
 }
 
 }  // namespace
 
 double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
-                int subpoints, Particles<1>& p) {
+                int subpoints, Particles<1>& p, ElasticUpdate* update) {
   cell_tables(g, lc, midpoint);
   const std::size_t n = p.size();
   const int cells = g.cells[0];
@@ -675,9 +713,9 @@ double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool mi
 #pragma omp simd
   for (std::size_t j = 1; j < last; ++j)
     Dv[j] = dm[j] * vg[j - 1] + dc[j] * vg[j] + dp[j] * vg[j + 1];
-  // dg with a zero pad each side, for sub-points in the neighbouring cells.
-  lc.vg.resize(cells + 2);
-  lc.vg.front() = lc.vg.back() = 0.0;
+  // dg with a zero pad each side (and eight-wide loads from any cell), for sub-points in
+  // the neighbouring cells.
+  lc.vg.assign(static_cast<std::size_t>(cells) + 10, 0.0);
   std::copy(lc.dg.begin(), lc.dg.begin() + cells, lc.vg.begin() + 1);
   const double* __restrict Dn = Dv + Grid<1>::ghost;
   // Sub-points more than a cell away, before x moves: their part of grad v.
@@ -695,15 +733,21 @@ double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool mi
     extra[k] = e / subpoints;
   }
   const double dtm = move ? dt : 0.0;
-  const double check = ddmp_g2p_kernel(lc, n, dtm, inv, p);
-  double* L = p.grad_v[0].data();
-  const double* __restrict dgp = lc.vg.data() + 1;  // dg with a zero each side
-  const double* __restrict Wx = lc.Wx.data();
-  for (const int q : lc.mixed) {
-    const int c = lc.cell[q];
-    L[q] += inv * (Wx[q] * dgp[c - 1] + Wx[n + q] * dgp[c + 1]) +
-            (Wx[2 * n + q] * Dn[c - 1] + Wx[3 * n + q] * Dn[c + 2]);
+  // The elastic update in the same pass unless strays add to grad v afterwards.
+  const bool fused = update && lc.stray.empty();
+  const double E = update ? update->youngs_modulus : 0.0;
+  double w = 0.0;
+  auto kernel = [&]<bool Sub>() {
+    if (!fused) return ddmp_g2p_kernel<Sub, false, false>(lc, n, dt, dtm, inv, E, p, w);
+    return update->small_strain ? ddmp_g2p_kernel<Sub, true, true>(lc, n, dt, dtm, inv, E, p, w)
+                                : ddmp_g2p_kernel<Sub, true, false>(lc, n, dt, dtm, inv, E, p, w);
+  };
+  const double check = subpoints > 0 ? kernel.template operator()<true>() : kernel.template operator()<false>();
+  if (fused) {
+    update->stress_work += dt * w;
+    update->done = true;
   }
+  double* L = p.grad_v[0].data();
   for (std::size_t k = 0; k < lc.stray.size(); ++k) L[lc.stray[k]] += extra[k];
   return check;
 }

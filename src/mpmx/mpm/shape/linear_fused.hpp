@@ -53,12 +53,24 @@ double g2p_linear_elastic(const Grid<1>& g, LinearCells& lc, double dt, bool mov
                           bool small_strain, bool no_viscous_pressure, double E, Particles<1>& p,
                           double& stress_work);
 
+// What step() does after g2p for a 1-D linear elastic solid without artificial viscosity
+// (stress work with the stress of the forces, eq. 4.11, over V0 for small strain; V and a
+// tracked domain length *= 1 + dt L; eps += dt L; sigma = E eps), for a g2p that can do it
+// in its own pass: `done` says whether it did, and `stress_work` gains dt * work.
+struct ElasticUpdate {
+  bool small_strain = false;
+  double youngs_modulus = 0.0;
+  double stress_work = 0.0;
+  bool done = false;
+};
+
 // DDMP (subpoints == 0) and DDMP with sub-points (eqs. 4.5-4.6, 6.1-6.3): the hat for S
 // at the particle, the modified gradient of eq. 3.31 at the particle or averaged over
 // `subpoints` points spread evenly in the particle domain.
 void p2g_ddmp(const Grid<1>& g, const Particles<1>& p, bool reference_volume, int subpoints,
               LinearCells& lc, Grid<1>& out);
+// `update` (may be null): the elastic update to do in the same pass where it can.
 double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
-                int subpoints, Particles<1>& p);
+                int subpoints, Particles<1>& p, ElasticUpdate* update = nullptr);
 
 }  // namespace mpmx::mpm::shape

@@ -114,6 +114,25 @@ using Lookup = vint;
   return s;
 }
 
+// The lane sums of four vectors into out[0..3]: where the machine has AVX, by pairwise
+// adds across the vectors (a transpose as it goes), one store for the four.
+[[gnu::always_inline]] inline void sum4(const vdouble* a, double* out) {
+#if defined(__AVX512F__)
+  __m256d h[4];
+  for (int j = 0; j < 4; ++j)
+    h[j] = _mm256_add_pd(_mm512_castpd512_pd256((__m512d)a[j]), _mm512_extractf64x4_pd((__m512d)a[j], 1));
+#elif defined(__AVX__)
+  const __m256d h[4] = {(__m256d)a[0], (__m256d)a[1], (__m256d)a[2], (__m256d)a[3]};
+#endif
+#if defined(__AVX__)
+  const __m256d h01 = _mm256_hadd_pd(h[0], h[1]), h23 = _mm256_hadd_pd(h[2], h[3]);
+  _mm256_storeu_pd(out, _mm256_add_pd(_mm256_permute2f128_pd(h01, h23, 0x20),
+                                      _mm256_permute2f128_pd(h01, h23, 0x31)));
+#else
+  for (int j = 0; j < 4; ++j) out[j] = sum(a[j]);
+#endif
+}
+
 // a * b + c, rounded once where the machine has FMA.
 [[gnu::always_inline]] inline vdouble fmadd(vdouble a, vdouble b, vdouble c) {
 #if defined(__AVX512F__)
