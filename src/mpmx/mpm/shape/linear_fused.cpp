@@ -18,43 +18,40 @@ using namespace fused;
 namespace {
 
 // Pass 1 kernel: cell, fraction and gradient of every particle (as cell_of); returns
-// whether any lies more than a cell past the grid, and in `edge` whether any lies past
-// its ends at all (a zero gradient there). A vector at a time: the flags are lane masks
-// until the end, and the cell goes to int and back once.
+// whether any lies more than a cell past the grid (or is NaN), and in `edge` whether any
+// lies past its ends at all (a zero gradient there). A vector at a time: the flags come
+// from the running least and largest position and a running sum (NaN stays NaN), and the
+// cell goes to int and back once.
 [[gnu::noinline]] int locate_kernel(std::size_t n, const double* __restrict x, double x0, double inv, double top,
                   int* __restrict cell, double* __restrict frac, double* __restrict grad, int& edge) {
   using simd::vdouble;
-  using simd::vmask;
   constexpr int K = simd::kLanes;
   const vdouble zero{}, vtop = simd::splat(top), vinv = simd::splat(inv);
-  vmask outside{}, past{};
+  vdouble lo = simd::splat(0.0), hi = lo, total{};
   std::size_t q = 0;
   for (; q + K <= n; q += K) {
     const vdouble xi = (simd::load(x + q) - x0) * inv;
-    outside |= (xi < -1.0) | (xi > top + 1.0) | (xi != xi);
-    const vmask in = (xi >= zero) & (xi <= vtop);
-    past |= ~in;
+    lo = simd::min(lo, xi), hi = simd::max(hi, xi), total += xi;
     const vdouble xc = simd::min(simd::max(xi, zero), vtop);
     // xc >= 0: truncation is floor; the last cell takes the grid's end.
-    const vdouble cc = simd::to_double(simd::to_int(simd::min(xc, vtop - 1.0)));
-    const simd::vint ci = simd::to_int(cc);
+    const simd::vint ci = simd::to_int(simd::min(xc, vtop - 1.0));
     std::memcpy(cell + q, &ci, sizeof ci);
-    simd::store(frac + q, xc - cc);
-    simd::store(grad + q, in ? vinv : zero);
+    simd::store(frac + q, xc - simd::to_double(ci));
+    simd::store(grad + q, (xi >= zero) & (xi <= vtop) ? vinv : zero);
   }
-  int out1 = simd::bits(outside) != 0, past1 = simd::bits(past) != 0;
+  double least = 0.0, largest = 0.0, sum = simd::sum(total);
+  for (int k = 0; k < K; ++k) least = std::min(least, lo[k]), largest = std::max(largest, hi[k]);
   for (; q < n; ++q) {
     const double xi = (x[q] - x0) * inv;
-    out1 |= !(xi >= -1.0) | !(xi <= top + 1.0);  // `|`, not `||`: no branch
+    least = std::min(least, xi), largest = std::max(largest, xi), sum += xi;
     const bool in = (xi >= 0.0) & (xi <= top);
-    past1 |= !in;
     const Cell cf = cell_of(xi, top);
     cell[q] = static_cast<int>(cf.c);
     frac[q] = cf.f;
     grad[q] = in ? inv : 0.0;
   }
-  edge = past1;
-  return out1;
+  edge = least < 0.0 || largest > top;
+  return least < -1.0 || largest > top + 1.0 || sum != sum;
 }
 
 // Pass 1: locate every particle (stops the run for one off the grid). Returns whether
@@ -134,18 +131,38 @@ template <int NS, class VFields, class SFields>
   auto zero_to = [&](std::size_t end) {
     for (int f = 0; f < NS; ++f) std::fill(S + f * stride + next, S + f * stride + end, 0.0);
   };
+  const vdouble lane = simd::lane_index();
   std::size_t q = 0;
   while (q < n) {
     const int c = cell[q];
     vdouble a[4 * NG] = {};
-    for (; q + K - 1 < n && cell[q + K - 1] == c; q += K) {  // in order: all K in cell c
+    double r[4 * NG];
+    bool tail = false;  // the run reaches the last vector's worth of particles
+    for (;;) {
+      if (q + K > n) {
+        tail = true;
+        break;
+      }
+      // In order, the particles of cell c are a prefix of the vector: all of it, or
+      // `same` of them (the rest masked off).
+      const unsigned in_c = simd::bits(simd::load_cells(cell + q) == static_cast<double>(c));
       vdouble b[NS];
       vfields(q, b);
-      for (int f = 0; f < NS; ++f) a[f] += b[f];
+      if (in_c == (1u << K) - 1) {
+        for (int f = 0; f < NS; ++f) a[f] += b[f];
+        q += K;
+        if (cell[q] != c) break;  // cell[n] = -1
+        continue;
+      }
+      const int same = __builtin_ctz(~in_c);
+      const simd::vmask keep = lane < static_cast<double>(same);
+      for (int f = 0; f < NS; ++f) a[f] += keep ? b[f] : vdouble{};
+      q += static_cast<std::size_t>(same);
+      break;
     }
-    double r[4 * NG];
-    for (int g = 0; g < NG; ++g) simd::sum4(a + 4 * g, r + 4 * g);
-    for (; cell[q] == c; ++q) {  // cell[n] = -1 ends the last run
+    for (int g = 0; g < NS / 4; ++g) simd::sum4(a + 4 * g, r + 4 * g);
+    for (int f = NS / 4 * 4; f < NS; ++f) r[f] = simd::sum(a[f]);
+    for (; tail && cell[q] == c; ++q) {  // cell[n] = -1 ends the last run
       double b[NS];
       sfields(q, b);
       for (int f = 0; f < NS; ++f) r[f] += b[f];

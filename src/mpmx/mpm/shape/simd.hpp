@@ -133,6 +133,13 @@ using Lookup = vint;
 #endif
 }
 
+// The lane numbers 0, 1, ..., kLanes - 1.
+[[gnu::always_inline]] inline vdouble lane_index() {
+  vdouble v;
+  for (int k = 0; k < kLanes; ++k) v[k] = k;
+  return v;
+}
+
 // a * b + c, rounded once where the machine has FMA.
 [[gnu::always_inline]] inline vdouble fmadd(vdouble a, vdouble b, vdouble c) {
 #if defined(__AVX512F__)
