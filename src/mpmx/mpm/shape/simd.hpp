@@ -119,8 +119,12 @@ using Lookup = vint;
 [[gnu::always_inline]] inline void sum4(const vdouble* a, double* out) {
 #if defined(__AVX512F__)
   __m256d h[4];
-  for (int j = 0; j < 4; ++j)
-    h[j] = _mm256_add_pd(_mm512_castpd512_pd256((__m512d)a[j]), _mm512_extractf64x4_pd((__m512d)a[j], 1));
+  for (int j = 0; j < 4; ++j) {  // the halves by copy: GCC 12 warns on the 512-bit extracts
+    __m256d lo, hi;
+    std::memcpy(&lo, &a[j], sizeof lo);
+    std::memcpy(&hi, reinterpret_cast<const char*>(&a[j]) + sizeof lo, sizeof hi);
+    h[j] = _mm256_add_pd(lo, hi);
+  }
 #elif defined(__AVX__)
   const __m256d h[4] = {(__m256d)a[0], (__m256d)a[1], (__m256d)a[2], (__m256d)a[3]};
 #endif
