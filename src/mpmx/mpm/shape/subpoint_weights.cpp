@@ -25,9 +25,9 @@ using simd::splat;
 using simd::vdouble;
 using simd::vmask;
 
-// Where a vector of particles' sub-points start (in cell units, relative to the cell c)
-// and how far apart they are, as sub_h and sub_step but with the constant factors taken
-// first (no divide per vector; the points move by an ulp or so).
+// Where a vector of particles' sub-points start and how far apart they are, in cell units
+// (c the particles' cells), as sub_h and sub_step but with the constant factors taken first
+// (no divide per vector; the points move by an ulp or so).
 struct Spread {
   vdouble c, lo, step;
 };
