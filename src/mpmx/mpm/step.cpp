@@ -41,44 +41,33 @@ void step(State<1>& s, double dt) {
   auto& p = s.particles;
   const SchemeOptions& opt = s.shape->options();
   const Scheme scheme = opt.scheme;
-  if (scheme == Scheme::mpm) {                        // fused hat + transfers, same algorithm
+  if (scheme != Scheme::mpm && scheme != Scheme::ddmp && scheme != Scheme::ddmp_subpoints)
+    return step_stencil(s, dt);
+  // Fused hat + transfers (mpm; DDMP, eq. 3.31, sub-points eqs. 6.1-6.3): the same
+  // algorithm as the stencil path. For a linear elastic solid without viscosity, g2p
+  // also does what finish() does, in its own pass, where it can.
+  shape::ElasticUpdate update;
+  const bool elastic = s.viscosity <= 0.0 && typeid(*s.material) == typeid(material::LinearElastic<1>);
+  if (elastic) {
+    update.small_strain = s.small_strain;
+    update.youngs_modulus = static_cast<const material::LinearElastic<1>&>(*s.material).youngs_modulus();
+  }
+  shape::ElasticUpdate* fuse = elastic ? &update : nullptr;
+  if (scheme == Scheme::mpm) {
     shape::p2g_linear(g, p, s.small_strain, s.viscosity <= 0.0, s.linear_cells, g);
     solve_grid(g, s.boundary, s.time, dt, s.tallies);
-    // A linear elastic solid without viscosity: g2p, work, volumes and stress in one
-    // pass, the same algorithm as finish().
-    if (s.viscosity <= 0.0 && typeid(*s.material) == typeid(material::LinearElastic<1>)) {
-      const auto& mat = static_cast<const material::LinearElastic<1>&>(*s.material);
-      s.finite_check = shape::g2p_linear_elastic(g, s.linear_cells, dt, s.move, s.midpoint_gradient,
-                                                 s.small_strain, true, mat.youngs_modulus(), p,
-                                                 s.tallies.stress_work);
-      s.time += dt;
-      ++s.step;
-      return;
-    }
-    s.finite_check = shape::g2p_linear(g, s.linear_cells, dt, s.move, s.midpoint_gradient, p);
-  } else if (scheme == Scheme::ddmp || scheme == Scheme::ddmp_subpoints) {
-    // Fused DDMP (eq. 3.31, sub-points eqs. 6.1-6.3): same algorithm as the stencil path.
+    s.finite_check = shape::g2p_linear(g, s.linear_cells, dt, s.move, s.midpoint_gradient, p, fuse);
+  } else {
     const int sub = scheme == Scheme::ddmp ? 0 : opt.subpoints;
     shape::p2g_ddmp(g, p, s.small_strain, sub, s.linear_cells, g);
     solve_grid(g, s.boundary, s.time, dt, s.tallies);
-    // A linear elastic solid without viscosity: work, volumes and stress in the g2p pass
-    // where it can, the same algorithm as finish().
-    shape::ElasticUpdate update;
-    const bool elastic = s.viscosity <= 0.0 && typeid(*s.material) == typeid(material::LinearElastic<1>);
-    if (elastic) {
-      update.small_strain = s.small_strain;
-      update.youngs_modulus = static_cast<const material::LinearElastic<1>&>(*s.material).youngs_modulus();
-    }
-    s.finite_check = shape::g2p_ddmp(g, s.linear_cells, dt, s.move, s.midpoint_gradient, sub, p,
-                                     elastic ? &update : nullptr);
-    if (update.done) {
-      s.tallies.stress_work += update.stress_work;
-      s.time += dt;
-      ++s.step;
-      return;
-    }
-  } else {
-    return step_stencil(s, dt);
+    s.finite_check = shape::g2p_ddmp(g, s.linear_cells, dt, s.move, s.midpoint_gradient, sub, p, fuse);
+  }
+  if (update.done) {
+    s.tallies.stress_work += update.stress_work;
+    s.time += dt;
+    ++s.step;
+    return;
   }
   finish(s, dt);
 }

@@ -109,9 +109,10 @@ template <int NS, class Fields>
   }
 }
 
-// The mass and momentum fields of every point: m, m f, m v, m v f.
-[[gnu::always_inline]] inline void mass_fields(double m, double v, double f, double* out) {
-  const double mv = m * v;
+// The mass and momentum fields of a point, or of a vector of them: m, m f, m v, m v f.
+template <class T>
+[[gnu::always_inline]] inline void mass_fields(T m, T v, T f, T* out) {
+  const T mv = m * v;
   out[0] = m, out[1] = m * f, out[2] = mv, out[3] = mv * f;
 }
 
@@ -247,8 +248,7 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
       ordered_sums<5>(
           cell, n, stride, S,
           [&](std::size_t q, vdouble* o) {
-            const vdouble mq = load(m + q), f = load(frac + q), mv = mq * load(v + q);
-            o[0] = mq, o[1] = mq * f, o[2] = mv, o[3] = mv * f;
+            mass_fields(load(m + q), load(v + q), load(frac + q), o);
             const vdouble e = load(vol + q) * (Viscous ? load(sig + q) - load(qv + q) : load(sig + q));
             o[4] = Inside ? e : e * load(grad + q);
           },
@@ -310,34 +310,36 @@ void cell_tables(const Grid<1>& g, LinearCells& lc, bool midpoint) {
 
 }  // namespace
 
-double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
-                  Particles<1>& p) {
-  cell_tables(g, lc, midpoint);
-  const std::size_t n = p.size();
-  const double* __restrict d0 = lc.d0.data();
-  const double* __restrict dd = lc.dd.data();
-  const double* __restrict g0 = lc.g0.data();
-  const double* __restrict dg = lc.dg.data();
-  const int* __restrict cell = lc.cell.data();
-  const double* __restrict frac = lc.frac.data();
-  const double* __restrict grad = lc.grad.data();
-  double* __restrict x = p.x[0].data();
-  double* __restrict v = p.v[0].data();
-  double* __restrict L = p.grad_v[0].data();
-  const double dtm = move ? dt : 0.0;
-  double check = 0.0;
-  for (std::size_t q = 0; q < n; ++q) {
-    const int c = cell[q];
-    const double f = frac[q];
-    v[q] += d0[c] + f * dd[c];
-    x[q] += dtm * (g0[c] + f * dg[c]);
-    L[q] = dg[c] * grad[q];
-    check += v[q] + x[q];
-  }
-  return check;
-}
-
 namespace {
+
+// What finish() does after g2p for a linear elastic solid without viscosity, for particle
+// q (T = double) or the vector of particles from q on (T = vdouble), given their grad v,
+// L: V and, with Length, the domain length *= 1 + dt L; eps += dt L (0.5 (L + L) exactly);
+// sigma = E eps. Returns V sigma as it was (over V0 for small strain), which times L is
+// the stress work rate with the stress of the forces (eq. 4.11).
+struct ElasticFields {
+  double* V;
+  const double* V0;
+  double* eps;
+  double* sig;
+  double* len;
+  explicit ElasticFields(Particles<1>& p)
+      : V(p.volume.data()), V0(p.volume0.data()), eps(p.strain[0].data()), sig(p.stress[0].data()),
+        len(p.length[0].data()) {}
+};
+template <bool SmallStrain, bool Length, class T>
+[[gnu::always_inline]] inline T elastic_update(const ElasticFields& a, std::size_t q, T L, double dt, double E) {
+  using simd::fmadd;
+  using simd::load_as;
+  const T vdt = T{} + dt, grow = fmadd(vdt, L, T{} + 1.0);
+  const T V = load_as<T>(a.V + q), Vs = (SmallStrain ? load_as<T>(a.V0 + q) : V) * load_as<T>(a.sig + q);
+  simd::store(a.V + q, V * grow);
+  if constexpr (Length) simd::store(a.len + q, load_as<T>(a.len + q) * grow);
+  const T e = fmadd(vdt, L, load_as<T>(a.eps + q));
+  simd::store(a.eps + q, e);
+  simd::store(a.sig + q, E * e);
+  return Vs;
+}
 
 // The per-cell g2p tables at every particle (pc[k * n + q] = table_k[cell[q]]), for the
 // portable kernel (g2p_elastic_ordered reads the tables directly).
@@ -365,11 +367,7 @@ template <bool SmallStrain>
   double* __restrict x = p.x[0].data();
   double* __restrict v = p.v[0].data();
   double* __restrict L = p.grad_v[0].data();
-  double* __restrict V = p.volume.data();
-  const double* __restrict V0 = p.volume0.data();
-  double* __restrict eps = p.strain[0].data();
-  double* __restrict sig = p.stress[0].data();
-  const double* __restrict qv = p.viscous_pressure.data();
+  const ElasticFields el(p);
   double check = 0.0, w = 0.0;
 #pragma omp simd reduction(+ : check, w)
   for (std::size_t q = 0; q < n; ++q) {
@@ -379,26 +377,10 @@ template <bool SmallStrain>
     const double Lq = dg[q] * grad[q];
     v[q] = vq, x[q] = xq, L[q] = Lq;
     check += vq + xq;
-    // work_and_volumes, then LinearElastic::update_stress (eps += dt 0.5 (L + L) is
-    // eps += dt L exactly).
-    const double Vq = V[q];
-    w += (SmallStrain ? V0[q] : Vq) * (sig[q] - qv[q]) * Lq;
-    V[q] = Vq * (1.0 + dt * Lq);
-    const double e = eps[q] + dt * Lq;
-    eps[q] = e;
-    sig[q] = E * e;
+    w += elastic_update<SmallStrain, false>(el, q, Lq, dt, E) * Lq;
   }
   work = w;
   return check;
-}
-
-// a * b + c for one value, rounded once where the machine has FMA (as simd::fmadd).
-inline double fmadd1(double a, double b, double c) {
-#if defined(__FMA__)
-  return std::fma(a, b, c);
-#else
-  return a * b + c;
-#endif
 }
 
 // g2p_elastic_kernel without the expanded tables, for particles in cell order and
@@ -423,27 +405,19 @@ template <bool SmallStrain, bool Inside>
   double* __restrict x = p.x[0].data();
   double* __restrict v = p.v[0].data();
   double* __restrict L = p.grad_v[0].data();
-  double* __restrict V = p.volume.data();
-  const double* __restrict V0 = p.volume0.data();
-  double* __restrict eps = p.strain[0].data();
-  double* __restrict sig = p.stress[0].data();
-  const vdouble vdt = simd::splat(dt), vdtm = simd::splat(dtm), one = simd::splat(1.0);
+  const ElasticFields el(p);
+  const vdouble vdtm = simd::splat(dtm);
   vdouble check{}, w{};
   double check1 = 0.0, w1 = 0.0;
   auto one_particle = [&](std::size_t q) {
     const int c = cell[q];
     const double f = frac[q];
-    const double vq = v[q] + fmadd1(f, T1[c], T0[c]);
-    const double xq = fmadd1(dtm, fmadd1(f, T3[c], T2[c]), x[q]);
+    const double vq = v[q] + fmadd(f, T1[c], T0[c]);
+    const double xq = fmadd(dtm, fmadd(f, T3[c], T2[c]), x[q]);
     const double Lq = T3[c] * grad[q];
     v[q] = vq, x[q] = xq, L[q] = Lq;
     check1 += vq + xq;
-    const double Vq = V[q];
-    w1 = fmadd1((SmallStrain ? V0[q] : Vq) * sig[q], Lq, w1);
-    V[q] = Vq * fmadd1(dt, Lq, 1.0);
-    const double e = fmadd1(dt, Lq, eps[q]);
-    eps[q] = e;
-    sig[q] = E * e;
+    w1 = fmadd(elastic_update<SmallStrain, false>(el, q, Lq, dt, E), Lq, w1);
   };
   std::size_t q = 0;
   for (; q + K <= n; q += K) {
@@ -460,12 +434,7 @@ template <bool SmallStrain, bool Inside>
     const vdouble Lq = dg * (Inside ? simd::splat(inv) : simd::load(grad + q));
     simd::store(v + q, vq), simd::store(x + q, xq), simd::store(L + q, Lq);
     check += vq + xq;
-    const vdouble Vq = simd::load(V + q);
-    w = fmadd((SmallStrain ? simd::load(V0 + q) : Vq) * simd::load(sig + q), Lq, w);
-    simd::store(V + q, Vq * fmadd(vdt, Lq, one));
-    const vdouble e = fmadd(vdt, Lq, simd::load(eps + q));
-    simd::store(eps + q, e);
-    simd::store(sig + q, E * e);
+    w = fmadd(elastic_update<SmallStrain, false>(el, q, Lq, dt, E), Lq, w);
   }
   for (; q < n; ++q) one_particle(q);
   work = w1 + simd::sum(w);
@@ -475,26 +444,49 @@ template <bool SmallStrain, bool Inside>
 
 }  // namespace
 
-double g2p_linear_elastic(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
-                          bool small_strain, [[maybe_unused]] bool no_viscous_pressure, double E,
-                          Particles<1>& p, double& stress_work) {
+double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
+                  Particles<1>& p, ElasticUpdate* update) {
   cell_tables(g, lc, midpoint);
   const double dtm = move ? dt : 0.0;
-  double w = 0.0;
-  if (lc.ordered && no_viscous_pressure) {
-    const double inv = g.inv_dx[0];
-    const double check =
-        small_strain ? (lc.inside ? g2p_elastic_ordered<true, true>(lc, dt, dtm, E, inv, p, w)
-                                  : g2p_elastic_ordered<true, false>(lc, dt, dtm, E, inv, p, w))
-                     : (lc.inside ? g2p_elastic_ordered<false, true>(lc, dt, dtm, E, inv, p, w)
-                                  : g2p_elastic_ordered<false, false>(lc, dt, dtm, E, inv, p, w));
-    stress_work += dt * w;
+  if (update) {
+    const double E = update->youngs_modulus;
+    double w = 0.0, check;
+    if (lc.ordered) {
+      const double inv = g.inv_dx[0];
+      check = update->small_strain
+                  ? (lc.inside ? g2p_elastic_ordered<true, true>(lc, dt, dtm, E, inv, p, w)
+                               : g2p_elastic_ordered<true, false>(lc, dt, dtm, E, inv, p, w))
+                  : (lc.inside ? g2p_elastic_ordered<false, true>(lc, dt, dtm, E, inv, p, w)
+                               : g2p_elastic_ordered<false, false>(lc, dt, dtm, E, inv, p, w));
+    } else {
+      expand_cells(lc, p.size());
+      check = update->small_strain ? g2p_elastic_kernel<true>(lc, dt, dtm, E, p, w)
+                                   : g2p_elastic_kernel<false>(lc, dt, dtm, E, p, w);
+    }
+    update->stress_work += dt * w;
+    update->done = true;
     return check;
   }
-  expand_cells(lc, p.size());
-  const double check = small_strain ? g2p_elastic_kernel<true>(lc, dt, dtm, E, p, w)
-                                    : g2p_elastic_kernel<false>(lc, dt, dtm, E, p, w);
-  stress_work += dt * w;
+  const std::size_t n = p.size();
+  const double* __restrict d0 = lc.d0.data();
+  const double* __restrict dd = lc.dd.data();
+  const double* __restrict g0 = lc.g0.data();
+  const double* __restrict dg = lc.dg.data();
+  const int* __restrict cell = lc.cell.data();
+  const double* __restrict frac = lc.frac.data();
+  const double* __restrict grad = lc.grad.data();
+  double* __restrict x = p.x[0].data();
+  double* __restrict v = p.v[0].data();
+  double* __restrict L = p.grad_v[0].data();
+  double check = 0.0;
+  for (std::size_t q = 0; q < n; ++q) {
+    const int c = cell[q];
+    const double f = frac[q];
+    v[q] += d0[c] + f * dd[c];
+    x[q] += dtm * (g0[c] + f * dg[c]);
+    L[q] = dg[c] * grad[q];
+    check += v[q] + x[q];
+  }
   return check;
 }
 
@@ -543,8 +535,7 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
     ordered_sums<7>(
         cell, n, stride, S,
         [&](std::size_t q, vdouble* o) {
-          const vdouble mq = load(m + q), f = load(frac + q), mv = mq * load(v + q);
-          o[0] = mq, o[1] = mq * f, o[2] = mv, o[3] = mv * f;
+          mass_fields(load(m + q), load(v + q), load(frac + q), o);
           const vdouble vs = load(vol + q) * (load(sig + q) - load(qv + q));
           for (int k = 0; k < 3; ++k) o[4 + k] = vs * load(W + k * n + q);
         },
@@ -611,10 +602,9 @@ namespace {
 
 // grad v from the DDMP weights: alpha dv/dx in the point's cell plus the hat-weighted
 // nodal gradients Dv (eq. 3.31), with sub-points (Sub) their parts in the neighbouring
-// cells too (Wx; sub-points further away are added by the caller). With Update, what
-// finish() does next for a linear elastic solid without viscosity, in the same pass (as
-// g2p_elastic_ordered): the stress work, V and the domain length *= 1 + dt L, eps += dt L,
-// sigma = E eps.
+// cells too (Wx; sub-points further away are added by the caller). With Update, the
+// elastic update in the same pass (elastic_update, the domain length too with sub-points),
+// its stress work in `work`.
 template <bool Sub, bool Update, bool SmallStrain>
 [[gnu::noinline]] double ddmp_g2p_kernel(const LinearCells& lc, std::size_t n, double dt, double dtm,
                                          double inv, double E, Particles<1>& p, double& work) {
@@ -636,11 +626,7 @@ template <bool Sub, bool Update, bool SmallStrain>
   double* __restrict x = p.x[0].data();
   double* __restrict v = p.v[0].data();
   double* __restrict L = p.grad_v[0].data();
-  double* __restrict V = p.volume.data();
-  const double* __restrict V0 = p.volume0.data();
-  double* __restrict eps = p.strain[0].data();
-  double* __restrict sig = p.stress[0].data();
-  double* __restrict len = p.length[0].data();
+  const ElasticFields el(p);
   double check = 0.0, w = 0.0;
   auto one_particle = [&](std::size_t q) {
     const int c = cell[q];
@@ -654,21 +640,13 @@ template <bool Sub, bool Update, bool SmallStrain>
             (Wx[2 * n + q] * Dn[c - 1] + Wx[3 * n + q] * Dn[c + 2]);
     L[q] = Lq;
     check += vq + xq;
-    if constexpr (Update) {
-      const double Vq = V[q];
-      w = fmadd1((SmallStrain ? V0[q] : Vq) * sig[q], Lq, w);
-      V[q] = Vq * fmadd1(dt, Lq, 1.0);
-      if constexpr (Sub) len[q] *= fmadd1(dt, Lq, 1.0);
-      const double e = fmadd1(dt, Lq, eps[q]);
-      eps[q] = e;
-      sig[q] = E * e;
-    }
+    if constexpr (Update) w = fmadd(elastic_update<SmallStrain, Sub>(el, q, Lq, dt, E), Lq, w);
   };
   std::size_t q0 = 0;
   // In cell order: a vector of particles whose cells lie within its width of the first
   // take the tables by one load and a permute each (as g2p_elastic_ordered).
   if (lc.ordered) {
-    const vdouble vinv = simd::splat(inv), vdtm = simd::splat(dtm), vdt = simd::splat(dt), one = simd::splat(1.0);
+    const vdouble vinv = simd::splat(inv), vdtm = simd::splat(dtm);
     vdouble vcheck{}, vw{};
     for (; q0 + K <= n; q0 += K) {
       const int c0 = cell[q0];
@@ -686,15 +664,7 @@ template <bool Sub, bool Update, bool SmallStrain>
               (load(Wx + 2 * n + q0) * at(Dn - 1) + load(Wx + 3 * n + q0) * at(Dn + 2));
       store(L + q0, Lq);
       vcheck += vq + xq;
-      if constexpr (Update) {
-        const vdouble Vq = load(V + q0), grow = fmadd(vdt, Lq, one);
-        vw = fmadd((SmallStrain ? load(V0 + q0) : Vq) * load(sig + q0), Lq, vw);
-        store(V + q0, Vq * grow);
-        if constexpr (Sub) store(len + q0, load(len + q0) * grow);
-        const vdouble e = fmadd(vdt, Lq, load(eps + q0));
-        store(eps + q0, e);
-        store(sig + q0, E * e);
-      }
+      if constexpr (Update) vw = fmadd(elastic_update<SmallStrain, Sub>(el, q0, Lq, dt, E), Lq, vw);
     }
     check += simd::sum(vcheck);
     w += simd::sum(vw);

@@ -38,21 +38,6 @@ struct LinearCells {
   std::vector<double> vg, Dv;      // scratch: per-cell alpha sums / padded dg; Q / D v
 };
 
-// `no_viscous_pressure`: every q_p is zero (no artificial viscosity).
-void p2g_linear(const Grid<1>& g, const Particles<1>& p, bool reference_volume,
-                bool no_viscous_pressure, LinearCells& lc, Grid<1>& out);
-double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
-                  Particles<1>& p);
-
-// g2p_linear followed by what step() does next for a 1-D linear elastic solid without
-// artificial viscosity, in the same pass: stress work with the stress of the forces
-// (eq. 4.11, over V0 for small strain), V *= 1 + dt L, eps += dt L, sigma = E eps.
-// Adds dt * work to `stress_work`. `no_viscous_pressure`: every q_p is zero (no
-// artificial viscosity), so the kernel need not read them.
-double g2p_linear_elastic(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
-                          bool small_strain, bool no_viscous_pressure, double E, Particles<1>& p,
-                          double& stress_work);
-
 // What step() does after g2p for a 1-D linear elastic solid without artificial viscosity
 // (stress work with the stress of the forces, eq. 4.11, over V0 for small strain; V and a
 // tracked domain length *= 1 + dt L; eps += dt L; sigma = E eps), for a g2p that can do it
@@ -63,6 +48,13 @@ struct ElasticUpdate {
   double stress_work = 0.0;
   bool done = false;
 };
+
+// `no_viscous_pressure`: every q_p is zero (no artificial viscosity).
+void p2g_linear(const Grid<1>& g, const Particles<1>& p, bool reference_volume,
+                bool no_viscous_pressure, LinearCells& lc, Grid<1>& out);
+// `update` (may be null): the elastic update, done in the same pass (always, for mpm).
+double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
+                  Particles<1>& p, ElasticUpdate* update = nullptr);
 
 // DDMP (subpoints == 0) and DDMP with sub-points (eqs. 4.5-4.6, 6.1-6.3): the hat for S
 // at the particle, the modified gradient of eq. 3.31 at the particle or averaged over

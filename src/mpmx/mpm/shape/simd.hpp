@@ -4,7 +4,9 @@
 // Arithmetic on `vdouble` is element-wise. GCC may fuse a * b + c on its own (as in
 // scalar C++ code) or not; where the kernels rely on one rounding, fmadd asks for it.
 
+#include <cmath>
 #include <cstring>
+#include <type_traits>
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -29,6 +31,15 @@ using vint = int __attribute__((vector_size(4 * kLanes)));
 }
 [[gnu::always_inline]] inline void store(double* p, vdouble v) { std::memcpy(p, &v, sizeof v); }
 [[gnu::always_inline]] inline vdouble splat(double a) { return vdouble{} + a; }
+// For code written once for a vector (T = vdouble) and for one value (T = double).
+template <class T>
+[[gnu::always_inline]] inline T load_as(const double* p) {
+  if constexpr (std::is_same_v<T, double>)
+    return *p;
+  else
+    return load(p);
+}
+[[gnu::always_inline]] inline void store(double* p, double v) { *p = v; }
 
 // Truncation to int and back, one instruction each where the machine has it.
 [[gnu::always_inline]] inline vint to_int(vdouble a) {
@@ -150,6 +161,14 @@ using Lookup = vint;
   return (vdouble)_mm512_fmadd_pd((__m512d)a, (__m512d)b, (__m512d)c);
 #elif defined(__FMA__)
   return (vdouble)_mm256_fmadd_pd((__m256d)a, (__m256d)b, (__m256d)c);
+#else
+  return a * b + c;
+#endif
+}
+
+[[gnu::always_inline]] inline double fmadd(double a, double b, double c) {
+#if defined(__FMA__)
+  return std::fma(a, b, c);
 #else
   return a * b + c;
 #endif
