@@ -12,12 +12,14 @@ namespace mpmx::mpm::shape::fused {
 
 // Cell (clamped to the grid, eq. 3.9: the flat continuation past the ends) and fraction
 // of a point at xi in cell units, as locate(clamp_to_grid(xi)) but free of int round
-// trips so that loops over it vectorise. xc >= 0: truncation is floor.
+// trips so that loops over it vectorise. xc >= 0: truncation is floor. A NaN lands in
+// cell 0 (as the vector kernels' max does) rather than in an undefined conversion, so the
+// cell is an index into the grid whatever the position; callers report a NaN apart.
 struct Cell {
   double c, f;
 };
 inline Cell cell_of(double xi, double top) {
-  const double xc = std::min(std::max(xi, 0.0), top);
+  const double xc = std::min(xi > 0.0 ? xi : 0.0, top);
   const double cc = std::min(static_cast<double>(static_cast<int>(xc)), top - 1.0);
   return {cc, xc - cc};
 }
