@@ -54,9 +54,10 @@ namespace {
   return least < -1.0 || largest > top + 1.0 || sum != sum;
 }
 
-// Pass 1: locate every particle (stops the run for one off the grid). Returns whether
-// the particles still lie in cell order (in 1-D they keep it unless they cross).
-bool locate_all(const Grid<1>& g, const Particles<1>& p, LinearCells& lc) {
+// Pass 1: locate every particle (stops the run for one off the grid). With check_order,
+// sets whether the particles still lie in cell order (in 1-D they keep it unless they
+// cross); without, leaves `ordered` as it was for ordered_sums to confirm.
+void locate_all(const Grid<1>& g, const Particles<1>& p, LinearCells& lc, bool check_order = true) {
   const std::size_t n = p.size();
   const int cells = g.cells[0];
   lc.cell.resize(n + 1);
@@ -68,12 +69,20 @@ bool locate_all(const Grid<1>& g, const Particles<1>& p, LinearCells& lc) {
   int edge = 0;
   if (locate_kernel(n, x, x0, inv, cells, lc.cell.data(), lc.frac.data(), lc.grad.data(), edge))
     for (std::size_t q = 0; q < n; ++q) require_inside((x[q] - x0) * inv, cells, q, x[q]);
+  lc.inside = !edge;
+  if (!check_order) return;
   const int* __restrict cell = lc.cell.data();
   int unordered = 0;
 #pragma omp simd reduction(| : unordered)
   for (std::size_t q = 1; q < n; ++q) unordered |= cell[q] < cell[q - 1];
   lc.ordered = !unordered;
-  lc.inside = !edge;
+}
+
+// Pass 1 where the particles were in cell order at the last step: ordered_sums tests
+// the order as it goes, so pass 1 leaves it out. Returns whether they are still in
+// order as far as is known before the sums.
+bool locate_for_sums(const Grid<1>& g, const Particles<1>& p, LinearCells& lc) {
+  locate_all(g, p, lc, !lc.ordered);
   return lc.ordered;
 }
 
@@ -123,13 +132,15 @@ template <class T>
 // the pads (no fill). The order of the additions differs from cell_sums (the same to
 // round-off). Where consecutive cells hold one vector each, two to four cells go at once.
 // vfields(q, out): the NS fields of particles q .. q + kLanes - 1; sfields(q, out): one
-// particle's.
+// particle's. Returns whether the cells were in order after all (each run's above the
+// last's); where not, S is not the sums, though every write stays inside it.
 template <int NS, class VFields, class SFields>
-[[gnu::always_inline]] inline void ordered_sums(const int* __restrict cell, std::size_t n, std::size_t stride,
+[[gnu::always_inline]] inline bool ordered_sums(const int* __restrict cell, std::size_t n, std::size_t stride,
                                                 double* __restrict S, VFields vfields, SFields sfields) {
   using simd::vdouble;
   constexpr int K = simd::kLanes, NG = (NS + 3) / 4;  // lane sums go four fields at a time
   std::size_t next = 0;  // the first cell of S not yet written
+  bool in_order = true;
   auto zero_to = [&](std::size_t end) {
     for (int f = 0; f < NS; ++f) std::fill(S + f * stride + next, S + f * stride + end, 0.0);
   };
@@ -163,6 +174,7 @@ template <int NS, class VFields, class SFields>
         }
         const std::size_t at = static_cast<std::size_t>(c) + kPad;
         if (at > next) zero_to(at);
+        in_order &= at >= next;
         for (int f = 0; f < NS; ++f) {
           const vdouble col[4] = {b[0][f], b[1][f], b[2][f], b[3][f]};
           simd::sum4(col, S + f * stride + at);
@@ -206,10 +218,12 @@ template <int NS, class VFields, class SFields>
     }
     const std::size_t at = static_cast<std::size_t>(c) + kPad;
     if (at > next) zero_to(at);
+    in_order &= at >= next;
     for (int f = 0; f < NS; ++f) S[f * stride + at] = r[f];
     next = at + 1;
   }
   zero_to(stride);
+  return in_order;
 }
 
 // Pass 3, mass and momentum: node i takes (sum m - sum m f) of cell i and sum m f of
@@ -259,7 +273,7 @@ void ddmp_table(const Grid<1>& g, LinearCells& lc) {
 void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
                 bool no_viscous_pressure, LinearCells& lc, Grid<1>& g) {
   const int cells = g.cells[0];
-  const bool ordered = locate_all(g, p, lc);
+  bool ordered = locate_for_sums(g, p, lc);
   const std::size_t stride = static_cast<std::size_t>(cells) + 2 * kPad;
   lc.sums.resize(5 * stride);
   const double* __restrict vol = reference_volume ? p.volume0.data() : p.volume.data();
@@ -281,7 +295,7 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
     // The force field: V (sigma - q) G, with q left out without viscosity and G (1/dx)
     // applied per node where every particle is inside.
     auto sums = [&]<bool Inside, bool Viscous>() {
-      ordered_sums<5>(
+      return ordered_sums<5>(
           cell, n, stride, S,
           [&](std::size_t q, vdouble* o) {
             mass_fields(load(m + q), load(v + q), load(frac + q), o);
@@ -294,15 +308,17 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
             o[4] = Inside ? e : e * grad[q];
           });
     };
-    if (plain) sums.template operator()<true, false>();
-    else if (no_viscous_pressure) sums.template operator()<false, false>();
-    else sums.template operator()<false, true>();
-  } else if (plain) {
+    ordered = plain                 ? sums.template operator()<true, false>()
+              : no_viscous_pressure ? sums.template operator()<false, false>()
+                                    : sums.template operator()<false, true>();
+    lc.ordered = ordered;
+  }
+  if (!ordered && plain) {
     cell_sums<5>(cell, n, stride, S, [&](std::size_t q, double* out) {
       mass_fields(m[q], v[q], frac[q], out);
       out[4] = vol[q] * sig[q];
     });
-  } else {
+  } else if (!ordered) {
     cell_sums<5>(cell, n, stride, S, [&](std::size_t q, double* out) {
       mass_fields(m[q], v[q], frac[q], out);
       out[4] = vol[q] * (sig[q] - qv[q]) * grad[q];
@@ -533,7 +549,7 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   const double top = cells, inv = g.inv_dx[0], x0 = g.lower[0];
   const bool sub = subpoints > 0;
   ddmp_table(g, lc);
-  const bool ordered = locate_all(g, p, lc);
+  bool ordered = locate_for_sums(g, p, lc);
   const int nw = 3;  // weights per particle (sub-points in other cells: lc.Wx)
   lc.W.resize(nw * n);
   const int* __restrict cell = lc.cell.data();
@@ -568,7 +584,7 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   if (ordered) {
     using simd::load;
     using simd::vdouble;
-    ordered_sums<7>(
+    ordered = ordered_sums<7>(
         cell, n, stride, S,
         [&](std::size_t q, vdouble* o) {
           mass_fields(load(m + q), load(v + q), load(frac + q), o);
@@ -576,7 +592,9 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
           for (int k = 0; k < 3; ++k) o[4 + k] = vs * load(W + k * n + q);
         },
         [&](std::size_t q, double* out) { fields.template operator()<3>(q, out); });
-  } else {
+    lc.ordered = ordered;
+  }
+  if (!ordered) {
     cell_sums<7>(cell, n, stride, S, [&](std::size_t q, double* out) { fields.template operator()<3>(q, out); });
   }
   node_mass_momentum(S, stride, cells, g);
