@@ -228,20 +228,28 @@ template <int NS, class VFields, class SFields>
 
 // Pass 3, mass and momentum: node i takes (sum m - sum m f) of cell i and sum m f of
 // cell i-1 (S = 1 - f, f). Written, not accumulated: no fill, no chain through memory.
-void node_mass_momentum(const double* __restrict S, std::size_t stride, int cells, Grid<1>& g) {
+// With Force (mpm), in the same loop the force: +V sigma/dx from cell i and -V sigma/dx
+// from cell i-1 (G = -1/dx, +1/dx), `scale` being 1/dx where the sums leave it out.
+template <bool Force = false>
+void node_mass_momentum(const double* __restrict S, std::size_t stride, int cells, Grid<1>& g,
+                        double scale = 0.0) {
   const double* __restrict S0 = S + kPad;
   const double* __restrict S1 = S0 + stride;
   const double* __restrict S2 = S1 + stride;
   const double* __restrict S3 = S2 + stride;
+  const double* __restrict S4 = S3 + stride;
   double* __restrict M = g.mass.data() + Grid<1>::ghost;
   double* __restrict P = g.momentum[0].data() + Grid<1>::ghost;
+  double* __restrict F = g.force[0].data() + Grid<1>::ghost;
 #pragma omp simd
   for (int c = 0; c <= cells; ++c) {
     M[c] = S1[c - 1] + (S0[c] - S1[c]);
     P[c] = S3[c - 1] + (S2[c] - S3[c]);
+    if constexpr (Force) F[c] = scale * (S4[c] - S4[c - 1]);
   }
   g.mass.front() = g.mass.back() = 0.0;
   g.momentum[0].front() = g.momentum[0].back() = 0.0;
+  if constexpr (Force) g.force[0].front() = g.force[0].back() = 0.0;
 }
 
 // The DDMP operator D (eq. 3.31), kept per node storage index.
@@ -324,14 +332,7 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
       out[4] = vol[q] * (sig[q] - qv[q]) * grad[q];
     });
   }
-  node_mass_momentum(S, stride, cells, g);
-  // The force is +V sigma/dx from cell i and -V sigma/dx from cell i-1 (G = -1/dx, +1/dx).
-  const double* __restrict S4 = S + 4 * stride + kPad;
-  double* __restrict F = g.force[0].data() + Grid<1>::ghost;
-  const double scale = plain ? g.inv_dx[0] : 1.0;
-#pragma omp simd
-  for (int c = 0; c <= cells; ++c) F[c] = scale * (S4[c] - S4[c - 1]);
-  g.force[0].front() = g.force[0].back() = 0.0;
+  node_mass_momentum<true>(S, stride, cells, g, plain ? g.inv_dx[0] : 1.0);
 }
 
 namespace {
