@@ -14,19 +14,17 @@ void solve_grid(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& 
   double* __restrict v = g.velocity[0].data();
   double* __restrict vL = g.velocity_L[0].data();
   const double* __restrict f = g.force[0].data();
-  // Nodes without mass (outside the material) stay at rest: below 1e-14 of the mean nodal
-  // mass, taken from the last step (mass is conserved; its sum moves by round-off), so
-  // that one loop does the solve and the sums. Branch-free (the divisor is 1 where
-  // unused) so that the loop vectorises; one divide per node.
-  double total = tally.node_mass;
-  if (!(total > 0.0))
-    for (std::size_t i = i0; i <= i1; ++i) total += m[i];
-  const double tiny = 1e-14 * total / (N + 1);
 #pragma omp simd reduction(+ : mass_sum, force_sum, force_abs)
   for (std::size_t i = i0; i <= i1; ++i) {
     mass_sum += m[i];
     force_sum += f[i];
     force_abs += std::abs(f[i]);
+  }
+  // Nodes without mass (outside the material) stay at rest. Branch-free (the divisor is
+  // 1 where unused) so that the loop vectorises; one divide per node.
+  const double tiny = 1e-14 * mass_sum / (N + 1);
+#pragma omp simd
+  for (std::size_t i = i0; i <= i1; ++i) {
     const bool has = m[i] > tiny;
     const double r = 1.0 / (has ? m[i] : 1.0);
     const double vi = mom[i] * r;
