@@ -156,13 +156,16 @@ template <int NS, class VFields, class SFields>
     // Where cells keep their particles this replaces four lane sums and 20 single stores
     // by five sum4; particles crossing cell faces leave the rest to the runs below.
     if (q + 4 * K <= n) {
-      int good = 0;  // how many of cells c .. c+3 hold exactly the next vectors
-      for (; good < 4; ++good) {
-        const std::size_t at = q + static_cast<std::size_t>(good) * K;
-        if (simd::bits(simd::load_cells(cell + at) == static_cast<double>(c + good)) != (1u << K) - 1 ||
-            cell[at + K] == c + good)
-          break;
-      }
+      // How many of cells c .. c+3 hold exactly the next vectors: all four (one test of
+      // the 4 kLanes cells against c, c+1, c+2, c+3), or else counted one by one.
+      int good = 4;
+      if (!simd::all(simd::cells_equal(cell + q, c) & simd::cells_equal(cell + q + K, c + 1) &
+                     simd::cells_equal(cell + q + 2 * K, c + 2) & simd::cells_equal(cell + q + 3 * K, c + 3)) ||
+          cell[q + 4 * K] == c + 3)
+        for (good = 0; good < 4; ++good) {
+          const std::size_t at = q + static_cast<std::size_t>(good) * K;
+          if (!simd::all(simd::cells_equal(cell + at, c + good)) || cell[at + K] == c + good) break;
+        }
       if (good >= 2) {
         vdouble b[4][NS];
         for (int g = 0; g < 4; ++g) {

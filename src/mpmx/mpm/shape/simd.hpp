@@ -66,6 +66,25 @@ template <class T>
   return to_double(c);
 }
 
+// Whether the kLanes cells stored from `cell` on all equal c (as int lanes), and
+// whether every lane of such a test holds.
+[[gnu::always_inline]] inline vint cells_equal(const int* cell, int c) {
+  vint v;
+  std::memcpy(&v, cell, sizeof v);
+  return v == c;
+}
+[[gnu::always_inline]] inline bool all(vint m) {
+#if defined(__AVX512F__)
+  return _mm256_movemask_ps((__m256)m) == 0xFF;
+#elif defined(__AVX__)
+  return _mm_movemask_ps((__m128)m) == 0xF;
+#else
+  for (int k = 0; k < kLanes; ++k)
+    if (!m[k]) return false;
+  return true;
+#endif
+}
+
 // A lane mask (a comparison's result: all ones or zero per lane) as bits, lane k at bit k.
 using vmask = long long __attribute__((vector_size(8 * kLanes)));
 [[gnu::always_inline]] inline unsigned bits(vmask m) {
