@@ -20,8 +20,9 @@ namespace {
 // Pass 1 kernel: cell, fraction and gradient of every particle (as cell_of); returns
 // whether any lies more than a cell past the grid (or is NaN), and in `edge` whether any
 // lies past its ends at all (a zero gradient there). A vector at a time: the flags come
-// from the running least and largest position and a running sum (NaN stays NaN), and the
-// cell goes to int and back once.
+// from the running least and largest position and a running sum (NaN stays NaN); the
+// cell is truncated in double and converted to int once, and the gradient is 1/dx where
+// clamping to the grid left the point where it was.
 [[gnu::noinline]] int locate_kernel(std::size_t n, const double* __restrict x, double x0, double inv, double top,
                   int* __restrict cell, double* __restrict frac, double* __restrict grad, int& edge) {
   using simd::vdouble;
@@ -34,10 +35,11 @@ namespace {
     lo = simd::min(lo, xi), hi = simd::max(hi, xi), total += xi;
     const vdouble xc = simd::min(simd::max(xi, zero), vtop);
     // xc >= 0: truncation is floor; the last cell takes the grid's end.
-    const simd::vint ci = simd::to_int(simd::min(xc, vtop - 1.0));
+    const vdouble cd = simd::trunc(simd::min(xc, vtop - 1.0));
+    const simd::vint ci = simd::to_int(cd);
     std::memcpy(cell + q, &ci, sizeof ci);
-    simd::store(frac + q, xc - simd::to_double(ci));
-    simd::store(grad + q, (xi >= zero) & (xi <= vtop) ? vinv : zero);
+    simd::store(frac + q, xc - cd);
+    simd::store(grad + q, xc == xi ? vinv : zero);
   }
   double least = 0.0, largest = 0.0, sum = simd::sum(total);
   for (int k = 0; k < K; ++k) least = std::min(least, lo[k]), largest = std::max(largest, hi[k]);
