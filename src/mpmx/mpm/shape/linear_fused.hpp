@@ -24,7 +24,8 @@ struct LinearCells {
   // velocity that moves the particle.
   std::vector<double> d0, dd, g0, dg;
   std::vector<double> pc;  // those four at each particle ([table][particle])
-  bool ordered = false;    // particles in cell order at the last p2g
+  bool ordered = false;    // particles in cell order at the last p2g (as its sums found;
+                           // the next p2g takes it as given and its sums test it again)
   bool inside = false;     // and all between the grid's ends (grad = 1/dx for all)
   // DDMP (eq. 3.31): per particle the weights of its gradient (W[k * n + q]): at the
   // particle alpha, (1-alpha)(1-f), (1-alpha) f; with sub-points their averages over
