@@ -80,14 +80,6 @@ void locate_all(const Grid<1>& g, const Particles<1>& p, LinearCells& lc, bool c
   lc.ordered = !unordered;
 }
 
-// Pass 1 where the particles were in cell order at the last step: ordered_sums tests
-// the order as it goes, so pass 1 leaves it out. Returns whether they are still in
-// order as far as is known before the sums.
-bool locate_for_sums(const Grid<1>& g, const Particles<1>& p, LinearCells& lc) {
-  locate_all(g, p, lc, !lc.ordered);
-  return lc.ordered;
-}
-
 // Scratch that only grows: a resize back up would zero-fill it every step.
 inline void grow(std::vector<double>& v, std::size_t size) {
   if (v.size() < size) v.resize(size);
@@ -146,6 +138,13 @@ template <int NS, class VFields, class SFields>
   auto zero_to = [&](std::size_t end) {
     for (int f = 0; f < NS; ++f) std::fill(S + f * stride + next, S + f * stride + end, 0.0);
   };
+  // Cells at .. at + count - 1 are written next: zero those skipped since the last, and
+  // check the order.
+  auto claim = [&](std::size_t at, std::size_t count) {
+    if (at > next) zero_to(at);
+    in_order &= at >= next;
+    next = at + count;
+  };
   const vdouble lane = simd::lane_index();
   std::size_t q = 0;
   while (q < n) {
@@ -178,13 +177,11 @@ template <int NS, class VFields, class SFields>
           }
         }
         const std::size_t at = static_cast<std::size_t>(c) + kPad;
-        if (at > next) zero_to(at);
-        in_order &= at >= next;
+        claim(at, static_cast<std::size_t>(good));
         for (int f = 0; f < NS; ++f) {
           const vdouble col[4] = {b[0][f], b[1][f], b[2][f], b[3][f]};
           simd::sum4(col, S + f * stride + at);
         }
-        next = at + static_cast<std::size_t>(good);
         q += static_cast<std::size_t>(good) * K;
         continue;
       }
@@ -222,13 +219,22 @@ template <int NS, class VFields, class SFields>
       for (int f = 0; f < NS; ++f) r[f] += b[f];
     }
     const std::size_t at = static_cast<std::size_t>(c) + kPad;
-    if (at > next) zero_to(at);
-    in_order &= at >= next;
+    claim(at, 1);
     for (int f = 0; f < NS; ++f) S[f * stride + at] = r[f];
-    next = at + 1;
   }
   zero_to(stride);
   return in_order;
+}
+
+// Pass 2 as a whole: by runs (ordered_sums) where the particles were in cell order at the
+// last step, so that pass 1 need not test it (locate_all's check_order); where they are
+// not, or ordered_sums finds they no longer are, particle by particle (cell_sums) with
+// the same per-particle fields. Sets lc.ordered.
+template <int NS, class VFields, class SFields>
+void per_cell_sums(LinearCells& lc, std::size_t n, std::size_t stride, double* S, VFields vfields,
+                   SFields sfields) {
+  if (lc.ordered) lc.ordered = ordered_sums<NS>(lc.cell.data(), n, stride, S, vfields, sfields);
+  if (!lc.ordered) cell_sums<NS>(lc.cell.data(), n, stride, S, sfields);
 }
 
 // Pass 3, mass and momentum: node i takes (sum m - sum m f) of cell i and sum m f of
@@ -286,7 +292,7 @@ void ddmp_table(const Grid<1>& g, LinearCells& lc) {
 void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
                 bool no_viscous_pressure, LinearCells& lc, Grid<1>& g) {
   const int cells = g.cells[0];
-  bool ordered = locate_for_sums(g, p, lc);
+  locate_all(g, p, lc, !lc.ordered);  // the order: per_cell_sums
   const std::size_t stride = static_cast<std::size_t>(cells) + 2 * kPad;
   lc.sums.resize(5 * stride);
   const double* __restrict vol = reference_volume ? p.volume0.data() : p.volume.data();
@@ -301,42 +307,27 @@ void p2g_linear(const Grid<1>&, const Particles<1>& p, bool reference_volume,
   // Every particle inside the grid and no viscosity (the common case): the gradient is
   // 1/dx throughout, applied per node, and q is not read.
   const bool plain = no_viscous_pressure && lc.inside;
-  const int* cell = lc.cell.data();
-  if (ordered) {
-    using simd::load;
-    using simd::vdouble;
-    // The force field: V (sigma - q) G, with q left out without viscosity and G (1/dx)
-    // applied per node where every particle is inside.
-    auto sums = [&]<bool Inside, bool Viscous>() {
-      return ordered_sums<5>(
-          cell, n, stride, S,
-          [&](std::size_t q, vdouble* o) {
-            mass_fields(load(m + q), load(v + q), load(frac + q), o);
-            const vdouble e = load(vol + q) * (Viscous ? load(sig + q) - load(qv + q) : load(sig + q));
-            o[4] = Inside ? e : e * load(grad + q);
-          },
-          [&](std::size_t q, double* o) {
-            mass_fields(m[q], v[q], frac[q], o);
-            const double e = vol[q] * (Viscous ? sig[q] - qv[q] : sig[q]);
-            o[4] = Inside ? e : e * grad[q];
-          });
-    };
-    ordered = plain                 ? sums.template operator()<true, false>()
-              : no_viscous_pressure ? sums.template operator()<false, false>()
-                                    : sums.template operator()<false, true>();
-    lc.ordered = ordered;
-  }
-  if (!ordered && plain) {
-    cell_sums<5>(cell, n, stride, S, [&](std::size_t q, double* out) {
-      mass_fields(m[q], v[q], frac[q], out);
-      out[4] = vol[q] * sig[q];
-    });
-  } else if (!ordered) {
-    cell_sums<5>(cell, n, stride, S, [&](std::size_t q, double* out) {
-      mass_fields(m[q], v[q], frac[q], out);
-      out[4] = vol[q] * (sig[q] - qv[q]) * grad[q];
-    });
-  }
+  using simd::load;
+  using simd::vdouble;
+  // The force field: V (sigma - q) G, with q left out without viscosity and G (1/dx)
+  // applied per node where every particle is inside.
+  auto sums = [&]<bool Inside, bool Viscous>() {
+    per_cell_sums<5>(
+        lc, n, stride, S,
+        [&](std::size_t q, vdouble* o) {
+          mass_fields(load(m + q), load(v + q), load(frac + q), o);
+          const vdouble e = load(vol + q) * (Viscous ? load(sig + q) - load(qv + q) : load(sig + q));
+          o[4] = Inside ? e : e * load(grad + q);
+        },
+        [&](std::size_t q, double* o) {
+          mass_fields(m[q], v[q], frac[q], o);
+          const double e = vol[q] * (Viscous ? sig[q] - qv[q] : sig[q]);
+          o[4] = Inside ? e : e * grad[q];
+        });
+  };
+  if (plain) sums.template operator()<true, false>();
+  else if (no_viscous_pressure) sums.template operator()<false, false>();
+  else sums.template operator()<false, true>();
   node_mass_momentum<true>(S, stride, cells, g, plain ? g.inv_dx[0] : 1.0);
 }
 
@@ -555,8 +546,8 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   const double top = cells, inv = g.inv_dx[0], x0 = g.lower[0];
   const bool sub = subpoints > 0;
   ddmp_table(g, lc);
-  bool ordered = locate_for_sums(g, p, lc);
-  const int nw = 3;  // weights per particle (sub-points in other cells: lc.Wx)
+  locate_all(g, p, lc, !lc.ordered);  // the order: per_cell_sums
+  constexpr int nw = 3;  // weights per particle (sub-points in other cells: lc.Wx)
   lc.W.resize(nw * n);
   const int* __restrict cell = lc.cell.data();
   const double* __restrict x = p.x[0].data();
@@ -581,28 +572,20 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   const double* __restrict v = p.v[0].data();
   const double* __restrict frac = lc.frac.data();
   double* S = lc.sums.data();
-  auto fields = [&]<int NW>(std::size_t q, double* out) {
-    mass_fields(m[q], v[q], frac[q], out);
-    const double vs = vol[q] * (sig[q] - qv[q]);
-#pragma GCC unroll 8
-    for (int k = 0; k < NW; ++k) out[4 + k] = vs * W[k * n + q];
-  };
-  if (ordered) {
-    using simd::load;
-    using simd::vdouble;
-    ordered = ordered_sums<7>(
-        cell, n, stride, S,
-        [&](std::size_t q, vdouble* o) {
-          mass_fields(load(m + q), load(v + q), load(frac + q), o);
-          const vdouble vs = load(vol + q) * (load(sig + q) - load(qv + q));
-          for (int k = 0; k < 3; ++k) o[4 + k] = vs * load(W + k * n + q);
-        },
-        [&](std::size_t q, double* out) { fields.template operator()<3>(q, out); });
-    lc.ordered = ordered;
-  }
-  if (!ordered) {
-    cell_sums<7>(cell, n, stride, S, [&](std::size_t q, double* out) { fields.template operator()<3>(q, out); });
-  }
+  using simd::load;
+  using simd::vdouble;
+  per_cell_sums<7>(
+      lc, n, stride, S,
+      [&](std::size_t q, vdouble* o) {
+        mass_fields(load(m + q), load(v + q), load(frac + q), o);
+        const vdouble vs = load(vol + q) * (load(sig + q) - load(qv + q));
+        for (int k = 0; k < nw; ++k) o[4 + k] = vs * load(W + k * n + q);
+      },
+      [&](std::size_t q, double* o) {
+        mass_fields(m[q], v[q], frac[q], o);
+        const double vs = vol[q] * (sig[q] - qv[q]);
+        for (int k = 0; k < nw; ++k) o[4 + k] = vs * W[k * n + q];
+      });
   node_mass_momentum(S, stride, cells, g);
   // f_i = -sum_p V sigma Gbar_ip: the alpha part gives +-V sigma alpha/dx at the two
   // nodes of the point's cell; the rest is -sum_j D_ji Q_j with Q_j the hat-weighted
