@@ -58,16 +58,47 @@ TEST(A2, WaveReflection) {
   EXPECT_LT(r.errors.at("energy").l1, 0.02);  // max |E - E_ref| / max E_ref for t <= 2
 }
 
+// A2 with static particles (the linear theory of eqs. 8.21-8.22 exactly: no geometric
+// terms) on finer grids: the catalogue's 2% is met from 201 nodes on (1.7%), and 401
+// nodes halve it again (0.83%).
 TEST(A2, StaticParticlesConverge) {
-  const auto c = test::deck_with(test::example("A2_wave_reflection_moving.toml"), [](toml::table& t) {
-    t["grid"].as_table()->insert_or_assign("cells", 400);
-    t["particles"].as_table()->insert_or_assign("move", false);
-    t["time"].as_table()->insert_or_assign("end", 1.2);
-    t["output"].as_table()->insert_or_assign("times", toml::array{1.2});
-  });
-  const auto r = test::run(c);
-  EXPECT_LT(l2_at(r, "velocity"), 0.01);
-  EXPECT_LT(l2_at(r, "strain"), 0.01);
+  auto at = [](int cells) {
+    const auto c = test::deck_with(test::example("A2_wave_reflection_moving.toml"), [&](toml::table& t) {
+      t["grid"].as_table()->insert_or_assign("cells", cells);
+      t["particles"].as_table()->insert_or_assign("move", false);
+      t["time"].as_table()->insert_or_assign("end", 1.2);
+      t["output"].as_table()->insert_or_assign("times", toml::array{1.2});
+    });
+    return test::run(c);
+  };
+  const auto r200 = at(200), r400 = at(400);
+  EXPECT_LT(l2_at(r200, "velocity"), 0.02);
+  EXPECT_LT(l2_at(r200, "strain"), 0.02);
+  EXPECT_LT(l2_at(r400, "velocity"), 0.01);
+  EXPECT_LT(l2_at(r400, "strain"), 0.01);
+}
+
+// Where the gradient varies inside a cell (DDMP here), moving particles weigh the stress
+// at their current positions with their initial volumes, terms of order v0/c that the
+// linear theory of eqs. 8.21-8.22 leaves out: on 401 nodes (no cell-crossing noise) the
+// error stays at 5.1% with the seed's amplitude 0.01, while at amplitude 0.001 it is the
+// static particles' 1.2-1.3%.
+TEST(A2, MovingParticlesDifferFromLinearTheoryByAmplitude) {
+  auto at = [](double amplitude, bool move) {
+    const auto c = test::deck_with(test::example("A2_wave_reflection_moving.toml"), [&](toml::table& t) {
+      t["grid"].as_table()->insert_or_assign("cells", 400);
+      t["scheme"].as_table()->insert_or_assign("name", "ddmp");
+      t["particles"].as_table()->insert_or_assign("move", move);
+      t["boundary"]["right"].as_table()->insert_or_assign("amplitude", amplitude);
+      t["time"].as_table()->insert_or_assign("end", 1.2);
+      t["output"].as_table()->insert_or_assign("times", toml::array{1.2});
+    });
+    return l2_at(test::run(c), "velocity");
+  };
+  const double large = at(0.01, true), small = at(0.001, true), fixed = at(0.001, false);
+  EXPECT_GT(large, 0.04);
+  EXPECT_LT(small, 0.015);
+  EXPECT_LT(std::abs(small - fixed), 0.2 * fixed);
 }
 
 // A4: ideal gas driven at the right end, eq. 7.8. 76 nodes: L1 3.4%, L2 5.4% (front kink).
@@ -76,4 +107,17 @@ TEST(A4, IdealGasWave) {
   const auto r = test::run(c);
   EXPECT_LT(r.errors.at("velocity").l1, 0.04);
   EXPECT_LT(l2_at(r, "velocity"), 0.06);
+}
+
+// A4 with static particles on 301 nodes meets the catalogue's 2% (1.90%): the 76-node
+// miss is resolution. Moving particles cannot be refined so: from 151 nodes on they cross
+// cell faces, and with the background pressure p0 = 1, 100 times the wave's, the
+// original MPM's cell-crossing force error swamps the wave (dissertation sec. 4.1).
+TEST(A4, StaticParticlesMeetTheTargetOnAFinerGrid) {
+  const auto c = test::deck_with(test::example("A4_gas_wave.toml"), [](toml::table& t) {
+    t["grid"].as_table()->insert_or_assign("cells", 300);
+    t["particles"].as_table()->insert_or_assign("move", false);
+  });
+  const auto r = test::run(c);
+  EXPECT_LT(l2_at(r, "velocity"), 0.02);
 }
