@@ -47,10 +47,11 @@ void step(State<1>& s, double dt) {
   // algorithm as the stencil path. For a linear elastic solid without viscosity, g2p
   // also does what finish() does, in its own pass, where it can.
   shape::ElasticUpdate update;
-  const bool elastic = s.viscosity <= 0.0 && typeid(*s.material) == typeid(material::LinearElastic<1>);
+  const auto& mat = *s.material;
+  const bool elastic = s.viscosity <= 0.0 && typeid(mat) == typeid(material::LinearElastic<1>);
   if (elastic) {
     update.small_strain = s.small_strain;
-    update.youngs_modulus = static_cast<const material::LinearElastic<1>&>(*s.material).youngs_modulus();
+    update.youngs_modulus = static_cast<const material::LinearElastic<1>&>(mat).youngs_modulus();
   }
   shape::ElasticUpdate* fuse = elastic ? &update : nullptr;
   if (scheme == Scheme::mpm) {
