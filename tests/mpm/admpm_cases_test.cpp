@@ -58,9 +58,9 @@ TEST(A2, WaveReflection) {
   EXPECT_LT(r.errors.at("energy").l1, 0.02);  // max |E - E_ref| / max E_ref for t <= 2
 }
 
-// A2 with static particles (the linear theory of eqs. 8.21-8.22 exactly: no geometric
-// terms) on finer grids: the catalogue's 2% is met from 201 nodes on (1.7%), and 401
-// nodes halve it again (0.83%).
+// A2 with static particles (a discretisation of the linear theory of eqs. 8.21-8.22, no
+// geometric terms) on finer grids: the catalogue's 2% is met from 201 nodes on (1.7%),
+// and 401 nodes halve it again (0.83%).
 TEST(A2, StaticParticlesConverge) {
   auto at = [](int cells) {
     const auto c = test::deck_with(test::example("A2_wave_reflection_moving.toml"), [&](toml::table& t) {
