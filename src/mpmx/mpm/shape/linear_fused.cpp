@@ -340,7 +340,7 @@ void cell_tables(const Grid<1>& g, LinearCells& lc, bool midpoint) {
   const int cells = g.cells[0];
   const double* __restrict VL = g.velocity_L[0].data() + Grid<1>::ghost;
   const double* __restrict VN = g.velocity[0].data() + Grid<1>::ghost;
-  // Padded: g2p_elastic_ordered loads eight entries from any cell on.
+  // Padded: g2p_ordered loads eight entries from any cell on.
   lc.d0.resize(cells + 8);
   lc.dd.resize(cells + 8);
   lc.g0.resize(cells + 8);
@@ -391,21 +391,22 @@ template <bool SmallStrain, bool Length, class T>
 }
 
 // The per-cell g2p tables at every particle (pc[k * n + q] = table_k[cell[q]]), for the
-// portable kernel (g2p_elastic_ordered reads the tables directly).
+// portable kernel (g2p_ordered reads the tables directly).
 void expand_cells(LinearCells& lc, std::size_t n) {
   lc.pc.resize(4 * n);
   const double* tab[4] = {lc.d0.data(), lc.dd.data(), lc.g0.data(), lc.dg.data()};
   const int* __restrict cell = lc.cell.data();
   double* __restrict out = lc.pc.data();
-  std::size_t q = 0;
-  for (; q < n; ++q)
+  for (std::size_t q = 0; q < n; ++q)
     for (int k = 0; k < 4; ++k) out[k * n + q] = tab[k][cell[q]];
 }
 
-// The fused kernel with the volume choice fixed at compile time (so the loop vectorises).
-template <bool SmallStrain>
-[[gnu::noinline]] double g2p_elastic_kernel(const LinearCells& lc, double dt, double dtm, double E,
-                                            Particles<1>& p, double& work) {
+// g2p from the expanded tables: v, x and grad v; with Update, the elastic update in the
+// same pass (its stress work in `work`). The choices are fixed at compile time so that
+// the loop vectorises.
+template <bool Update, bool SmallStrain>
+[[gnu::noinline]] double g2p_expanded(const LinearCells& lc, double dt, double dtm, double E, Particles<1>& p,
+                                      double& work) {
   const std::size_t n = p.size();
   const double* __restrict d0 = lc.pc.data();  // the cell's tables, at each particle
   const double* __restrict dd = d0 + n;
@@ -426,20 +427,19 @@ template <bool SmallStrain>
     const double Lq = dg[q] * grad[q];
     v[q] = vq, x[q] = xq, L[q] = Lq;
     check += vq + xq;
-    w += elastic_update<SmallStrain, false>(el, q, Lq, dt, E) * Lq;
+    if constexpr (Update) w += elastic_update<SmallStrain, false>(el, q, Lq, dt, E) * Lq;
   }
   work = w;
   return check;
 }
 
-// g2p_elastic_kernel without the expanded tables, for particles in cell order and
-// without viscosity (q = 0): a vector of particles whose cells lie within a vector's
-// width of the first take their cells' table values by one load and a permute each,
-// in registers. Other blocks, and the last, go particle by particle through the same
-// arithmetic.
-template <bool SmallStrain, bool Inside>
-[[gnu::noinline]] double g2p_elastic_ordered(const LinearCells& lc, double dt, double dtm, double E,
-                                             double inv, Particles<1>& p, double& work) {
+// g2p_expanded without the expanded tables, for particles in cell order: a vector of
+// particles whose cells lie within a vector's width of the first take their cells' table
+// values by one load and a permute each, in registers. Other blocks, and the last, go
+// particle by particle through the same arithmetic. Inside: every gradient is 1/dx.
+template <bool Update, bool SmallStrain, bool Inside>
+[[gnu::noinline]] double g2p_ordered(const LinearCells& lc, double dt, double dtm, double E, double inv,
+                                     Particles<1>& p, double& work) {
   using simd::fmadd;
   using simd::vdouble;
   constexpr int K = simd::kLanes;
@@ -466,7 +466,7 @@ template <bool SmallStrain, bool Inside>
     const double Lq = T3[c] * grad[q];
     v[q] = vq, x[q] = xq, L[q] = Lq;
     check1 += vq + xq;
-    w1 = fmadd(elastic_update<SmallStrain, false>(el, q, Lq, dt, E), Lq, w1);
+    if constexpr (Update) w1 = fmadd(elastic_update<SmallStrain, false>(el, q, Lq, dt, E), Lq, w1);
   };
   std::size_t q = 0;
   for (; q + K <= n; q += K) {
@@ -483,7 +483,7 @@ template <bool SmallStrain, bool Inside>
     const vdouble Lq = dg * (Inside ? simd::splat(inv) : simd::load(grad + q));
     simd::store(v + q, vq), simd::store(x + q, xq), simd::store(L + q, Lq);
     check += vq + xq;
-    w = fmadd(elastic_update<SmallStrain, false>(el, q, Lq, dt, E), Lq, w);
+    if constexpr (Update) w = fmadd(elastic_update<SmallStrain, false>(el, q, Lq, dt, E), Lq, w);
   }
   for (; q < n; ++q) one_particle(q);
   work = w1 + simd::sum(w);
@@ -496,46 +496,21 @@ template <bool SmallStrain, bool Inside>
 double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
                   Particles<1>& p, ElasticUpdate* update) {
   cell_tables(g, lc, midpoint);
-  const double dtm = move ? dt : 0.0;
-  if (update) {
-    const double E = update->youngs_modulus;
-    double w = 0.0, check;
-    if (lc.ordered) {
-      const double inv = g.inv_dx[0];
-      check = update->small_strain
-                  ? (lc.inside ? g2p_elastic_ordered<true, true>(lc, dt, dtm, E, inv, p, w)
-                               : g2p_elastic_ordered<true, false>(lc, dt, dtm, E, inv, p, w))
-                  : (lc.inside ? g2p_elastic_ordered<false, true>(lc, dt, dtm, E, inv, p, w)
-                               : g2p_elastic_ordered<false, false>(lc, dt, dtm, E, inv, p, w));
-    } else {
-      expand_cells(lc, p.size());
-      check = update->small_strain ? g2p_elastic_kernel<true>(lc, dt, dtm, E, p, w)
-                                   : g2p_elastic_kernel<false>(lc, dt, dtm, E, p, w);
-    }
-    update->stress_work += dt * w;
-    update->done = true;
-    return check;
-  }
-  const std::size_t n = p.size();
-  const double* __restrict d0 = lc.d0.data();
-  const double* __restrict dd = lc.dd.data();
-  const double* __restrict g0 = lc.g0.data();
-  const double* __restrict dg = lc.dg.data();
-  const int* __restrict cell = lc.cell.data();
-  const double* __restrict frac = lc.frac.data();
-  const double* __restrict grad = lc.grad.data();
-  double* __restrict x = p.x[0].data();
-  double* __restrict v = p.v[0].data();
-  double* __restrict L = p.grad_v[0].data();
-  double check = 0.0;
-  for (std::size_t q = 0; q < n; ++q) {
-    const int c = cell[q];
-    const double f = frac[q];
-    v[q] += d0[c] + f * dd[c];
-    x[q] += dtm * (g0[c] + f * dg[c]);
-    L[q] = dg[c] * grad[q];
-    check += v[q] + x[q];
-  }
+  const double dtm = move ? dt : 0.0, inv = g.inv_dx[0];
+  const double E = update ? update->youngs_modulus : 0.0;
+  double w = 0.0;
+  auto run = [&]<bool Update, bool SmallStrain>() {
+    if (lc.ordered)
+      return lc.inside ? g2p_ordered<Update, SmallStrain, true>(lc, dt, dtm, E, inv, p, w)
+                       : g2p_ordered<Update, SmallStrain, false>(lc, dt, dtm, E, inv, p, w);
+    expand_cells(lc, p.size());
+    return g2p_expanded<Update, SmallStrain>(lc, dt, dtm, E, p, w);
+  };
+  if (!update) return run.template operator()<false, false>();
+  const double check = update->small_strain ? run.template operator()<true, true>()
+                                            : run.template operator()<true, false>();
+  update->stress_work += dt * w;
+  update->done = true;
   return check;
 }
 
@@ -687,7 +662,7 @@ template <bool Sub, bool Update, bool SmallStrain>
   };
   std::size_t q0 = 0;
   // In cell order: a vector of particles whose cells lie within its width of the first
-  // take the tables by one load and a permute each (as g2p_elastic_ordered).
+  // take the tables by one load and a permute each (as g2p_ordered).
   if (lc.ordered) {
     const vdouble vinv = simd::splat(inv), vdtm = simd::splat(dtm);
     vdouble vcheck{}, vw{};
