@@ -18,8 +18,9 @@ build: deps
 
 # Release build with every label, then the sanitizer build (long validation runs are
 # labelled slow and stay in the Release pass only). The sanitizer build is tuned for the
-# machine (-march=native), so that it checks the vector kernels written for it (AVX-512)
-# while the Release pass checks the portable ones.
+# machine (-march=native), so that it checks the MD kernels written for it (AVX2); the 1-D
+# kernels hold every vector path in both builds (CMakeLists.txt), and both passes run
+# their tests on each path this machine has.
 test: test-release test-sanitize
 
 test-release: build
@@ -33,6 +34,8 @@ test-sanitize: deps
 demo: build
 	@scripts/demo $(BUILD)/mpmx
 
+# -march=native for the MD kernels; the 1-D kernels pick their path at run time, and the
+# continuum bench times each path this machine has.
 bench: deps
 	@cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DMPMX_NATIVE=ON >/dev/null
 	@cmake --build $(BENCH_BUILD) -j $(JOBS)

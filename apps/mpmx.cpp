@@ -1,35 +1,100 @@
 // mpmx: material point method, molecular dynamics, and their coupling.
+// Every command ends with one exit status from core/exit_codes.hpp, and every message is
+// printed once, here: CLI11's errors, InputError, RunError, Interrupted, and anything else.
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <new>
+#include <string>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/mpm/fused1d/isa.hpp"
+#include "mpmx/core/exit_codes.hpp"
+
+namespace {
+
+// The command as typed (for "out of memory while ...").
+std::string command_line(int argc, char** argv) {
+  std::string s = "mpmx";
+  for (int i = 1; i < argc; ++i) s += std::string(" ") + argv[i];
+  return s;
+}
+
+// The words CLI11 accepts as a command.
+std::string command_names(CLI::App& app) {
+  std::string s;
+  for (const CLI::App* sub : app.get_subcommands({})) s += (s.empty() ? "" : ", ") + sub->get_name();
+  return s;
+}
+
+// "mpmx frobnicate": CLI11 would say "A subcommand is required"; name the word instead.
+// The top level has only flags (--help, --version), so the first word that is not one
+// is the command.
+const char* unknown_command(CLI::App& app, int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (argv[i][0] == '-') continue;
+    for (const CLI::App* sub : app.get_subcommands({}))
+      if (sub->check_name(argv[i])) return nullptr;
+    return argv[i];
+  }
+  return nullptr;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
+  namespace code = mpmx::exit_code;
   CLI::App app{"mpmx " MPMX_VERSION ": material point method + molecular dynamics multiscale solver"};
-  app.set_version_flag("--version", std::string("mpmx ") + MPMX_VERSION);
+  // With the vector paths of the 1-D kernels: those built in, those this machine runs, the one taken.
+  app.set_version_flag("--version", [] {
+    return std::string("mpmx ") + MPMX_VERSION + "\n" + mpmx::mpm::shape::isa_summary();
+  });
   app.require_subcommand(1);
+  app.footer("Exit status: 0 done, 1 internal error, 2 bad input, 3 run stopped by the physics (partial "
+             "result written), 130 interrupted (resumable).");
   mpmx::app::add_mpm_commands(app);
   mpmx::app::add_md_commands(app);
+  mpmx::app::add_dpd_commands(app);
+  mpmx::app::apply_shared_checks(app);
+  if (const char* word = unknown_command(app, argc, argv)) {
+    fmt::print(stderr, "mpmx: unknown command '{}': expected one of {} (mpmx --help)\n", word,
+               command_names(app));
+    return code::bad_input;
+  }
   try {
+    mpmx::mpm::shape::isa_chosen();  // a bad MPMX_ISA stops here, before any command writes
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version: CLI11 prints them and says 0.
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    std::string where = "mpmx";
+    for (const CLI::App* sub : app.get_subcommands()) where += " " + sub->get_name();
+    if (where == "mpmx" && e.get_name() == "RequiredError")
+      fmt::print(stderr, "mpmx: a command is required: one of {} (mpmx --help)\n", command_names(app));
+    else
+      fmt::print(stderr, "mpmx: {}\n({} --help lists the options)\n", e.what(), where);
+    return code::bad_input;
   } catch (const mpmx::InputError& e) {
     fmt::print(stderr, "mpmx: input error:\n{}\n", e.what());
-    return 2;
+    return code::bad_input;
   } catch (const mpmx::RunError& e) {
     fmt::print(stderr, "mpmx: run stopped: {}\n", e.what());
-    return 3;
+    return code::stopped;
   } catch (const mpmx::Interrupted& e) {
     fmt::print(stderr, "\nmpmx: interrupted: {}\n", e.what());
-    return 130;
+    return code::interrupted;
+  } catch (const std::bad_alloc&) {
+    // The estimates refuse what cannot fit before anything runs; this is the last resort.
+    fmt::print(stderr, "mpmx: out of memory while running `{}`\n", command_line(argc, argv));
+    return code::internal;
   } catch (const std::exception& e) {
     fmt::print(stderr, "mpmx: {}\n", e.what());
-    return 1;
+    return code::internal;
   }
-  return 0;
+  return code::done;
 }

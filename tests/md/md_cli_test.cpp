@@ -1,5 +1,7 @@
 // `mpmx md DECK --out DIR`: run.json names, thermo CSV, and deck errors that name the
-// key, the value and the reason (exit status 2).
+// key, the value and the reason (exit status 2); hostile input (issue 17): the checks
+// `--check` shares with the run, no output folder left by a refused run, memory and work
+// estimates, and a run the physics stopped (exit status 3) still leaving valid JSON.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "md_test_util.hpp"
+#include "../io/strict_json.hpp"
 
 
 namespace fs = std::filesystem;
@@ -39,6 +42,8 @@ Result run(const std::string& args) {
 fs::path write_deck(const std::string& name, const std::string& text) {
   return mpmx::test::scratch_file(name, text);
 }
+
+fs::path deck_dir() { return mpmx::test::scratch_root(); }
 
 const std::string kGood = R"(
 [potential]
@@ -110,6 +115,10 @@ TEST(MdCli, RunWritesRunJsonAndThermo) {
   // stress_gpa: a 3x3 array of numbers.
   EXPECT_EQ(json_numbers(json, "stress_gpa").size(), 9u) << json;
   EXPECT_NE(json.find("\"deck\""), std::string::npos);
+  EXPECT_NE(json.find("\"status\" : \"completed\""), std::string::npos) << json;
+  EXPECT_EQ(json.find("non_finite"), std::string::npos) << json;
+  mpmx::test::StrictJson strict(json);
+  EXPECT_TRUE(strict.valid()) << strict.error();
   const std::string csv = slurp(out / "thermo.csv");
   EXPECT_EQ(csv.rfind("step,time_ps,pe_per_atom_eV", 0), 0u);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 5);  // header + steps 0,10,20,30,40
@@ -182,4 +191,128 @@ TEST(MdCli, BarDeckWritesBinnedStressOverTime) {
   const std::string csv = slurp(out / "bar_stress.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 8);  // steps 0, 20, 40 x 8 bins
   EXPECT_EQ(json_number(slurp(out / "run.json"), "atoms"), 128);
+}
+
+// ------------------------------------------------ hostile input (issue 17)
+
+namespace {
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+bool strict_json(const std::string& text, std::string& why) {
+  mpmx::test::StrictJson j(text);
+  const bool ok = j.valid();
+  why = j.error();
+  return ok;
+}
+
+}  // namespace
+
+TEST(MdCliHostile, CheckParsesThePotentialFile) {
+  write_deck("Empty.eam.alloy", "");
+  const auto deck = write_deck("empty_pot.toml", with(kGood, "Cu_mishin1.eam.alloy", "Empty.eam.alloy"));
+  const auto r = run("md " + deck.string() + " --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("Empty.eam.alloy: the EAM potential file is empty"), std::string::npos) << r.output;
+}
+
+TEST(MdCliHostile, CheckRefusesAnElementTheFileLacks) {
+  const auto deck = write_deck("no_zr.toml", with(kGood, "elements = [\"Cu\"]", "elements = [\"Zr\"]"));
+  const auto r = run("md " + deck.string() + " --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("key 'potential.elements' = [\"Zr\"]: element 'Zr' is not in"), std::string::npos)
+      << r.output;
+}
+
+TEST(MdCliHostile, BadPotentialLeavesNoOutputDirectory) {
+  write_deck("Header.eam.alloy", "c\nc\nc\n1 Cu\n2000000000 0.01 100 0.01 5.0\n29 63.55 3.6 fcc\n1 2 3\n");
+  for (const std::string pot : {"Header.eam.alloy", "Broken.eam.alloy", "Missing.eam.alloy"}) {
+    if (pot == "Broken.eam.alloy")
+      write_deck(pot, "c\nc\nc\n1 Cu\n100 0.01 100 0.01 5.0\n29 63.55 3.6 fcc\n1 2 3\n");
+    const auto deck = write_deck("leave_" + pot + ".toml", with(kGood, "Cu_mishin1.eam.alloy", pot));
+    const auto out = deck.parent_path() / ("out_leave_" + pot);
+    fs::remove_all(out);
+    const auto r = run("md " + deck.string() + " --out " + out.string() + " --quiet");
+    EXPECT_EQ(r.status, 2) << pot << r.output;
+    EXPECT_FALSE(fs::exists(out)) << pot << ": " << out << " left behind";
+  }
+  const auto r = run("md " + (deck_dir() / "leave_Header.eam.alloy.toml").string());
+  EXPECT_NE(r.output.find("Header.eam.alloy:5: nrho = 2000000000: out of range: expected from 5 to 10000000"),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(MdCliHostile, DirectoryAsDeckIsNamed) {
+  fs::create_directories(deck_dir());
+  const auto r = run("md " + deck_dir().string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("is a directory, not a deck file"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("is missing"), std::string::npos) << r.output;
+}
+
+TEST(MdCliHostile, NanVelocityGradientRefusedAtCheck) {
+  const auto deck = write_deck(
+      "nan_grad.toml", with(kGood, "strain_rate_per_s = 1e9", "velocity_gradient_per_ps = [0,0,0, 0,nan,0, 0,0,0]"));
+  const auto r = run("md " + deck.string() + " --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("key 'run.velocity_gradient_per_ps'"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("entry 5 is nan"), std::string::npos) << r.output;
+}
+
+TEST(MdCliHostile, HugeLatticeRefusedForMemoryEvenWithForce) {
+  const auto deck = write_deck("huge.toml", with(kGood, "cells = [3, 3, 3]", "cells = [1000, 1000, 1000]"));
+  for (const char* flags : {" --check", " --check --force", " --force --quiet --out /nonexistent/never"}) {
+    const auto r = run("md " + deck.string() + flags);
+    EXPECT_EQ(r.status, 2) << flags << r.output;
+    EXPECT_NE(r.output.find("lattice.cells: 4e+09 atoms need about"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("bytes), more than this machine's"), std::string::npos) << r.output;
+  }
+}
+
+TEST(MdCliHostile, WorkAboveADayRefusedUnlessForced) {
+  const auto deck = write_deck("long.toml", with(kGood, "steps = 40", "steps = 9000000000000"));
+  auto r = run("md " + deck.string() + " --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("run.steps: 108 atoms x 9e+12 steps = 9.72e+14 atom-steps"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("--force"), std::string::npos) << r.output;
+  r = run("md " + deck.string() + " --check --force");
+  EXPECT_EQ(r.status, 0) << r.output;
+}
+
+TEST(MdCliHostile, RunThatGoesNonFiniteStopsWithValidJson) {
+  // The box doubles along x every step: inf after about 1,100 steps.
+  std::string text = with(kGood, "strain_rate_per_s = 1e9", "velocity_gradient_per_ps = [1000,0,0, 0,0,0, 0,0,0]");
+  text = with(text, "steps = 40", "steps = 3000");
+  text = with(text, "thermo = 10", "thermo = 100");
+  text = with(text, "dump_every = 20", "dump_every = 0");
+  const auto deck = write_deck("blow.toml", text);
+  const auto out = deck.parent_path() / "out_blow";
+  fs::remove_all(out);
+  const auto r = run("md " + deck.string() + " --out " + out.string() + " --quiet");
+  EXPECT_EQ(r.status, 3) << r.output;  // stopped by the physics, partial result written
+  EXPECT_NE(r.output.find("went non-finite"), std::string::npos) << r.output;
+  const std::string json = slurp(out / "run.json");
+  std::string why;
+  EXPECT_TRUE(strict_json(json, why)) << why << "\n" << json;
+  EXPECT_NE(json.find("\"status\" : \"stopped\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"non_finite\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"box.lx\""), std::string::npos) << json;
+  // The top-level step count (the deck echo's "steps" comes first): the steps done.
+  const auto at = json.find("\n    \"steps\" : ");
+  ASSERT_NE(at, std::string::npos) << json;
+  const long done = std::strtol(json.c_str() + at + 15, nullptr, 10);
+  EXPECT_GT(done, 0) << json;
+  EXPECT_LT(done, 3000) << json;
+}
+
+TEST(MdCliHostile, OutThatIsAFileIsBadInput) {
+  const auto deck = write_deck("out_file.toml", kGood);
+  const auto file = write_deck("not_a_dir.txt", "x");
+  const auto r = run("md " + deck.string() + " --quiet --out " + file.string());
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("exists and is not a directory"), std::string::npos) << r.output;
 }

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "mpmx/mpm/shape/linear_fused_detail.hpp"
+#include "mpmx/mpm/fused1d/linear_fused_detail.hpp"
 
 namespace {
 

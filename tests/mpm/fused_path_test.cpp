@@ -1,8 +1,9 @@
 // ctest-label: unit
-// The fused 1-D kernels (shape/linear_fused) are the stencil step regrouped: for every
+// The fused 1-D kernels (fused1d/linear_fused) are the stencil step regrouped: for every
 // scheme they cover and every branch they take (finite and small strain, gas and solid,
 // viscosity, particles crossing cells, sub-points beyond the neighbouring cell) they
-// must give the stencil step's particles and nodes to round-off.
+// must give the stencil step's particles and nodes to round-off, on every vector path
+// this machine has (each test runs once per path, named by its suffix).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +11,8 @@
 #include <cstdio>
 
 #include "mpm_test_util.hpp"
+#include "mpmx/core/error.hpp"
+#include "mpmx/mpm/fused1d/isa.hpp"
 #include "mpmx/mpm/setup.hpp"
 #include "mpmx/mpm/step.hpp"
 
@@ -91,13 +94,25 @@ mpm::MpmConfig with_scheme(const std::string& deck, const std::string& scheme, i
 
 const std::pair<const char*, int> kFused[] = {{"mpm", 0}, {"ddmp", 0}, {"ddmp_subpoints", 4}};
 
+class FusedPath : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override {
+    mpm::shape::isa_use(GetParam());
+    ASSERT_EQ(mpm::shape::isa_dispatched(), GetParam());
+  }
+  void TearDown() override { mpm::shape::isa_use(mpm::shape::isa_supported().front()); }
+};
+
 }  // namespace
+
+INSTANTIATE_TEST_SUITE_P(Isa, FusedPath, ::testing::ValuesIn(mpm::shape::isa_supported()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 // A driven elastic bar, small strain (the ADMPM bench's fast path) and finite strain; 2
 // and 4 particles per cell (runs of four take the vector per-cell sums). At 4 the end is
 // driven outwards first (as in the ADMPM bench), so that its particles pass the grid's
 // end for a while (a zero gradient there: the kernels' other branch).
-TEST(FusedPath, ElasticBarMatchesStencil) {
+TEST_P(FusedPath, ElasticBarMatchesStencil) {
   for (const auto& [scheme, sub] : kFused)
     for (const bool small : {true, false})
       for (const int ppc : {2, 4}) {
@@ -118,7 +133,7 @@ TEST(FusedPath, ElasticBarMatchesStencil) {
 
 // The isothermal shock tube with viscosity: a gas, particles crossing cells, and with one
 // particle per cell and 16 sub-points, sub-points more than a cell from their particle.
-TEST(FusedPath, ShockTubeMatchesStencil) {
+TEST_P(FusedPath, ShockTubeMatchesStencil) {
   for (const auto& [scheme, sub] : kFused) {
     const auto c = with_scheme("S3_ddmp_1ppc_16sub.toml", scheme, sub ? 16 : 0, [&](toml::table& t) {
       // The original MPM with one particle per cell flies apart on this shock (S1).
@@ -133,7 +148,7 @@ TEST(FusedPath, ShockTubeMatchesStencil) {
 }
 
 // The gas wave of A4 (adiabatic gas, small strain).
-TEST(FusedPath, GasWaveMatchesStencil) {
+TEST_P(FusedPath, GasWaveMatchesStencil) {
   for (const auto& [scheme, sub] : kFused) {
     const auto c = with_scheme("A4_gas_wave.toml", scheme, sub, [](toml::table& t) {
       t["boundary"].as_table()->insert_or_assign(
@@ -148,7 +163,7 @@ TEST(FusedPath, GasWaveMatchesStencil) {
 // the per-cell sums go (the locate pass leaves it out); particles found out of order
 // then take the unordered sums. Two particles of different cells swap places in the
 // arrays after a step in order: the next step must still be the stencil step's.
-TEST(FusedPath, OrderLostBetweenStepsMatchesStencil) {
+TEST_P(FusedPath, OrderLostBetweenStepsMatchesStencil) {
   for (const auto& [scheme, sub] : kFused) {
     // A1's standing wave: every particle moves from the start.
     const auto c = with_scheme("A1_standing_wave_moving.toml", scheme, sub, [](toml::table& t) {
@@ -159,7 +174,7 @@ TEST(FusedPath, OrderLostBetweenStepsMatchesStencil) {
     ASSERT_TRUE(fused.linear_cells.ordered) << scheme;
     auto swap_particles = [](mpm::Particles<1>& p, std::size_t i, std::size_t j) {
       for (auto* a : {&p.x[0], &p.v[0], &p.mass, &p.volume, &p.volume0, &p.length[0], &p.strain[0],
-                      &p.stress[0], &p.grad_v[0], &p.viscous_pressure, &p.entropy})
+                      &p.stress[0], &p.grad_v[0], &p.viscous_pressure})
         std::swap((*a)[i], (*a)[j]);
     };
     swap_particles(fused.particles, 5, 40);  // cells 1 and 10
@@ -178,4 +193,20 @@ TEST(FusedPath, OrderLostBetweenStepsMatchesStencil) {
     EXPECT_LT(rel_diff(fused.grid.velocity_L[0], plain.grid.velocity_L[0]), 1e-12) << scheme;
     EXPECT_LT(rel_diff(fused.grid.force[0], plain.grid.force[0]), 1e-12) << scheme;
   }
+}
+
+// The paths by name (as MPMX_ISA names them): each this machine has can be taken, and an
+// unknown one is an input error that leaves the path as it was.
+TEST(FusedIsa, PathsByName) {
+  const std::vector<std::string> paths = mpm::shape::isa_supported();
+  ASSERT_FALSE(paths.empty());
+  for (const std::string& name : paths) {
+    mpm::shape::isa_use(name);
+    EXPECT_EQ(mpm::shape::isa_chosen(), name);
+    EXPECT_EQ(mpm::shape::isa_dispatched(), name);
+  }
+  EXPECT_THROW(mpm::shape::isa_use("avx1024"), InputError);
+  EXPECT_EQ(mpm::shape::isa_chosen(), paths.back());
+  EXPECT_EQ(mpm::shape::isa_dispatched(), paths.back());
+  mpm::shape::isa_use(paths.front());
 }

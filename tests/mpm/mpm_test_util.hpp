@@ -1,6 +1,8 @@
 #pragma once
 // Helpers shared by the continuum tests: read an example deck, edit it, run it in
 // memory (no files), and read the by-time errors.
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <toml++/toml.h>
@@ -33,6 +35,23 @@ inline mpm::RunResult run(const mpm::MpmConfig& c) {
   o.quiet = true;
   o.plot = false;
   return mpm::run_mpm(c, o);
+}
+
+// A 2-D or 3-D deck, in memory.
+template <int Dim>
+mpm::RunResultOf<Dim> run_dim(const mpm::MpmConfig& c) {
+  mpm::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  return mpm::run_mpm_dim<Dim>(c, o);
+}
+
+// A whole text file.
+inline std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
 }
 
 }  // namespace mpmx::test

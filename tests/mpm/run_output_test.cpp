@@ -8,6 +8,7 @@
 
 #include "mpm_test_util.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/mpm/points.hpp"
 #include "mpmx/mpm/profile.hpp"
 #include "mpmx/mpm/setup.hpp"
 #include "mpmx/mpm/step.hpp"
@@ -17,13 +18,6 @@ using namespace mpmx;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string slurp(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path d = fs::temp_directory_path() / name;
@@ -45,12 +39,12 @@ TEST(RunOutput, WritesRunJsonAndTables) {
   o.quiet = true;
   o.plot = false;
   mpm::run_mpm(c, o);
-  const std::string json = slurp(dir / "run.json");
+  const std::string json = test::slurp(dir / "run.json");
   for (const char* key : {"\"wall_seconds\"", "\"steps\" : 30000", "\"conservation\"", "\"mass\"",
                           "\"momentum\"", "\"energy\"", "\"errors\"", "\"velocity\"", "\"l1\"",
                           "\"l2\"", "\"version\"", "\"deck\""})
     EXPECT_NE(json.find(key), std::string::npos) << key;
-  const std::string particles = slurp(dir / "particles.csv");
+  const std::string particles = test::slurp(dir / "particles.csv");
   EXPECT_EQ(particles.rfind("time,particle,x,mass,volume,density,velocity,strain,stress,pressure", 0), 0u);
   EXPECT_NE(particles.find("ref_velocity"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "nodes.csv"));
@@ -87,7 +81,7 @@ TEST(RunOutput, NanStopsTheRunNamingStepParticleAndField) {
   EXPECT_NE(message.find("particle "), std::string::npos) << message;
   EXPECT_NE(message.find("in step"), std::string::npos) << message;
   // run.json says it stopped; every record in the tables is whole (100 particle rows each).
-  EXPECT_NE(slurp(dir / "run.json").find("\"status\" : \"stopped\""), std::string::npos);
+  EXPECT_NE(test::slurp(dir / "run.json").find("\"status\" : \"stopped\""), std::string::npos);
   std::ifstream f(dir / "particles.csv");
   std::string line;
   std::getline(f, line);
@@ -122,7 +116,7 @@ TEST(Viscosity, OnlyOnCompression) {  // dissertation sec. 6.3: 0.5 rho c |dv|, 
   p.grad_v[0][0] = -2.0;  // compressing
   p.grad_v[0][1] = +2.0;  // stretching
   mpm::artificial_viscosity(*s.material, 0.5, p);
-  const double expect = 0.5 * p.density(0) * s.material->sound_speed(p, 0) * 2.0 * p.volume[0];
+  const double expect = 0.5 * p.density(0) * s.material->sound_speed(mpm::points(p), 0) * 2.0 * p.volume[0];
   EXPECT_NEAR(p.viscous_pressure[0], expect, 1e-15);
   EXPECT_EQ(p.viscous_pressure[1], 0.0);
 }

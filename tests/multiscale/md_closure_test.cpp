@@ -11,6 +11,7 @@
 #include "mpmx/material/md_closure.hpp"
 #include "mpmx/md/config.hpp"
 #include "mpmx/md/equilibrium.hpp"
+#include "mpmx/mpm/points.hpp"
 #include "ms_test_util.hpp"
 
 namespace {
@@ -43,19 +44,19 @@ TEST(MdClosure, UnstrainedPointAtZeroKelvinHasZeroStress) {
   p.strain[0] = {0.0, -0.01};
   p.mass = {1.0, 1.0};
   p.volume = {1.0, 1.0};
-  m.initialize(p);
+  m.initialize(mpm::points(p));
   EXPECT_LT(std::abs(p.stress[0][0]), 1e-9);  // GPa; round-off of a 108-atom virial sum
   // Compressed: about C11 e, stiffer in compression.
   EXPECT_LT(p.stress[0][1], -1.0 * 169.9 * 0.01);
   EXPECT_GT(p.stress[0][1], -1.1 * 169.9 * 0.01);
   // At rest and zero strain rate it stays so: 100 MD steps per continuum step.
   p.grad_v[0] = {0.0, 0.0};
-  m.update_stress(p, 0.1);
+  m.update_stress(mpm::points(p), 0.1);
   EXPECT_LT(std::abs(p.stress[0][0]), 1e-9);
   EXPECT_EQ(m.atom_steps(), 2 * 108 * 100);
   // Units in one place: a gradient of 1/ps stretches the box like exp(t).
   p.grad_v[0] = {0.05, 0.0};
-  m.update_stress(p, 0.1);
+  m.update_stress(mpm::points(p), 0.1);
   EXPECT_NEAR(p.strain[0][0], std::expm1(0.005), 1e-6);
   EXPECT_GT(p.stress[0][0], 0.0);
 }

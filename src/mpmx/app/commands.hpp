@@ -7,5 +7,6 @@ namespace mpmx::app {
 
 void add_mpm_commands(CLI::App& app);  // run, check
 void add_md_commands(CLI::App& app);   // md
+void add_dpd_commands(CLI::App& app);  // dpd, fit-dpd
 
 }  // namespace mpmx::app

@@ -1,8 +1,10 @@
 // `mpmx run DECK --out DIR` and `mpmx check DECK`.
 #include <cmath>
 #include <filesystem>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
@@ -46,7 +48,7 @@ void add_mpm_commands(CLI::App& app) {
     o.resume = args->resume;
     o.checkpoint_every = args->checkpoint_every;
     o.checkpoint_seconds = 60.0 * args->checkpoint_minutes;
-    const auto r = mpm::run_mpm(cfg, o);
+    const auto r = mpm::run_any(cfg, o);
     if (r.interrupted)
       throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx run {} --out {} --resume",
                                     r.steps, cfg.steps(), mpm::checkpoint_path(out), args->deck, out));
@@ -64,8 +66,16 @@ void add_mpm_commands(CLI::App& app) {
   check->add_option("deck", args->deck, "TOML deck")->required()->check(CLI::ExistingFile);
   check->callback([args] {
     const auto cfg = io::read_mpm_deck(args->deck);
-    fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", args->deck,
-               cfg.id, cfg.cells, cfg.per_cell, cfg.steps(), mpm::scheme_name(cfg.scheme.scheme));
+    if (cfg.dim == 1) {
+      fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", args->deck, cfg.id, cfg.cells,
+                 cfg.per_cell, cfg.steps(), mpm::scheme_name(cfg.scheme.scheme));
+    } else {
+      std::vector<int> cells(cfg.cells_all.begin(), cfg.cells_all.begin() + cfg.dim),
+          per(cfg.per_cell_all.begin(), cfg.per_cell_all.begin() + cfg.dim);
+      fmt::print("{}: ok (case {}, {}-D, {} cells, {} points per cell, {} bodies, {} steps, scheme {}, material {})\n",
+                 args->deck, cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), cfg.bodies.size(),
+                 cfg.steps(), mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
+    }
   });
 }
 

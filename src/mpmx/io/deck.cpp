@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -43,13 +46,56 @@ std::string join_path(const std::string& prefix, std::string_view key) {
   return prefix.empty() ? std::string(key) : prefix + "." + std::string(key);
 }
 
+constexpr std::int64_t kMin64 = std::numeric_limits<std::int64_t>::min();
+constexpr std::int64_t kMax64 = std::numeric_limits<std::int64_t>::max();
+
+// "from 1 to 1000", ">= 1", "<= 7", "" (no limit).
+std::string bounds_text(std::int64_t lo, std::int64_t hi) {
+  if (lo == kMin64 && hi == kMax64) return "";
+  if (hi == kMax64) return fmt::format(">= {}", lo);
+  if (lo == kMin64) return fmt::format("<= {}", hi);
+  return fmt::format("from {} to {}", lo, hi);
+}
+
+// "out of range: must be an integer from 1 to 1000": the reason of an out-of-range value.
+std::string limits_reason(std::int64_t lo, std::int64_t hi);
+
+// "an integer from 1 to 1000", "an integer".
+std::string range_text(std::int64_t lo, std::int64_t hi) {
+  const std::string b = bounds_text(lo, hi);
+  return b.empty() ? "an integer" : "an integer " + b;
+}
+
+std::string limits_reason(std::int64_t lo, std::int64_t hi) { return "out of range: must be " + range_text(lo, hi); }
+
+// A float where an integer is wanted, shown as one: 4.0, 1e+12, 10.5 (describe() writes 4
+// and 1000000000000, which would hide the point of the message).
+std::string float_text(double v) {
+  if (!std::isfinite(v) || v != std::floor(v)) return fmt::format("{}", v);
+  if (std::abs(v) < 1e7) return fmt::format("{:.1f}", v);
+  const std::string short_form = fmt::format("{:.6g}", v);  // 1e+12, as most would write it
+  return std::strtod(short_form.c_str(), nullptr) == v ? short_form : fmt::format("{:.17g}", v);
+}
+
+// Why a floating-point value is not an integer, for the type error.
+std::string float_hint(double v) {
+  if (!std::isfinite(v)) return "";
+  if (v == std::floor(v) && std::abs(v) < 9.2e18)
+    return fmt::format(" (write {} without a decimal point or exponent)", static_cast<std::int64_t>(v));
+  if (v == std::floor(v)) return " (and it is beyond the 64-bit integer range)";
+  return " (it has a fractional part)";
+}
+
 }  // namespace
 
 std::string describe(const toml::node& node) {
   if (node.is_table()) return "{...}";
   std::ostringstream os;
-  if (node.is_array()) {
-    os << toml::json_formatter{*node.as_array(), toml::format_flags::none};
+  if (const toml::array* a = node.as_array()) {
+    // One line, as written: [1, 2, 3].
+    os << '[';
+    for (std::size_t i = 0; i < a->size(); ++i) os << (i ? ", " : "") << describe(*a->get(i));
+    os << ']';
   } else if (auto s = node.value<std::string>(); s && node.is_string()) {
     os << '"' << *s << '"';
   } else if (node.is_floating_point()) {
@@ -87,12 +133,14 @@ const toml::node* Section::get(std::string_view key) {
 }
 
 void Section::type_error(std::string_view key, const toml::node& node, std::string_view want) {
-  deck_->add_error(&node, fmt::format("key '{}' = {}: expected {}, got {}", key_path(key),
-                                      describe(node), want, type_name(node)));
+  deck_->add_key_error(&node, key_path(key),
+                       fmt::format("key '{}' = {}: expected {}, got {}", key_path(key), describe(node), want,
+                                   type_name(node)));
 }
 
 void Section::missing(std::string_view key, std::string_view want) {
-  deck_->add_error(table_, fmt::format("key '{}' is missing: expected {}", key_path(key), want));
+  deck_->add_key_error(table_, key_path(key),
+                       fmt::format("key '{}' is missing: expected {}", key_path(key), want));
 }
 
 double Section::number(std::string_view key) {
@@ -102,7 +150,7 @@ double Section::number(std::string_view key) {
     return std::nan("");
   }
   if (auto v = n->value<double>(); v && (n->is_floating_point() || n->is_integer())) {
-    if (!std::isfinite(*v)) check(false, key, "must be finite");
+    if (!std::isfinite(*v)) check(false, key, "must be a finite number (nan and inf are not accepted)");
     return *v;
   }
   type_error(key, *n, "a number");
@@ -123,9 +171,8 @@ std::int64_t Section::integer(std::string_view key) {
     missing(key, "an integer");
     return 0;
   }
-  if (n->is_integer()) return n->as_integer()->get();
-  type_error(key, *n, "an integer");
-  return 0;
+  bool ok = false;
+  return checked_integer(key, *n, kMin64, kMax64, 0, ok);
 }
 
 std::int64_t Section::integer(std::string_view key, std::int64_t fallback) {
@@ -134,6 +181,92 @@ std::int64_t Section::integer(std::string_view key, std::int64_t fallback) {
     return fallback;
   }
   return integer(key);
+}
+
+std::int64_t Section::checked_integer(std::string_view key, const toml::node& n, std::int64_t lo,
+                                      std::int64_t hi, std::int64_t on_error, bool& ok) {
+  ok = false;
+  if (!n.is_integer()) {
+    if (n.is_floating_point()) {
+      deck_->add_key_error(&n, key_path(key),
+                           fmt::format("key '{}' = {}: expected an integer, got a number{}", key_path(key),
+                                       float_text(n.as_floating_point()->get()),
+                                       float_hint(n.as_floating_point()->get())));
+    } else {
+      type_error(key, n, "an integer");
+    }
+    return on_error;
+  }
+  const std::int64_t v = n.as_integer()->get();
+  if (v < lo || v > hi) {
+    deck_->add_key_error(&n, key_path(key),
+                         fmt::format("key '{}' = {}: {}", key_path(key), v, limits_reason(lo, hi)));
+    return std::clamp(v, lo, hi);
+  }
+  ok = true;
+  return v;
+}
+
+std::int64_t Section::integer(std::string_view key, std::int64_t lo, std::int64_t hi) {
+  const toml::node* n = get(key);
+  if (!n) {
+    missing(key, range_text(lo, hi));
+    return lo;
+  }
+  bool ok = false;
+  return checked_integer(key, *n, lo, hi, lo, ok);
+}
+
+std::int64_t Section::integer(std::string_view key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) {
+  const toml::node* n = get(key);
+  if (!n) return fallback;
+  bool ok = false;
+  return checked_integer(key, *n, lo, hi, std::clamp(fallback, lo, hi), ok);
+}
+
+int Section::integer_int(std::string_view key, int lo, int hi) {
+  return static_cast<int>(integer(key, std::int64_t{lo}, std::int64_t{hi}));
+}
+
+int Section::integer_int(std::string_view key, int fallback, int lo, int hi) {
+  return static_cast<int>(integer(key, std::int64_t{fallback}, std::int64_t{lo}, std::int64_t{hi}));
+}
+
+std::vector<std::int64_t> Section::integers(std::string_view key, std::int64_t lo, std::int64_t hi) {
+  const toml::node* n = get(key);
+  const std::string b = bounds_text(lo, hi);
+  const std::string want = b.empty() ? "an array of integers" : "an array of integers, each " + b;
+  if (!n) {
+    missing(key, want);
+    return {};
+  }
+  const toml::array* a = n->as_array();
+  if (!a) {
+    type_error(key, *n, want);
+    return {};
+  }
+  std::vector<std::int64_t> out;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::node& e = *a->get(i);
+    if (!e.is_integer()) {
+      const bool fp = e.is_floating_point();
+      const std::string hint = fp ? float_hint(e.as_floating_point()->get()) : "";
+      deck_->add_key_error(&e, key_path(key),
+                           fmt::format("key '{}' = {}: entry {} is {}, expected an integer{}", key_path(key),
+                                       describe(*n), i + 1, fp ? float_text(e.as_floating_point()->get()) : describe(e),
+                                       hint));
+      return {};
+    }
+    const std::int64_t v = e.as_integer()->get();
+    if (v < lo || v > hi) {
+      deck_->add_key_error(&e, key_path(key),
+                           fmt::format("key '{}' = {}: entry {} = {}: {}", key_path(key),
+                                       describe(*n), i + 1, v, limits_reason(lo, hi)));
+      return {};
+    }
+    out.push_back(v);
+  }
+  return out;
 }
 
 bool Section::boolean(std::string_view key, bool fallback) {
@@ -169,7 +302,7 @@ std::string Section::choice(std::string_view key, const std::vector<std::string>
   if (n && n->is_string() && std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
     std::string list;
     for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-    deck_->add_error(n, fmt::format("key '{}' = \"{}\": not one of {}", key_path(key), v, list));
+    deck_->add_key_error(n, key_path(key), fmt::format("key '{}' = \"{}\": not one of {}", key_path(key), v, list));
     return allowed.front();
   }
   return n ? v : allowed.front();
@@ -196,12 +329,21 @@ std::vector<double> Section::numbers(std::string_view key) {
     type_error(key, *n, "an array of numbers");
     return out;
   }
-  for (const auto& e : *a) {
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::node& e = *a->get(i);
     if (!(e.is_floating_point() || e.is_integer())) {
       type_error(key, *n, "an array of numbers");
       return {};
     }
-    out.push_back(*e.value<double>());
+    const double v = *e.value<double>();
+    if (!std::isfinite(v)) {
+      deck_->add_key_error(&e, key_path(key),
+                           fmt::format("key '{}' = {}: entry {} is {}: every entry must be a finite number "
+                                       "(nan and inf are not accepted)",
+                                       key_path(key), describe(*n), i + 1, describe(e)));
+      return {};
+    }
+    out.push_back(v);
   }
   return out;
 }
@@ -269,8 +411,8 @@ std::vector<Section> Section::tables(std::string_view key) {
 void Section::check(bool ok, std::string_view key, std::string_view reason) {
   if (ok) return;
   const toml::node* n = table_ ? table_->get(key) : nullptr;
-  deck_->add_error(n ? n : table_,
-                   fmt::format("key '{}' = {}: {}", key_path(key), value_text(key), reason));
+  deck_->add_key_error(n ? n : table_, key_path(key),
+                       fmt::format("key '{}' = {}: {}", key_path(key), value_text(key), reason));
 }
 
 void Section::positive(std::string_view key, double value) {
@@ -292,6 +434,13 @@ Deck& Deck::operator=(Deck&&) noexcept = default;
 Deck::~Deck() = default;
 
 Deck Deck::from_file(const std::string& file) {
+  namespace fs = std::filesystem;
+  if (file.empty()) throw InputError("deck: the file name is empty");
+  std::error_code ec;
+  const auto st = fs::status(file, ec);
+  if (!fs::exists(st)) throw InputError(fmt::format("{}: no such deck file", file));
+  if (fs::is_directory(st))
+    throw InputError(fmt::format("{}: is a directory, not a deck file (give a .toml file)", file));
   Deck d;
   d.name_ = file;
   try {
@@ -318,6 +467,21 @@ Deck Deck::from_string(std::string_view text, std::string name) {
 Section Deck::root() { return Section(this, table_.get(), ""); }
 
 void Deck::mark_known(const std::string& path) { known_.insert(path); }
+
+bool Deck::has_key_error(const std::string& key_path) const {
+  if (errored_keys_.count(key_path)) return true;
+  // A table above it: "a" or "a.b" for "a.b.c", "a[0]" for "a[0].b".
+  for (std::size_t i = 0; i < key_path.size(); ++i)
+    if ((key_path[i] == '.' || key_path[i] == '[') && errored_keys_.count(key_path.substr(0, i))) return true;
+  return false;
+}
+
+bool Deck::add_key_error(const toml::node* where, const std::string& key_path, std::string message) {
+  if (has_key_error(key_path)) return false;
+  errored_keys_.insert(key_path);
+  add_error(where, std::move(message));
+  return true;
+}
 
 void Deck::add_error(const toml::node* where, std::string message) {
   if (where && where->source().begin.line > 0)

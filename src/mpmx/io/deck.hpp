@@ -21,6 +21,9 @@ class Deck;
 // A view of one table of the deck ("" is the root). Getters record the key as known;
 // a wrong type or an out-of-range value is recorded as an error, and a usable
 // fallback is returned so that reading goes on and every error is reported at once.
+// A key is reported once: the first error on a key (or on a table above it) wins, so a
+// missing or mistyped value is not reported again by the range checks that follow.
+// Numbers are finite: nan and inf (TOML allows both) are refused naming the key.
 class Section {
  public:
   Section(Deck* deck, const toml::table* table, std::string path);
@@ -31,8 +34,23 @@ class Section {
 
   double number(std::string_view key);                     // required
   double number(std::string_view key, double fallback);    // optional
+  // Integers are read as 64-bit. Without limits any 64-bit value passes; prefer the
+  // checked forms below.
   std::int64_t integer(std::string_view key);
   std::int64_t integer(std::string_view key, std::int64_t fallback);
+  // Checked integers: the value must lie in [lo, hi] (the key's limits); otherwise the
+  // error names the key, the value and the range. A float (`cells = 1e12`, `4.0`) or a
+  // string is a type error saying an integer is needed. On any error the value returned
+  // lies in [lo, hi] (the fallback, lo, or the value clamped), so that reading goes on
+  // with a value that is safe to size things by.
+  std::int64_t integer(std::string_view key, std::int64_t lo, std::int64_t hi);                        // required
+  std::int64_t integer(std::string_view key, std::int64_t fallback, std::int64_t lo, std::int64_t hi);  // optional
+  // The same for a value kept in an int: the limits are ints, so no 64-bit value is ever
+  // narrowed unchecked.
+  int integer_int(std::string_view key, int lo, int hi);
+  int integer_int(std::string_view key, int fallback, int lo, int hi);
+  // An array of integers, each in [lo, hi] (the error names the entry).
+  std::vector<std::int64_t> integers(std::string_view key, std::int64_t lo, std::int64_t hi);
   bool boolean(std::string_view key, bool fallback);
   std::string string(std::string_view key);
   std::string string(std::string_view key, std::string fallback);
@@ -63,6 +81,9 @@ class Section {
   const toml::node* get(std::string_view key);
   void type_error(std::string_view key, const toml::node& node, std::string_view want);
   void missing(std::string_view key, std::string_view want);
+  // The checked integer at a present node: type and range; `ok` false on any error.
+  std::int64_t checked_integer(std::string_view key, const toml::node& n, std::int64_t lo, std::int64_t hi,
+                               std::int64_t on_error, bool& ok);
 
   Deck* deck_;
   const toml::table* table_;
@@ -71,7 +92,8 @@ class Section {
 
 class Deck {
  public:
-  // Parses the file; a syntax error throws InputError naming file, line and column.
+  // Parses the file; a syntax error throws InputError naming file, line and column; so
+  // does a path that is missing or a directory.
   static Deck from_file(const std::string& file);
   static Deck from_string(std::string_view text, std::string name = "deck");
 
@@ -88,6 +110,10 @@ class Deck {
   void finish();
 
   void add_error(const toml::node* where, std::string message);
+  // An error about one key (a dotted path): recorded unless that key, or a table above
+  // it, already has one (returns whether it was recorded).
+  bool add_key_error(const toml::node* where, const std::string& key_path, std::string message);
+  bool has_key_error(const std::string& key_path) const;
   void mark_known(const std::string& path);
   const std::vector<std::string>& errors() const { return errors_; }
 
@@ -98,6 +124,7 @@ class Deck {
   std::unique_ptr<toml::table> table_;
   std::string name_;
   std::set<std::string> known_;
+  std::set<std::string> errored_keys_;
   std::vector<std::string> errors_;
 };
 

@@ -9,18 +9,19 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/io/deck.hpp"
-#include "mpmx/md/config.hpp"
+#include "mpmx/material/ideal_gas_model.hpp"
+#include "mpmx/material/linear_elastic_model.hpp"
+#include "mpmx/material/md_closure_model.hpp"
 
 namespace mpmx::io {
 
 namespace {
 
+using mpm::Body;
 using mpm::BoundarySide;
 using mpm::MpmConfig;
 using mpm::Profile;
 
-const std::vector<std::string> kMaterials{"linear_elastic", "ideal_gas_isothermal",
-                                          "ideal_gas_adiabatic", "md_closure"};
 const std::vector<std::string> kReferences{"standing_wave", "wave_reflection", "gas_wave",
                                            "riemann_isothermal", "shock_front", "direct_md"};
 
@@ -37,6 +38,8 @@ Profile read_profile(Section s, double fallback) {
     p.value = s.number("offset", 0.0);
     p.amplitude = s.number("amplitude");
     p.mode = s.number("mode", 1.0);
+    s.check(p.mode >= 1.0 && p.mode <= 1e6 && p.mode == std::floor(p.mode), "mode",
+            "must be a whole number from 1 to 1000000 (half-waves along the grid)");
   } else {
     p.kind = kind == "step" ? Profile::Kind::step : Profile::Kind::tanh;
     p.left = s.number("left");
@@ -50,82 +53,82 @@ Profile read_profile(Section s, double fallback) {
   return p;
 }
 
-BoundarySide read_side(Section s) {
+// A face's condition: free, fixed, roller (normal velocity zero) or a velocity
+// value + amplitude sin(omega t), a number in 1-D and a vector in 2-D/3-D.
+BoundarySide read_side(Section s, int dim) {
   BoundarySide b;
   if (!s.present()) return b;
-  const std::string type = s.choice("type", {"free", "fixed", "velocity"}, "free");
-  b.type = type == "free" ? BoundarySide::Type::free
+  const std::string type = s.choice("type", {"free", "fixed", "velocity", "roller"}, "free");
+  b.type = type == "free"    ? BoundarySide::Type::free
            : type == "fixed" ? BoundarySide::Type::fixed
-                             : BoundarySide::Type::velocity;
+           : type == "roller" ? BoundarySide::Type::roller
+                              : BoundarySide::Type::velocity;
+  if (type == "roller" && dim == 1)
+    s.check(false, "type", "a roller holds the normal velocity only: in 1-D use fixed");
   if (b.type == BoundarySide::Type::velocity) {
-    b.value = s.number("value", 0.0);
-    b.amplitude = s.number("amplitude", 0.0);
+    if (dim == 1) {
+      b.value[0] = s.number("value", 0.0);
+      b.amplitude[0] = s.number("amplitude", 0.0);
+    } else {
+      const auto v = s.numbers("value", std::vector<double>(dim, 0.0));
+      const auto a = s.numbers("amplitude", std::vector<double>(dim, 0.0));
+      s.check(static_cast<int>(v.size()) == dim, "value", fmt::format("needs {} components", dim));
+      s.check(static_cast<int>(a.size()) == dim, "amplitude", fmt::format("needs {} components", dim));
+      for (int d = 0; d < dim && d < static_cast<int>(v.size()); ++d) b.value[d] = v[d];
+      for (int d = 0; d < dim && d < static_cast<int>(a.size()); ++d) b.amplitude[d] = a[d];
+    }
     b.omega = s.number("omega", 0.0);
   }
   return b;
 }
 
-// [material] of an md_closure: [material.potential] and [material.md]; the crystal's
-// density and C11 (continuum units) come from the potential itself.
-void read_md_closure(Section m, const std::string& deck_dir, const std::string& unit_name,
-                     mpm::MaterialConfig& mat) {
-  auto& md = mat.md;
-  const auto u = units::unit_system(unit_name);
-  if (u) md.units = *u;
-  else
-    m.check(false, "model",
-            fmt::format("md_closure needs case.units to be one of {}, not '{}'", units::unit_system_names(),
-                        unit_name));
-  md.potential = md::read_potential(m.table("potential"), deck_dir);
-  Section s = m.table("md");
-  md.cells = static_cast<int>(s.integer("cells", 4));
-  s.check(md.cells >= 1 && md.cells <= 20, "cells", "must be from 1 to 20 (4 x cells^3 atoms per point)");
-  md.temperature = s.number("temperature", 0.0);
-  s.non_negative("temperature", md.temperature);
-  const auto seed = s.integer("seed", 1);
-  s.check(seed >= 0, "seed", "must be >= 0");
-  md.seed = static_cast<std::uint64_t>(seed);
-  md.dt = s.number("dt", 0.001);
-  s.positive("dt", md.dt);
-  s.check(md.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
-  md.relax_steps = s.integer("relax_steps", 0);
-  s.check(md.relax_steps >= 0, "relax_steps", "must be >= 0");
-  md.sample = s.choice("stress", {"last", "average"}, "last") == "last" ? multiscale::StressSample::last
-                                                                        : multiscale::StressSample::average;
-  md.skin = s.number("skin", 1.0);
-  s.non_negative("skin", md.skin);
-  md.mixed_precision = s.choice("precision", {"double", "mixed"}, "double") == "mixed";
-  mat.density_unstrained = true;
-  if (md.potential.style != "eam" || !md.potential.file.empty()) {
-    try {
-      const auto props = material::md_closure_properties(md.potential, md.units);
-      mat.density = props.density;
-      mat.youngs_modulus = props.modulus;
-    } catch (const std::exception& e) {
-      m.check(false, "potential", e.what());
-    }
+// A vector of `dim` numbers (a number is taken for every axis where `broadcast`).
+std::array<double, 3> read_vector(Section& s, std::string_view key, int dim, std::array<double, 3> fallback,
+                                  bool required) {
+  std::array<double, 3> r = fallback;
+  if (!s.has(key)) {
+    if (required) s.number(key);  // records the missing key
+    return r;
   }
+  const auto v = s.numbers(key);
+  if (static_cast<int>(v.size()) != dim) {
+    s.check(false, key, fmt::format("needs {} numbers (grid.dim = {})", dim, dim));
+    return r;
+  }
+  for (int d = 0; d < dim; ++d) r[d] = v[d];
+  return r;
 }
 
-// Largest initial sound speed, for the CFL limit.
-double initial_sound_speed(const MpmConfig& c) {
-  const auto& m = c.material;
-  if (m.model == "md_closure") return std::sqrt(m.youngs_modulus / m.density);
-  if (m.model == "linear_elastic") {
-    const double nu = c.dim == 1 ? 0.0 : m.poisson_ratio;
-    const double M = c.dim == 1 ? m.youngs_modulus
-                                : m.youngs_modulus * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
-    return std::sqrt(std::max(M, 0.0) / m.density);
+Body read_body(Section s, int dim) {
+  Body b;
+  const std::vector<std::string> shapes =
+      dim == 2 ? std::vector<std::string>{"box", "circle", "polygon"} : std::vector<std::string>{"box", "sphere"};
+  const std::string shape = s.choice("shape", shapes);
+  b.shape = shape == "box" ? Body::Shape::box : shape == "circle" ? Body::Shape::circle
+            : shape == "sphere" ? Body::Shape::sphere : Body::Shape::polygon;
+  b.remove = s.boolean("remove", false);
+  if (b.shape == Body::Shape::box) {
+    b.lower = read_vector(s, "lower", dim, {}, true);
+    b.upper = read_vector(s, "upper", dim, {}, true);
+    for (int d = 0; d < dim; ++d)
+      s.check(b.upper[d] > b.lower[d], "upper", "must exceed lower on every axis");
+  } else if (b.shape == Body::Shape::polygon) {
+    const auto v = s.numbers("vertices");
+    s.check(v.size() >= 6 && v.size() % 2 == 0, "vertices", "needs x, y pairs of at least three corners: [x0, y0, x1, y1, ...]");
+    for (std::size_t k = 0; k + 1 < v.size(); k += 2) b.vertices.push_back({v[k], v[k + 1]});
+  } else {
+    b.center = read_vector(s, "center", dim, {}, true);
+    b.radius = s.number("radius");
+    s.positive("radius", b.radius);
   }
-  if (m.model == "ideal_gas_isothermal") return m.sound_speed;
-  // Adiabatic: the largest of sqrt(gamma p / rho) over the initial pressure profile.
-  double pmax = 0.0;
-  const double L = c.upper - c.lower;
-  for (int i = 0; i <= 4 * c.cells; ++i) {
-    const double x = c.lower + L * i / (4.0 * c.cells);
-    pmax = std::max(pmax, c.pressure(x, c.lower, L, c.dx()));
+  if (!b.remove) b.velocity = read_vector(s, "velocity", dim, {}, false);
+  else if (s.has("velocity")) s.check(false, "velocity", "a region that removes points has no velocity");
+  if (s.has("angular_velocity")) {
+    s.check(dim == 2 && b.shape == Body::Shape::circle && !b.remove, "angular_velocity",
+            "a rigid spin is given to a circle of a 2-D deck");
+    b.angular_velocity = s.number("angular_velocity");
   }
-  return std::sqrt(m.gamma * pmax / m.density);
+  return b;
 }
 
 MpmConfig read(Deck& deck) {
@@ -142,54 +145,81 @@ MpmConfig read(Deck& deck) {
   const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
 
   Section g = root.table("grid");
-  c.dim = static_cast<int>(g.integer("dim", 1));
-  g.check(c.dim == 1, "dim", "this version runs 1-D continuum decks (2-D and 3-D come later)");
-  c.lower = g.number("lower", 0.0);
-  c.upper = g.number("upper");
-  g.check(c.upper > c.lower, "upper", fmt::format("must exceed grid.lower = {}", c.lower));
-  c.cells = static_cast<int>(g.integer("cells"));
-  g.check(c.cells >= 1, "cells", "must be at least 1");
+  c.dim = g.integer_int("dim", 1, 1, 3);
+  const int dim = c.dim;
+  if (dim == 1) {
+    c.lower = g.number("lower", 0.0);
+    c.upper = g.number("upper");
+    g.check(c.upper > c.lower, "upper", fmt::format("must exceed grid.lower = {}", c.lower));
+    c.cells = g.integer_int("cells", 1, 10'000'000);
+    c.lower_all[0] = c.lower, c.upper_all[0] = c.upper, c.cells_all[0] = c.cells;
+  } else {
+    c.lower_all = read_vector(g, "lower", dim, {}, true);
+    c.upper_all = read_vector(g, "upper", dim, {1.0, 1.0, 1.0}, true);
+    for (int d = 0; d < dim; ++d)
+      g.check(c.upper_all[d] > c.lower_all[d], "upper", "must exceed grid.lower on every axis");
+    const auto n = g.integers("cells", 1, 100'000);
+    g.check(static_cast<int>(n.size()) == dim, "cells", fmt::format("needs {} integers (grid.dim = {})", dim, dim));
+    for (int d = 0; d < dim && d < static_cast<int>(n.size()); ++d) c.cells_all[d] = static_cast<int>(n[d]);
+    c.lower = c.lower_all[0], c.upper = c.upper_all[0], c.cells = c.cells_all[0];
+  }
 
   Section pt = root.table("particles");
-  c.per_cell = static_cast<int>(pt.integer("per_cell", 2));
-  pt.check(c.per_cell >= 1, "per_cell", "must be at least 1");
+  if (dim == 1 || !pt.has("per_cell") || pt.value_text("per_cell").find('[') == std::string::npos) {
+    const int n = pt.integer_int("per_cell", 2, 1, 1'000'000);
+    c.per_cell_all = {n, dim > 1 ? n : 1, dim > 2 ? n : 1};
+  } else {
+    const auto n = pt.integers("per_cell", 1, 1000);
+    pt.check(static_cast<int>(n.size()) == dim, "per_cell", fmt::format("needs {} integers (grid.dim = {})", dim, dim));
+    for (int d = 0; d < dim && d < static_cast<int>(n.size()); ++d) c.per_cell_all[d] = static_cast<int>(n[d]);
+  }
+  c.per_cell = c.per_cell_all[0];
   c.move = pt.boolean("move", true);
+  if (dim > 1)
+    for (auto& b : root.tables("body")) c.bodies.push_back(read_body(b, dim));
+  else if (root.has("body"))
+    root.check(false, "body", "1-D decks fill the grid; [[body]] regions are for 2-D and 3-D");
 
   Section sc = root.table("scheme");
   const std::string name = sc.choice("name", mpm::scheme_names());
   c.scheme.scheme = mpm::scheme_from_name(name);
   if (c.scheme.scheme == mpm::Scheme::ddmp_subpoints) {
-    c.scheme.subpoints = static_cast<int>(sc.integer("subpoints"));
-    sc.check(c.scheme.subpoints >= 1, "subpoints", "must be at least 1");
+    if (dim == 1 || sc.value_text("subpoints").find('[') == std::string::npos) {
+      c.scheme.subpoints = sc.integer_int("subpoints", 1, dim == 1 ? 4096 : dim == 2 ? 16 : 8);
+      c.scheme.subpoints_axes = {c.scheme.subpoints, dim > 1 ? c.scheme.subpoints : 1, dim > 2 ? c.scheme.subpoints : 1};
+    } else {
+      const auto n = sc.integers("subpoints", 1, 64);
+      sc.check(static_cast<int>(n.size()) == dim, "subpoints", fmt::format("needs {} integers (grid.dim = {})", dim, dim));
+      std::int64_t all = 1;
+      for (int d = 0; d < dim && d < static_cast<int>(n.size()); ++d) c.scheme.subpoints_axes[d] = static_cast<int>(n[d]), all *= n[d];
+      sc.check(all <= 4096, "subpoints", "at most 4096 sub-points per particle");
+      c.scheme.subpoints = c.scheme.subpoints_axes[0];
+    }
   } else if (sc.has("subpoints")) {
     sc.check(false, "subpoints", fmt::format("only ddmp_subpoints uses sub-points, not {}", name));
   }
   c.scheme.midpoint_gradient =
       sc.choice("update_velocity", {"midpoint", "updated"}, "midpoint") == "midpoint";
+  if (mpm::scheme_info(c.scheme.scheme).ddmp && dim > 1)
+    c.scheme.alpha = sc.choice("alpha", {"eq_7_3", "axis_product"}, "eq_7_3") == "eq_7_3" ? mpm::DdmpAlpha::eq_7_3
+                                                                                     : mpm::DdmpAlpha::axis_product;
+  else if (sc.has("alpha"))
+    sc.check(false, "alpha", "only ddmp and ddmp_subpoints in 2-D and 3-D choose their alpha");
 
   Section m = root.table("material");
   auto& mat = c.material;
-  mat.model = m.choice("model", kMaterials);
-  if (mat.model != "md_closure") {  // the closure's density is its crystal's
-    mat.density = m.number("density", 1.0);
-    m.positive("density", mat.density);
-  }
   mat.small_strain = m.boolean("small_strain", false);
-  if (mat.model == "linear_elastic") {
-    mat.youngs_modulus = m.number("youngs_modulus");
-    m.positive("youngs_modulus", mat.youngs_modulus);
-    mat.poisson_ratio = m.number("poisson_ratio", 0.0);
-    m.check(mat.poisson_ratio > -1.0 && mat.poisson_ratio < 0.5, "poisson_ratio",
-            "must lie in (-1, 0.5)");
-    mat.density_unstrained = m.choice("density_of", {"initial", "unstrained"}, "initial") == "unstrained";
-  } else if (mat.model == "md_closure") {
-    read_md_closure(m, deck_dir, c.units, mat);
-  } else if (mat.model == "ideal_gas_isothermal") {
-    mat.sound_speed = m.number("sound_speed");
-    m.positive("sound_speed", mat.sound_speed);
-  } else {
-    mat.gamma = m.number("gamma", 1.4);
-    m.check(mat.gamma > 1.0, "gamma", "must exceed 1");
+  mat.spec = material::read(m, material::Context{dim, deck_dir, c.units});
+  if (mat.spec) {
+    mat.model = mat.spec->name();
+    mat.density = mat.spec->density();
+    mat.density_unstrained = mat.spec->density_of_unstrained();
+    if (const auto* e = dynamic_cast<const material::LinearElasticModel*>(mat.spec.get()))
+      mat.youngs_modulus = e->E;
+    if (const auto* gas = dynamic_cast<const material::IdealGasModel*>(mat.spec.get()))
+      mat.sound_speed = gas->c, mat.gamma = gas->gamma;
+    if (const auto* md = dynamic_cast<const material::MdClosureModel*>(mat.spec.get()))
+      mat.md = md->md, mat.youngs_modulus = md->c11;
   }
 
   Section in = root.optional_table("initial");
@@ -199,23 +229,48 @@ MpmConfig read(Deck& deck) {
     c.strain = read_profile(in.optional_table("strain"), 0.0);
     if (in.has("pressure")) in.check(false, "pressure", "a solid takes [initial.strain], not pressure");
   } else {
-    const double p_default =
-        mat.model == "ideal_gas_isothermal" ? mat.sound_speed * mat.sound_speed * mat.density : 1.0;
+    const auto* gas = dynamic_cast<const material::IdealGasModel*>(mat.spec.get());
+    const double p_default = gas && gas->isothermal ? gas->c * gas->c * gas->rho : 1.0;
     c.pressure = read_profile(in.optional_table("pressure"), p_default);
     if (in.has("strain")) in.check(false, "strain", "a gas takes [initial.pressure], not strain");
   }
 
   Section b = root.optional_table("boundary");
-  c.boundary.left = read_side(b.optional_table("left"));
-  c.boundary.right = read_side(b.optional_table("right"));
+  if (dim == 1) {
+    c.boundary.left() = read_side(b.optional_table("left"), 1);
+    c.boundary.right() = read_side(b.optional_table("right"), 1);
+  } else {
+    for (int f = 0; f < 2 * dim; ++f) c.boundary.face[f] = read_side(b.optional_table(mpm::face_name(f)), dim);
+  }
 
   Section v = root.optional_table("viscosity");
   c.viscosity = v.number("linear", 0.0);
   v.non_negative("linear", c.viscosity);
+  c.tensor_viscosity = v.boolean("tensor", false);
+  c.c_L = v.number("c_L", 1.5);
+  v.non_negative("c_L", c.c_L);
+  c.c_q = v.number("c_q", 2.0);
+  v.non_negative("c_q", c.c_q);
+  if (c.tensor_viscosity && c.viscosity > 0.0)
+    v.check(false, "tensor", "choose the linear or the tensor form, not both");
+
+  Section md = root.optional_table("mass_distribution");
+  // On by default in 2-D and 3-D for every scheme: free surfaces inside the grid leave
+  // nodes of tiny mass whose velocities would otherwise blow up the gradient.
+  c.mass_distribution = md.boolean("on", dim > 1);
+  c.mass_fraction = md.number("fraction", 0.04);
+  md.check(c.mass_fraction >= 0.0 && c.mass_fraction < 1.0, "fraction", "must lie in [0, 1) (of a point's mass)");
 
   Section t = root.table("time");
-  c.dt = t.number("dt");
-  t.positive("dt", c.dt);
+  if (dim > 1 && t.has("dt") && t.value_text("dt").find("cfl") != std::string::npos) {
+    c.cfl_dt = t.choice("dt", {"cfl"}) == "cfl";
+    c.cfl = t.number("cfl", 0.5);
+    t.check(c.cfl > 0.0 && c.cfl <= 1.0, "cfl", "must lie in (0, 1]");
+  } else {
+    c.dt = t.number("dt");
+    t.positive("dt", c.dt);
+    if (t.has("cfl")) t.check(false, "cfl", "only dt = \"cfl\" (2-D, 3-D) reads it; a fixed dt is checked by cfl_limit");
+  }
   c.end = t.number("end");
   t.positive("end", c.end);
   const double cfl_limit = t.number("cfl_limit", 1.0);
@@ -231,9 +286,11 @@ MpmConfig read(Deck& deck) {
   c.write_nodes = o.boolean("nodes", true);
   c.write_particles = o.boolean("particles", true);
   c.plot = o.boolean("plot", true);
+  c.write_vtk = o.boolean("vtk", dim > 1);
 
   Section r = root.optional_table("reference");
-  if (r.present()) {
+  if (r.present() && dim > 1) r.error("the references (analytic and direct-MD) compare 1-D decks; a 2-D or 3-D deck has none yet");
+  if (r.present() && dim == 1) {
     c.reference.name = r.choice("name", kReferences);
     c.reference.fields = r.strings("fields", {});
     const std::vector<std::string> known{"velocity", "strain", "stress", "pressure", "density"};
@@ -258,16 +315,33 @@ MpmConfig read(Deck& deck) {
   }
 
   // Checks that need several sections.
-  if (c.upper > c.lower && c.cells >= 1 && c.dt > 0.0 && mat.density > 0.0) {
-    const double cs_max = initial_sound_speed(c);
-    const double limit = cfl_limit * c.dx() / cs_max;
-    if (std::isfinite(limit))
+  double dx_min = c.dx();
+  for (int d = 1; d < dim; ++d) dx_min = std::min(dx_min, (c.upper_all[d] - c.lower_all[d]) / c.cells_all[d]);
+  if (c.upper > c.lower && c.cells >= 1 && (c.dt > 0.0 || c.cfl_dt) && mat.density > 0.0 && mat.spec) {
+    // The largest wave speed over the initial pressure profile, plus in 2-D/3-D the
+    // largest initial speed of a body.
+    double pmax = 0.0;
+    const double L = c.upper - c.lower;
+    if (!mat.solid())
+      for (int i = 0; i <= 4 * c.cells; ++i)
+        pmax = std::max(pmax, c.pressure(c.lower + L * i / (4.0 * c.cells), c.lower, L, c.dx()));
+    double cs_max = mat.spec->wave_speed(dim, mat.density, pmax);
+    double vmax = 0.0;
+    for (const auto& body : c.bodies) {
+      double v2 = 0.0;
+      for (int d = 0; d < dim; ++d) v2 += body.velocity[d] * body.velocity[d];
+      vmax = std::max(vmax, std::sqrt(v2));
+    }
+    cs_max += vmax;
+    const double limit = cfl_limit * dx_min / cs_max;
+    if (c.cfl_dt) c.dt = c.cfl * dx_min / cs_max;  // the first step's; later ones follow the state
+    if (std::isfinite(limit) && !c.cfl_dt)
       t.check(c.dt <= limit, "dt",
               fmt::format("exceeds the CFL limit cfl_limit * dx / c = {} * {} / {} = {}", cfl_limit,
-                          c.dx(), cs_max, limit));
-    if (std::abs(c.dt * std::llround(c.end / c.dt) - c.end) > 1e-9 * c.end)
+                          dx_min, cs_max, limit));
+    if (!c.cfl_dt && std::abs(c.dt * std::llround(c.end / c.dt) - c.end) > 1e-9 * c.end)
       t.check(false, "end", fmt::format("is not a whole number of steps of dt = {}", c.dt));
-    if (mat.model == "md_closure" && mat.md.dt > 0)
+    if (dynamic_cast<const material::MdClosureModel*>(mat.spec.get()) && mat.md.dt > 0)
       t.check(mat.md.md_steps(c.dt) > 0, "dt",
               fmt::format("is {} ps, not a whole number of MD steps of material.md.dt = {} ps",
                           c.dt * mat.md.units.time_ps, mat.md.dt));

@@ -30,11 +30,7 @@ toml::table& RunRecord::parent_of(std::string_view dotted, std::string& leaf) {
 
 void RunRecord::set(std::string_view dotted, double value) {
   std::string leaf;
-  // JSON has no NaN or Inf: such a value is written as a string that says so.
-  if (std::isfinite(value))
-    parent_of(dotted, leaf).insert_or_assign(leaf, value);
-  else
-    parent_of(dotted, leaf).insert_or_assign(leaf, fmt::format("{}", value));
+  parent_of(dotted, leaf).insert_or_assign(leaf, value);
 }
 void RunRecord::set(std::string_view dotted, std::int64_t value) {
   std::string leaf;
@@ -66,11 +62,70 @@ void RunRecord::append(std::string_view dotted, toml::table table) {
   parent[leaf].as_array()->push_back(std::move(table));
 }
 
-std::string RunRecord::json() const {
+std::string RunRecord::json() const { return json_text(root_); }
+
+namespace {
+
+// Stands for null in the formatter's output (toml++ has no null), then replaced.
+constexpr std::string_view kNullMark = "@@mpmx-non-finite-null@@";
+
+bool non_finite(const toml::node& n) {
+  return n.is_floating_point() && !std::isfinite(n.as_floating_point()->get());
+}
+
+// Replaces every non-finite number under `n` by the mark, noting its dotted key.
+void mark_non_finite(toml::node& n, const std::string& path, std::vector<std::string>& found) {
+  if (auto* t = n.as_table()) {
+    std::vector<std::string> keys;
+    for (auto&& [k, v] : *t) {
+      const std::string key = path.empty() ? std::string(k.str()) : path + "." + std::string(k.str());
+      if (non_finite(v)) {
+        keys.emplace_back(k.str());
+        found.push_back(key);
+      } else {
+        mark_non_finite(v, key, found);
+      }
+    }
+    for (const auto& k : keys) t->insert_or_assign(k, std::string(kNullMark));
+  } else if (auto* a = n.as_array()) {
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const std::string key = fmt::format("{}[{}]", path, i);
+      if (non_finite(*a->get(i))) {
+        found.push_back(key);
+        a->replace(a->cbegin() + static_cast<std::ptrdiff_t>(i), std::string(kNullMark));
+      } else {
+        mark_non_finite(*a->get(i), key, found);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::string json_text(const toml::table& table) {
+  toml::table t = table;
+  std::vector<std::string> found;
+  mark_non_finite(t, "", found);
+  if (!found.empty()) {
+    toml::array names;
+    for (const auto& f : found) names.push_back(f);
+    t.insert_or_assign("non_finite", std::move(names));
+  }
   std::ostringstream os;
-  os << toml::json_formatter{root_};
-  os << '\n';
-  return os.str();
+  os << toml::json_formatter{t} << '\n';
+  std::string s = os.str();
+  if (found.empty()) return s;
+  const std::string mark = fmt::format("\"{}\"", kNullMark);
+  std::string out;
+  out.reserve(s.size());
+  for (std::size_t at = 0;;) {
+    const std::size_t hit = s.find(mark, at);
+    out.append(s, at, hit == std::string::npos ? std::string::npos : hit - at);
+    if (hit == std::string::npos) break;
+    out += "null";
+    at = hit + mark.size();
+  }
+  return out;
 }
 
 void RunRecord::write(const std::string& path) const { write_file_atomic(path, json()); }

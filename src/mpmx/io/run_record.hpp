@@ -1,7 +1,8 @@
 #pragma once
 // run.json: one JSON document per run (the deck echoed, version, timings, conservation,
 // error norms), built as a TOML table and written atomically so a reader never sees
-// half a file.
+// half a file. It is always valid JSON: JSON has no NaN or Inf, so a non-finite number
+// (a run the physics stopped) is written as null and named in a root "non_finite" list.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,8 @@ namespace mpmx::io {
 class RunRecord {
  public:
   // Sets a value at a dotted path ("errors.velocity.l1"), creating tables on the way.
+  // A non-finite double is kept as it is (a checkpoint's TOML holds it) and written to
+  // JSON as null (json_text).
   void set(std::string_view dotted, double value);
   void set(std::string_view dotted, std::int64_t value);
   void set(std::string_view dotted, int value) { set(dotted, static_cast<std::int64_t>(value)); }
@@ -38,5 +41,10 @@ class RunRecord {
 
 // Writes `text` to `path` atomically (temporary file in the same folder, then rename).
 void write_file_atomic(const std::string& path, std::string_view text);
+
+// The JSON text of a table (toml++'s JSON layout), valid JSON whatever it holds: each
+// non-finite number becomes null, and the root gets "non_finite": the dotted keys of
+// those values ("stress_gpa[0][2]", "box.lx"), in order; no "non_finite" when all are finite.
+std::string json_text(const toml::table& table);
 
 }  // namespace mpmx::io

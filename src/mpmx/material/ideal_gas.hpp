@@ -4,7 +4,11 @@
 //   adiabatic   p = K rho^gamma    (gamma law; K = p0 / rho0^gamma kept per point).
 // The strain array records the integrated volumetric strain for output only.
 #include <cmath>
+#include <istream>
+#include <ostream>
+#include <vector>
 
+#include "mpmx/core/error.hpp"
 #include "mpmx/material/material.hpp"
 
 namespace mpmx::material {
@@ -22,33 +26,52 @@ class IdealGas final : public Material<Dim> {
   }
 
   // For the adiabatic gas the caller has put the initial pressure in -stress[0].
-  void initialize(mpm::Particles<Dim>& p) override {
-    for (std::size_t q = 0; q < p.size(); ++q) {
-      if (mode_ == Mode::adiabatic)
-        p.entropy[q] = -p.stress[0][q] / std::pow(p.density(q), gamma_);
-      set_pressure(p, q);
+  void initialize(const Points<Dim>& p) override {
+    if (mode_ == Mode::adiabatic) {
+      entropy_.assign(p.size(), 0.0);
+      for (std::size_t q = 0; q < p.size(); ++q) entropy_[q] = -p.stress[0][q] / std::pow(p.density(q), gamma_);
     }
+    for (std::size_t q = 0; q < p.size(); ++q) set_pressure(p, q);
   }
 
-  void update_stress(mpm::Particles<Dim>& p, double dt) override {
+  void update_stress(const Points<Dim>& p, double dt) override {
     for (std::size_t q = 0; q < p.size(); ++q) {
       for (int a = 0; a < Dim; ++a) p.strain[a * Dim + a][q] += dt * p.grad_v[a * Dim + a][q];
       set_pressure(p, q);
     }
   }
 
-  double sound_speed(const mpm::Particles<Dim>& p, std::size_t q) const override {
+  double sound_speed(const Points<Dim>& p, std::size_t q) const override {
     if (mode_ == Mode::isothermal) return c_;
     return std::sqrt(gamma_ * pressure(p, q) / p.density(q));
   }
 
-  double pressure(const mpm::Particles<Dim>& p, std::size_t q) const {
+  // Adiabatic: the internal energy p V / (gamma - 1); isothermal: none kept.
+  double stored_energy(const Points<Dim>& p, std::size_t q) const override {
+    return mode_ == Mode::adiabatic ? pressure(p, q) * p.volume[q] / (gamma_ - 1.0) : 0.0;
+  }
+
+  double pressure(const Points<Dim>& p, std::size_t q) const {
     const double rho = p.density(q);
-    return mode_ == Mode::isothermal ? c_ * c_ * rho : p.entropy[q] * std::pow(rho, gamma_);
+    return mode_ == Mode::isothermal ? c_ * c_ * rho : entropy_[q] * std::pow(rho, gamma_);
+  }
+
+  void save(std::ostream& out) const override {
+    const std::int64_t n = static_cast<std::int64_t>(entropy_.size());
+    out.write(reinterpret_cast<const char*>(&n), sizeof n);
+    out.write(reinterpret_cast<const char*>(entropy_.data()), static_cast<std::streamsize>(n * sizeof(double)));
+  }
+  void load(std::istream& in) override {
+    std::int64_t n = 0;
+    in.read(reinterpret_cast<char*>(&n), sizeof n);
+    if (!in || n < 0 || n > (std::int64_t{1} << 34)) throw InputError("checkpoint: the gas state is corrupt");
+    entropy_.assign(static_cast<std::size_t>(n), 0.0);
+    in.read(reinterpret_cast<char*>(entropy_.data()), static_cast<std::streamsize>(n * sizeof(double)));
+    if (!in) throw InputError("checkpoint: the gas state is truncated");
   }
 
  private:
-  void set_pressure(mpm::Particles<Dim>& p, std::size_t q) const {
+  void set_pressure(const Points<Dim>& p, std::size_t q) const {
     const double pr = pressure(p, q);
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) p.stress[a * Dim + b][q] = a == b ? -pr : 0.0;
@@ -56,6 +79,7 @@ class IdealGas final : public Material<Dim> {
 
   Mode mode_;
   double c_, gamma_;
+  std::vector<double> entropy_;  // adiabatic: p / rho^gamma per point
 };
 
 }  // namespace mpmx::material

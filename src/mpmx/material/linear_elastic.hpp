@@ -1,6 +1,12 @@
 #pragma once
-// Linear elastic solid, stress from the integrated strain rate (ADMPM eqs. 1.37-1.38):
-// eps += dt sym(grad v); sigma = lambda tr(eps) I + 2 mu eps; in 1-D sigma = E eps.
+// Linear elastic solid. In 1-D the stress follows the integrated strain (ADMPM eqs.
+// 1.37-1.38): eps += dt grad v; sigma = E eps. In 2-D (plane strain) and 3-D it is
+// hypoelastic with the Jaumann rate, sigma_dot = lambda tr(D) I + 2 mu D + W sigma -
+// sigma W, so that a rigid rotation carries the stress along and creates none (the
+// Hughes-Winget step of jaumann.hpp).
+#include <cmath>
+
+#include "mpmx/material/jaumann.hpp"
 #include "mpmx/material/material.hpp"
 
 namespace mpmx::material {
@@ -13,59 +19,74 @@ class LinearElastic final : public Material<Dim> {
 
   std::string name() const override { return "linear_elastic"; }
 
-  void initialize(mpm::Particles<Dim>& p) override {
+  void initialize(const Points<Dim>& p) override {
     for (std::size_t q = 0; q < p.size(); ++q) stress_from_strain(p, q);
   }
 
-  void update_stress(mpm::Particles<Dim>& p, double dt) override {
-    if constexpr (Dim == 1) {  // one plain loop that vectorises; 0.5 (L + L) = L exactly
-      double* __restrict eps = p.strain[0].data();
-      double* __restrict sig = p.stress[0].data();
-      const double* __restrict L = p.grad_v[0].data();
-      const std::size_t n = p.size();
+  void update_stress(const Points<Dim>& p, double dt) override {
+    const std::size_t n = p.size();
+    if constexpr (Dim == 1) {  // one plain loop that vectorises
+      double* __restrict eps = p.strain[0];
+      double* __restrict sig = p.stress[0];
+      const double* __restrict L = p.grad_v[0];
 #pragma omp simd
       for (std::size_t q = 0; q < n; ++q) {
         eps[q] += dt * L[q];
         sig[q] = E_ * eps[q];
       }
-      return;
-    }
-    for (std::size_t q = 0; q < p.size(); ++q) {
-      for (int a = 0; a < Dim; ++a)
-        for (int b = 0; b < Dim; ++b)
-          p.strain[a * Dim + b][q] +=
-              dt * 0.5 * (p.grad_v[a * Dim + b][q] + p.grad_v[b * Dim + a][q]);
-      stress_from_strain(p, q);
+    } else {
+      const double mu = shear_modulus(), lambda = lame_lambda();
+#pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
+      for (std::size_t q = 0; q < n; ++q) {
+        const jaumann::Mat<Dim> L = jaumann::gather<Dim>(p.grad_v, q);
+        const jaumann::Mat<Dim> D = jaumann::rate_of_deformation<Dim>(L);
+        const jaumann::Mat<Dim> rate =
+            2.0 * mu * D + lambda * D.trace() * jaumann::Mat<Dim>::Identity();
+        const jaumann::Mat<Dim> Rh = jaumann::half_step_rotation<Dim>(jaumann::spin<Dim>(L), dt);
+        const jaumann::Mat<Dim> sig = jaumann::objective_step<Dim>(jaumann::gather<Dim>(p.stress, q), Rh, dt * rate);
+        jaumann::scatter<Dim>(sig, q, p.stress);
+        for (int a = 0; a < Dim; ++a)
+          for (int b = 0; b < Dim; ++b) p.eps(q, a, b) += dt * D(a, b);
+      }
     }
   }
 
-  double sound_speed(const mpm::Particles<Dim>& p, std::size_t q) const override {
+  double sound_speed(const Points<Dim>& p, std::size_t q) const override {
     return std::sqrt(p_wave_modulus() / p.density(q));
   }
 
-  double youngs_modulus() const { return E_; }
+  // 1/2 sigma : eps over the reference volume (ADMPM eq. 8.26 in 1-D).
+  double stored_energy(const Points<Dim>& p, std::size_t q) const override {
+    double w = 0.0;
+    for (int c = 0; c < Dim * Dim; ++c) w += p.stress[c][q] * p.strain[c][q];
+    return 0.5 * p.volume0[q] * w;
+  }
 
+  void set_threads(int threads) override { threads_ = threads > 0 ? threads : 1; }
+  double youngs_modulus() const { return E_; }
+  double shear_modulus() const { return E_ / (2.0 * (1.0 + nu_)); }
+  double lame_lambda() const { return E_ * nu_ / ((1.0 + nu_) * (1.0 - 2.0 * nu_)); }
   double p_wave_modulus() const {
     if (Dim == 1) return E_;
     return E_ * (1.0 - nu_) / ((1.0 + nu_) * (1.0 - 2.0 * nu_));
   }
 
  private:
-  void stress_from_strain(mpm::Particles<Dim>& p, std::size_t q) const {
+  // The initial stress of an initial strain (zero rotation: no history yet).
+  void stress_from_strain(const Points<Dim>& p, std::size_t q) const {
     if constexpr (Dim == 1) {
       p.stress[0][q] = E_ * p.strain[0][q];
     } else {
-      const double mu = E_ / (2.0 * (1.0 + nu_));
-      const double lambda = E_ * nu_ / ((1.0 + nu_) * (1.0 - 2.0 * nu_));
+      const double mu = shear_modulus(), lambda = lame_lambda();
       double tr = 0.0;
-      for (int a = 0; a < Dim; ++a) tr += p.strain[a * Dim + a][q];
+      for (int a = 0; a < Dim; ++a) tr += p.eps(q, a, a);
       for (int a = 0; a < Dim; ++a)
-        for (int b = 0; b < Dim; ++b)
-          p.stress[a * Dim + b][q] = 2.0 * mu * p.strain[a * Dim + b][q] + (a == b ? lambda * tr : 0.0);
+        for (int b = 0; b < Dim; ++b) p.sigma(q, a, b) = 2.0 * mu * p.eps(q, a, b) + (a == b ? lambda * tr : 0.0);
     }
   }
 
   double E_, nu_;
+  int threads_ = 1;
 };
 
 }  // namespace mpmx::material

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "mpmx/mpm/particles.hpp"
+#include "mpmx/material/points.hpp"
 
 namespace mpmx::material {
 
@@ -16,14 +16,23 @@ class Material {
  public:
   virtual ~Material() = default;
   virtual std::string name() const = 0;
-  // Sets the initial stress (and any per-point state) from the initial fields.
-  virtual void initialize(mpm::Particles<Dim>& p) = 0;
+  // Sets the initial stress (and any per-point state) from the initial fields: the
+  // strain array for solids; for gases the caller has put -p0 on the stress diagonal.
+  virtual void initialize(const Points<Dim>& p) = 0;
   // Stress at t^{n+1} from the velocity gradient grad_v (eq. 4.10) and the updated
   // volume; dt is the continuum step. A closure may keep per-point state (md_closure).
-  virtual void update_stress(mpm::Particles<Dim>& p, double dt) = 0;
+  virtual void update_stress(const Points<Dim>& p, double dt) = 0;
   // Longitudinal sound speed of point q (for the CFL limit and artificial viscosity).
-  virtual double sound_speed(const mpm::Particles<Dim>& p, std::size_t q) const = 0;
-  // Per-point state beyond the particle arrays, for checkpoints (none by default).
+  virtual double sound_speed(const Points<Dim>& p, std::size_t q) const = 0;
+  // Energy stored in point q (elastic strain energy, or internal energy), for the
+  // energy balance of run.json; zero where the law keeps no such account.
+  virtual double stored_energy(const Points<Dim>&, std::size_t) const { return 0.0; }
+  // The work dt q : D of the artificial viscous stress q, which a law that keeps an
+  // energy account (Mie-Gruneisen) adds as heat; nothing by default.
+  virtual void add_viscous_heat(const Points<Dim>&, const std::array<double*, Dim * Dim>&, double) {}
+  // Threads a law may spread its points over (results never depend on them).
+  virtual void set_threads(int) {}
+  // Per-point state beyond the point arrays, for checkpoints (none by default).
   virtual void save(std::ostream&) const {}
   virtual void load(std::istream&) {}
 };

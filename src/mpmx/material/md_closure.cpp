@@ -52,7 +52,7 @@ md::SystemOptions MdClosure::box_options() const {
   return o;
 }
 
-void MdClosure::initialize(mpm::Particles<1>& p) {
+void MdClosure::initialize(const Points<1>& p) {
   const std::size_t n = p.size();
   const double a0 = props_.equilibrium.lattice_constant;
   // Each point's box built on the threads (section 6.2), then kept in point order.
@@ -75,7 +75,7 @@ void MdClosure::initialize(mpm::Particles<1>& p) {
   atom_steps_ = static_cast<std::int64_t>(n) * atoms_per_point() * cfg_.relax_steps;
 }
 
-void MdClosure::update_stress(mpm::Particles<1>& p, double dt) {
+void MdClosure::update_stress(const Points<1>& p, double dt) {
   const std::size_t n = p.size();
   const int steps = cfg_.md_steps(dt);
   if (steps == 0)
@@ -92,7 +92,7 @@ void MdClosure::update_stress(mpm::Particles<1>& p, double dt) {
   atom_steps_ += static_cast<std::int64_t>(n) * atoms_per_point() * steps;
 }
 
-double MdClosure::sound_speed(const mpm::Particles<1>& p, std::size_t q) const {
+double MdClosure::sound_speed(const Points<1>& p, std::size_t q) const {
   return std::sqrt(modulus() / p.density(q));
 }
 

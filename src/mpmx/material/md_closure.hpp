@@ -49,10 +49,10 @@ class MdClosure final : public Material<1> {
 
   std::string name() const override { return "md_closure"; }
   // Builds one box per point from p.strain (engineering, along x); sets the stress.
-  void initialize(mpm::Particles<1>& p) override;
-  void update_stress(mpm::Particles<1>& p, double dt) override;
+  void initialize(const Points<1>& p) override;
+  void update_stress(const Points<1>& p, double dt) override;
   // sqrt(C11 / rho): the 0 K uniaxial-strain wave speed, for the viscosity.
-  double sound_speed(const mpm::Particles<1>& p, std::size_t q) const override;
+  double sound_speed(const Points<1>& p, std::size_t q) const override;
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;
 
@@ -62,6 +62,8 @@ class MdClosure final : public Material<1> {
   int atoms_per_point() const { return cfg_.atoms_per_point(); }
   std::int64_t atom_steps() const { return atom_steps_; }
   int threads() const { return batch_.threads(); }
+  // The run's --threads (0: OpenMP's default); set before initialize().
+  void set_threads(int threads) { batch_ = multiscale::Batch(threads); }
   const std::vector<md::System>& boxes() const { return boxes_; }
 
  private:

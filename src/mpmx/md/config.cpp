@@ -1,12 +1,20 @@
 #include "mpmx/md/config.hpp"
 
+#include <climits>
+#include <cstdint>
 #include <filesystem>
+#include <limits>
 
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/md/potential/eam_file.hpp"
 
 namespace mpmx::md {
+
+namespace {
+constexpr std::int64_t kMax64 = std::numeric_limits<std::int64_t>::max();
+}  // namespace
 
 PotentialSpec read_potential(io::Section pot, const std::string& deck_dir) {
   PotentialSpec spec;
@@ -21,6 +29,21 @@ PotentialSpec read_potential(io::Section pot, const std::string& deck_dir) {
       }
     }
     spec.elements = pot.strings("elements", {});
+    // Open and parse the file now, so that `check` refuses what `run` would: a corrupt
+    // or truncated file, an element it does not hold.
+    if (!spec.file.empty()) {
+      try {
+        const EamTables t = read_eam(spec.file);
+        if (t.format != "funcfl")
+          for (const auto& el : spec.elements)
+            if (t.element_index(el) < 0)
+              pot.check(false, "elements",
+                        fmt::format("element '{}' is not in {} (it has: {})", el, spec.file,
+                                    fmt::join(t.elements, ", ")));
+      } catch (const InputError& e) {
+        pot.check(false, "file", e.what());
+      }
+    }
   } else {
     spec.epsilon = pot.number("epsilon");
     pot.positive("epsilon", spec.epsilon);
@@ -37,10 +60,8 @@ PotentialSpec read_potential(io::Section pot, const std::string& deck_dir) {
       pot.positive("a", spec.a);
       spec.c = pot.number("c");
       pot.positive("c", spec.c);
-      spec.n = static_cast<int>(pot.integer("n"));
-      pot.check(spec.n > 0, "n", "must be a positive integer");
-      spec.m = static_cast<int>(pot.integer("m"));
-      pot.check(spec.m > 0, "m", "must be a positive integer");
+      spec.n = pot.integer_int("n", 1, 100);
+      spec.m = pot.integer_int("m", 1, 100);
     }
   }
   return spec;
@@ -58,14 +79,9 @@ MdConfig read_md_config(io::Deck& deck) {
   lat.choice("type", {"fcc"}, "fcc");
   c.lattice_constant = lat.number("constant");
   lat.positive("constant", c.lattice_constant);
-  const auto cells = lat.numbers("cells");
+  const auto cells = lat.integers("cells", 1, 1000);  // unit cells along x, y, z
   if (cells.size() == 3 || cells.size() == 1) {
-    for (int d = 0; d < 3; ++d) {
-      const double v = cells[cells.size() == 3 ? d : 0];
-      lat.check(v >= 1 && v == static_cast<int>(v) && v <= 1000, "cells",
-                "each entry must be a whole number of unit cells from 1 to 1000");
-      c.cells[d] = static_cast<int>(v);
-    }
+    for (int d = 0; d < 3; ++d) c.cells[d] = static_cast<int>(cells[cells.size() == 3 ? d : 0]);
   } else {
     lat.check(false, "cells", "expected [nx, ny, nz] or [n]");
   }
@@ -75,23 +91,18 @@ MdConfig read_md_config(io::Deck& deck) {
   auto th = root.optional_table("thermal");
   c.temperature = th.number("temperature", 0.0);
   th.non_negative("temperature", c.temperature);
-  const auto seed = th.integer("seed", 1);
-  th.check(seed >= 0, "seed", "must be >= 0");
-  c.seed = static_cast<std::uint64_t>(seed);
-  c.relax_steps = th.integer("relax_steps", 0);
-  th.check(c.relax_steps >= 0, "relax_steps", "must be >= 0");
+  c.seed = static_cast<std::uint64_t>(th.integer("seed", 1, 0, kMax64));
+  c.relax_steps = th.integer("relax_steps", 0, 0, kMax64);
 
   auto run = root.table("run");
   c.dt = run.number("dt");
   run.positive("dt", c.dt);
   run.check(c.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
-  c.steps = run.integer("steps");
-  run.check(c.steps >= 0, "steps", "must be >= 0");
-  c.thermo = run.integer("thermo", 100);
-  run.check(c.thermo >= 1, "thermo", "must be >= 1");
+  c.steps = run.integer("steps", 0, kMax64);
+  c.thermo = run.integer("thermo", 100, 1, INT_MAX);
   run.choice("ensemble", {"nve"}, "nve");
-  c.dump_every = run.integer("dump_every", 0);
-  run.check(c.dump_every >= 0 && (c.dump_every == 0 || c.dump_every % c.thermo == 0), "dump_every",
+  c.dump_every = run.integer("dump_every", 0, 0, INT_MAX);
+  run.check(c.dump_every == 0 || c.dump_every % c.thermo == 0, "dump_every",
             "must be 0 (no dump) or a multiple of thermo");
   c.options.skin = run.number("skin", 1.0);
   run.non_negative("skin", c.options.skin);
@@ -117,26 +128,21 @@ MdConfig read_md_config(io::Deck& deck) {
     scan.positive("lattice_from", c.scan_from);
     c.scan_to = scan.number("lattice_to");
     scan.check(c.scan_to > c.scan_from, "lattice_to", "must exceed lattice_from");
-    c.scan_points = static_cast<int>(scan.integer("points", 41));
-    scan.check(c.scan_points >= 3 && c.scan_points <= 100000, "points", "must be from 3 to 100000");
+    c.scan_points = scan.integer_int("points", 41, 3, 100000);
   }
   auto bar = root.optional_table("bar");
   if (bar.present()) {
     c.bar = true;
     BarConfig& b = c.bar_config;
-    b.cells_x = static_cast<int>(bar.integer("cells_x"));
-    bar.check(b.cells_x >= 2 && b.cells_x <= 100000, "cells_x", "must be from 2 to 100000");
-    b.cells_yz = static_cast<int>(bar.integer("cells_yz"));
-    bar.check(b.cells_yz >= 1 && b.cells_yz <= 1000, "cells_yz", "must be from 1 to 1000");
+    b.cells_x = bar.integer_int("cells_x", 2, 100000);
+    b.cells_yz = bar.integer_int("cells_yz", 1, 1000);
     b.strain_left = bar.number("strain_left", 0.0);
     bar.check(b.strain_left > -0.5 && b.strain_left < 0.5, "strain_left", "must lie in (-0.5, 0.5)");
     b.split = bar.number("split", 0.5);
     bar.check(b.split > 0 && b.split < 1, "split", "must lie in (0, 1)");
     b.piston_velocity = bar.number("piston_velocity", 0.0);
-    b.bins = static_cast<int>(bar.integer("bins", 100));
-    bar.check(b.bins >= 1 && b.bins <= 100000, "bins", "must be from 1 to 100000");
-    c.bar_every = bar.integer("output_every", 100);
-    bar.check(c.bar_every >= 1, "output_every", "must be >= 1");
+    b.bins = bar.integer_int("bins", 100, 1, 100000);
+    c.bar_every = bar.integer("output_every", 100, 1, INT_MAX);
     b.lattice_constant = c.lattice_constant;
     b.temperature = c.temperature;
     b.seed = c.seed;

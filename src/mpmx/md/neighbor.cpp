@@ -33,26 +33,27 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) 
 
   // Ghosts: every image within rs of the fundamental box (eqs. 5.10-5.17 with the
   // sliding offsets of the upper-triangular box).
+  const bool px = periodic[0], py = periodic[1], pz = periodic[2];
   for (int i = 0; i < nlocal; ++i) {
     const double xi = atoms.x[i], yi = atoms.y[i], zi = atoms.z[i];
-    const int c0 = static_cast<int>(std::ceil((-rs - zi) / box.lz));
-    const int c1 = static_cast<int>(std::floor((box.lz + rs - zi) / box.lz));
+    const int c0 = pz ? static_cast<int>(std::ceil((-rs - zi) / box.lz)) : 0;
+    const int c1 = pz ? static_cast<int>(std::floor((box.lz + rs - zi) / box.lz)) : 0;
     for (int c = c0; c <= c1; ++c) {
       const double zc = zi + c * box.lz;
-      if (zc < -rs || zc >= box.lz + rs) continue;
+      if (pz && (zc < -rs || zc >= box.lz + rs)) continue;
       const double yc0 = yi + c * box.yz;
-      const int b0 = static_cast<int>(std::ceil((-rs - yc0) / box.ly));
-      const int b1 = static_cast<int>(std::floor((box.ly + rs - yc0) / box.ly));
+      const int b0 = py ? static_cast<int>(std::ceil((-rs - yc0) / box.ly)) : 0;
+      const int b1 = py ? static_cast<int>(std::floor((box.ly + rs - yc0) / box.ly)) : 0;
       for (int b = b0; b <= b1; ++b) {
         const double yc = yc0 + b * box.ly;
-        if (yc < -rs || yc >= box.ly + rs) continue;
+        if (py && (yc < -rs || yc >= box.ly + rs)) continue;
         const double xc0 = xi + c * box.xz + b * box.xy;
-        const int a0 = static_cast<int>(std::ceil((-rs - xc0) / box.lx));
-        const int a1 = static_cast<int>(std::floor((box.lx + rs - xc0) / box.lx));
+        const int a0 = px ? static_cast<int>(std::ceil((-rs - xc0) / box.lx)) : 0;
+        const int a1 = px ? static_cast<int>(std::floor((box.lx + rs - xc0) / box.lx)) : 0;
         for (int a = a0; a <= a1; ++a) {
           if (a == 0 && b == 0 && c == 0) continue;
           const double xc = xc0 + a * box.lx;
-          if (xc < -rs || xc >= box.lx + rs) continue;
+          if (px && (xc < -rs || xc >= box.lx + rs)) continue;
           if (std::abs(a) > 127 || std::abs(b) > 127 || std::abs(c) > 127)
             throw RunError(fmt::format("box {} x {} x {} is too small for cutoff+skin {}", box.lx,
                                        box.ly, box.lz, rs));
@@ -73,8 +74,17 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) 
   }
   nall = static_cast<int>(x.size());
 
-  // Bins of edge >= rs over [-rs, L+rs) (no periodic wrap: ghosts are explicit).
-  const double ext[3] = {box.lx + 2 * rs, box.ly + 2 * rs, box.lz + 2 * rs};
+  // Bins of edge >= rs over [-rs, L+rs) (no periodic wrap: ghosts are explicit); along
+  // an open axis over the atoms' extent.
+  double lo[3] = {-rs, -rs, -rs};
+  double ext[3] = {box.lx + 2 * rs, box.ly + 2 * rs, box.lz + 2 * rs};
+  for (int d = 0; d < 3; ++d) {
+    if (periodic[d] || nlocal == 0) continue;
+    const std::vector<double>& c = d == 0 ? x : d == 1 ? y : z;
+    const auto [mn, mx] = std::minmax_element(c.begin(), c.end());
+    lo[d] = *mn;
+    ext[d] = std::max(*mx - *mn, rs);
+  }
   int nb[3];
   double inv[3];
   for (int d = 0; d < 3; ++d) {
@@ -83,7 +93,7 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) 
     inv[d] = nb[d] / ext[d];
   }
   auto bin_of = [&](int k, int d) {
-    const double p = (d == 0 ? x[k] : d == 1 ? y[k] : z[k]) + rs;
+    const double p = (d == 0 ? x[k] : d == 1 ? y[k] : z[k]) - lo[d];
     return std::clamp(static_cast<int>(p * inv[d]), 0, nb[d] - 1);
   };
   const int nbins = nb[0] * nb[1] * nb[2];

@@ -4,7 +4,9 @@
 // half Verlet list with a skin (each pair once, Newton's third law, eq. 5.24). Rebuilt
 // when an atom or an image may have moved half the skin; correct for any box whose
 // edges exceed the cutoff plus skin... and smaller ones too, since an atom's own images
-// are ghosts like any other.
+// are ghosts like any other. An axis may be open (`periodic[d] = false`, the DPD
+// engine's free surfaces): no images along it, and the bins there span the atoms' extent.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -15,7 +17,8 @@ namespace mpmx::md {
 
 class Neighbors {
  public:
-  // Atoms must lie in the fundamental box (System wraps them first).
+  // Atoms must lie in the fundamental box along periodic axes (System wraps them
+  // first); along an open axis they may lie anywhere.
   void build(const Atoms& atoms, const Box& box, double cutoff, double skin);
   // Positions of locals and ghosts for the current atoms and box (every step).
   void update_positions(const Atoms& atoms, const Box& box);
@@ -43,6 +46,7 @@ class Neighbors {
   std::vector<int> list;        // half list: neighbour entries of each local atom
   double cutoff = 0, skin = 0;
   std::int64_t builds = 0;
+  std::array<bool, 3> periodic{true, true, true};  // set before build()
 
  private:
   bool built_ = false;

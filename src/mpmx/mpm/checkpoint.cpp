@@ -10,13 +10,15 @@
 namespace mpmx::mpm {
 
 namespace {
-constexpr char kMagic[8] = {'M', 'P', 'M', 'X', 'S', 'T', '0', '2'};
+constexpr char kMagic[8] = {'M', 'P', 'M', 'X', 'S', 'T', '0', '3'};
 
-template <class F>
-void each_array(Particles<1>& p, F&& f) {
-  for (auto* v : {&p.x[0], &p.v[0], &p.mass, &p.volume, &p.volume0, &p.length[0], &p.strain[0], &p.stress[0],
-                  &p.grad_v[0], &p.viscous_pressure, &p.entropy})
-    f(*v);
+template <int Dim, class F>
+void each_array(Particles<Dim>& p, F&& f) {
+  for (int a = 0; a < Dim; ++a) f(p.x[a]), f(p.v[a]);
+  for (auto* v : {&p.mass, &p.volume, &p.volume0, &p.viscous_pressure}) f(*v);
+  for (int c = 0; c < Dim * Dim; ++c) f(p.length[c]), f(p.strain[c]), f(p.stress[c]), f(p.grad_v[c]);
+  if (!p.viscous[0].empty())
+    for (int c = 0; c < Dim * Dim; ++c) f(p.viscous[c]);
 }
 }  // namespace
 
@@ -63,19 +65,23 @@ std::vector<double> CheckpointIn::numbers() {
   return v;
 }
 
-void save_state(CheckpointOut& out, const State<1>& s) {
+template <int Dim>
+void save_state(CheckpointOut& out, const State<Dim>& s) {
   out.stream().write(kMagic, 8);
   out.integer(s.step);
   out.number(s.time);
   const Tallies& t = s.tallies;
-  for (double v : {t.boundary_impulse, t.boundary_work, t.stress_work, t.max_force_sum, t.node_mass}) out.number(v);
-  auto& p = const_cast<Particles<1>&>(s.particles);
+  for (double v : {t.boundary_impulse[0], t.boundary_impulse[1], t.boundary_impulse[2], t.boundary_work,
+                   t.stress_work, t.max_force_sum, t.node_mass})
+    out.number(v);
+  auto& p = const_cast<Particles<Dim>&>(s.particles);
   each_array(p, [&](std::vector<double>& v) { out.numbers(v); });
   out.text(s.material->name());
   s.material->save(out.stream());
 }
 
-void load_state(CheckpointIn& in, State<1>& s) {
+template <int Dim>
+void load_state(CheckpointIn& in, State<Dim>& s) {
   char magic[8] = {};
   in.stream().read(magic, 8);
   if (!in.stream() || std::string(magic, 8) != std::string(kMagic, 8))
@@ -83,7 +89,8 @@ void load_state(CheckpointIn& in, State<1>& s) {
   s.step = in.integer();
   s.time = in.number();
   Tallies& t = s.tallies;
-  for (double* v : {&t.boundary_impulse, &t.boundary_work, &t.stress_work, &t.max_force_sum, &t.node_mass})
+  for (double* v : {&t.boundary_impulse[0], &t.boundary_impulse[1], &t.boundary_impulse[2], &t.boundary_work,
+                    &t.stress_work, &t.max_force_sum, &t.node_mass})
     *v = in.number();
   const std::size_t n = s.particles.size();
   each_array(s.particles, [&](std::vector<double>& v) {
@@ -96,5 +103,12 @@ void load_state(CheckpointIn& in, State<1>& s) {
     throw InputError(fmt::format("the checkpoint's material is {}, the deck's {}", material, s.material->name()));
   s.material->load(in.stream());
 }
+
+template void save_state<1>(CheckpointOut&, const State<1>&);
+template void save_state<2>(CheckpointOut&, const State<2>&);
+template void save_state<3>(CheckpointOut&, const State<3>&);
+template void load_state<1>(CheckpointIn&, State<1>&);
+template void load_state<2>(CheckpointIn&, State<2>&);
+template void load_state<3>(CheckpointIn&, State<3>&);
 
 }  // namespace mpmx::mpm

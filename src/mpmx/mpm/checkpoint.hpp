@@ -41,9 +41,11 @@ class CheckpointIn {
   std::string name_;
 };
 
-void save_state(CheckpointOut& out, const State<1>& s);
+template <int Dim>
+void save_state(CheckpointOut& out, const State<Dim>& s);
 // `s` made by make_state(config, false): same grid, scheme and material, no per-point
 // material state yet. Throws InputError when the checkpoint does not fit it.
-void load_state(CheckpointIn& in, State<1>& s);
+template <int Dim>
+void load_state(CheckpointIn& in, State<Dim>& s);
 
 }  // namespace mpmx::mpm

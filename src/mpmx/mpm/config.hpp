@@ -1,6 +1,8 @@
 #pragma once
 // A continuum run as read from its deck (io/mpm_deck.cpp does the reading and checks).
+#include <array>
 #include <cmath>
+#include <memory>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -8,25 +10,41 @@
 #include <toml++/toml.h>
 
 #include "mpmx/material/md_closure.hpp"
+#include "mpmx/material/registry.hpp"
 #include "mpmx/mpm/bcs.hpp"
 #include "mpmx/mpm/profile.hpp"
 #include "mpmx/mpm/shape/scheme.hpp"
 
 namespace mpmx::mpm {
 
+// The [material] table: the model read by its registry entry (material/registry.hpp),
+// and for the 1-D references and messages the figures they read.
 struct MaterialConfig {
-  std::string model;             // linear_elastic | ideal_gas_isothermal | ideal_gas_adiabatic | md_closure
-  double density = 1.0;          // reference density (elastic: initial density)
-  // Solids: `density` is that of the unstrained material, so a point at initial strain
-  // e starts at density / (1 + e) (the multiscale cases); else every point starts at it.
+  std::shared_ptr<const material::Model> spec;  // makes the run's Material<Dim>
+  std::string model;             // spec->name()
+  double density = 1.0;          // reference density (elastic: initial or unstrained density)
   bool density_unstrained = false;
-  double youngs_modulus = 0.0;   // linear_elastic
-  double poisson_ratio = 0.0;    // linear_elastic, 2-D/3-D only
-  bool small_strain = false;     // force and work over V0 (geometrically linear, ADMPM's model)
+  double youngs_modulus = 0.0;   // linear_elastic (md_closure: its crystal's C11)
   double sound_speed = 0.0;      // ideal_gas_isothermal: p = c^2 rho
   double gamma = 1.4;            // ideal_gas_adiabatic
-  material::MdClosureConfig md;  // md_closure (density and youngs_modulus hold its crystal's)
-  bool solid() const { return model == "linear_elastic" || model == "md_closure"; }
+  bool small_strain = false;     // force and work over V0 (geometrically linear, ADMPM's model)
+  material::MdClosureConfig md;  // md_closure
+  bool solid() const { return spec && spec->solid(); }
+};
+
+// A region of a 2-D or 3-D deck ([[body]]): it adds the grid's sub-cell points whose
+// centres lie inside it (or removes them: a notch), with its own initial velocity.
+struct Body {
+  enum class Shape { box, circle, sphere, polygon };
+  Shape shape = Shape::box;
+  bool remove = false;
+  std::array<double, 3> lower{}, upper{};   // box
+  std::array<double, 3> center{};           // circle, sphere
+  double radius = 0.0;
+  std::vector<std::array<double, 2>> vertices;  // polygon (2-D, x-y plane)
+  std::array<double, 3> velocity{};
+  double angular_velocity = 0.0;            // 2-D: a rigid spin about `center` (circle)
+  bool contains(const std::array<double, 3>& x, int dim) const;
 };
 
 struct ReferenceConfig {
@@ -40,13 +58,18 @@ struct ReferenceConfig {
 struct MpmConfig {
   // [case]
   std::string id, title, seed, units;
-  // [grid]
+  // [grid] (lower, upper, cells: the x axis, as 1-D decks give them; the arrays: every axis)
   int dim = 1;
   double lower = 0.0, upper = 1.0;
   int cells = 1;
+  std::array<double, 3> lower_all{}, upper_all{1.0, 1.0, 1.0};
+  std::array<int, 3> cells_all{1, 1, 1};
   // [particles]
-  int per_cell = 2;
+  int per_cell = 2;                       // along x
+  std::array<int, 3> per_cell_all{2, 1, 1};
   bool move = true;
+  // [[body]] (2-D, 3-D); none: the whole grid is filled
+  std::vector<Body> bodies;
   // [scheme]
   SchemeOptions scheme;
   // [material]
@@ -55,14 +78,23 @@ struct MpmConfig {
   Profile velocity, strain, pressure;
   // [boundary]
   Boundaries boundary;
-  // [viscosity] linear artificial viscosity coefficient (0 = off), ch. 6
+  // [viscosity] linear artificial viscosity coefficient (0 = off), ch. 6; tensor form
   double viscosity = 0.0;
-  // [time]
+  bool tensor_viscosity = false;
+  double c_L = 1.5, c_q = 2.0;
+  // [mass_distribution] eqs. 7.4-7.7: on by default for DDMP in 2-D and 3-D
+  bool mass_distribution = false;
+  double mass_fraction = 0.04;       // m_eps as a fraction of the mean point mass
+  // [time] (dt = "cfl": each step's from the state, cfl x dx_min / max (c + |v|); dt then
+  // holds the first step's, for estimates)
   double dt = 0.0, end = 0.0;
+  bool cfl_dt = false;
+  double cfl = 0.5;
   // [output]
   std::vector<double> output_times;
   std::int64_t output_every = 0;   // 0 = only output_times and the last step
   bool write_nodes = true, write_particles = true, plot = true;
+  bool write_vtk = true;             // 2-D, 3-D: VTK files for ParaView
   // [reference]
   ReferenceConfig reference;
 

@@ -13,6 +13,7 @@ namespace mpmx::mpm {
 template <int Dim>
 struct Grid {
   static constexpr int ghost = 1;
+  static constexpr int dim = Dim;
 
   std::array<double, Dim> lower{};
   std::array<double, Dim> upper{};
@@ -28,6 +29,9 @@ struct Grid {
   std::array<std::vector<double>, Dim> velocity;  // v^n
   std::array<std::vector<double>, Dim> velocity_L;  // Lagrangian v^L (eq. 3.12)
   std::array<std::vector<double>, Dim> force;       // internal force (eq. 3.9/3.30)
+  // The velocities the velocity gradient reads where the small-mass distribution is on
+  // (eq. 7.7, mass_distribution.hpp); empty otherwise.
+  std::array<std::vector<double>, Dim> gradient_velocity, gradient_velocity_L;
 
   Grid() = default;
   Grid(std::array<double, Dim> lo, std::array<double, Dim> hi, std::array<int, Dim> n)
@@ -59,6 +63,28 @@ struct Grid {
   // Storage index of node i along x in 1-D.
   std::size_t index1(int i) const { return static_cast<std::size_t>(i + ghost); }
   double node_x(int i, int d = 0) const { return lower[d] + i * dx[d]; }
+  // Storage index with each grid index clamped into the stored range.
+  std::size_t index_clamped(std::array<int, Dim> idx) const {
+    for (int d = 0; d < Dim; ++d) idx[d] = idx[d] < -ghost ? -ghost : idx[d] > cells[d] + ghost ? cells[d] + ghost : idx[d];
+    return index(idx);
+  }
+  // Whether grid indices idx name a real (non-ghost) node.
+  bool real(const std::array<int, Dim>& idx) const {
+    for (int d = 0; d < Dim; ++d)
+      if (idx[d] < 0 || idx[d] > cells[d]) return false;
+    return true;
+  }
+  // Calls f(storage index, grid indices) for every real node, x fastest.
+  template <class F>
+  void for_each_node(F&& f) const {
+    std::array<int, Dim> idx{};
+    while (true) {
+      f(index(idx), idx);
+      int d = 0;
+      while (d < Dim && ++idx[d] > cells[d]) idx[d++] = 0;
+      if (d == Dim) return;
+    }
+  }
   // Volume of the grid cell (V_j of eq. 3.28 for interior nodes).
   double cell_volume() const {
     double v = 1.0;

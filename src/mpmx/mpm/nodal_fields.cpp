@@ -44,8 +44,8 @@ NodalFields nodal_fields(const State<1>& s) {
     n.density.push_back(m[i] / V);
   }
   // Prescribed ends carry their boundary velocity (ADMPM eq. 5.24).
-  if (s.boundary.left.prescribed()) n.velocity.front() = s.boundary.left.velocity(s.time);
-  if (s.boundary.right.prescribed()) n.velocity.back() = s.boundary.right.velocity(s.time);
+  if (s.boundary.left().prescribed()) n.velocity.front() = s.boundary.left().velocity(s.time);
+  if (s.boundary.right().prescribed()) n.velocity.back() = s.boundary.right().velocity(s.time);
   return n;
 }
 

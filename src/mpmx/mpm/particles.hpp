@@ -18,18 +18,22 @@ struct Particles {
   std::vector<double> mass;
   std::vector<double> volume;                    // current volume, dV/dt = V div v
   std::vector<double> volume0;                   // initial volume
-  std::array<std::vector<double>, Dim> length;   // particle domain edge (GIMP/CPDI/sub-points)
+  // Particle domain (GIMP, CPDI, sub-points): edge vector b has components
+  // length[a * Dim + b], so it starts as l_b along axis b and follows dr/dt = grad v r.
+  // In 1-D length[0] is the domain's length.
+  std::array<std::vector<double>, tensor> length;
   std::array<std::vector<double>, tensor> strain;       // integrated strain
   std::array<std::vector<double>, tensor> stress;       // Cauchy stress (tension positive)
   std::array<std::vector<double>, tensor> grad_v;       // velocity gradient at v^{n+1/2} (eq. 4.10)
-  std::vector<double> viscous_pressure;          // artificial viscosity q (>= 0), ch. 6
-  std::vector<double> entropy;                   // adiabatic gas: p / rho^gamma per particle
+  std::vector<double> viscous_pressure;          // linear artificial viscosity q (>= 0), ch. 6
+  // Tensor artificial viscosity (eqs. 7.8-7.10), added to the stress in the force;
+  // empty unless the run uses it.
+  std::array<std::vector<double>, tensor> viscous;
 
   void resize(std::size_t n) {
     for (int d = 0; d < Dim; ++d) {
       x[d].assign(n, 0.0);
       v[d].assign(n, 0.0);
-      length[d].assign(n, 0.0);
     }
     mass.assign(n, 0.0);
     volume.assign(n, 0.0);
@@ -38,9 +42,9 @@ struct Particles {
       strain[c].assign(n, 0.0);
       stress[c].assign(n, 0.0);
       grad_v[c].assign(n, 0.0);
+      length[c].assign(n, 0.0);
     }
     viscous_pressure.assign(n, 0.0);
-    entropy.assign(n, 0.0);
   }
 
   double density(std::size_t p) const { return mass[p] / volume[p]; }
@@ -53,6 +57,7 @@ struct Particles {
 template <int Dim>
 struct Stencil {
   int width = 0;
+  std::array<int, Dim> box{};                // nodes per axis of every particle's box (2-D, 3-D)
   std::vector<int> node;                     // [p * width + k]
   std::vector<double> S;                     // [p * width + k]
   std::array<std::vector<double>, Dim> G;    // [d][p * width + k]

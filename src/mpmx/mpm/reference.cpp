@@ -155,25 +155,25 @@ std::unique_ptr<Reference> make_reference(const MpmConfig& c) {
   }
   if (name == "wave_reflection") {
     need(m.model == "linear_elastic", "needs material.model = \"linear_elastic\"");
-    need(c.boundary.right.type == BoundarySide::Type::velocity, "needs a velocity drive on the right");
+    need(c.boundary.right().type == BoundarySide::Type::velocity, "needs a velocity drive on the right");
     reference::WaveReflection w;
     w.L = L;
     w.c = std::sqrt(m.youngs_modulus / m.density);
-    w.v0 = c.boundary.right.amplitude;
-    w.omega = c.boundary.right.omega;
+    w.v0 = c.boundary.right().amplitude[0];
+    w.omega = c.boundary.right().omega;
     w.rho0 = m.density;
     return std::make_unique<ElasticBar<reference::WaveReflection>>(w, reference::end_time(w));
   }
   if (name == "gas_wave") {
     need(m.model == "ideal_gas_adiabatic", "needs material.model = \"ideal_gas_adiabatic\"");
-    need(c.boundary.right.type == BoundarySide::Type::velocity, "needs a velocity drive on the right");
+    need(c.boundary.right().type == BoundarySide::Type::velocity, "needs a velocity drive on the right");
     reference::GasWave g;
     g.L = L;
     g.gamma = m.gamma;
     g.p0 = c.pressure.value;
     g.rho0 = m.density;
-    g.v0 = c.boundary.right.amplitude;
-    g.omega = c.boundary.right.omega;
+    g.v0 = c.boundary.right().amplitude[0];
+    g.omega = c.boundary.right().omega;
     return std::make_unique<GasWaveRef>(g);
   }
   if (name == "riemann_isothermal") {

@@ -1,5 +1,6 @@
 #include "mpmx/mpm/run.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <typeinfo>
 #include <utility>
 
 #include <fmt/format.h>
@@ -21,6 +23,10 @@
 #include "mpmx/mpm/checkpoint.hpp"
 #include "mpmx/mpm/nodal_fields.hpp"
 #include "mpmx/mpm/output.hpp"
+#include "mpmx/mpm/points.hpp"
+#include "mpmx/mpm/vtk_output.hpp"
+#include "mpmx/material/linear_elastic.hpp"
+#include "mpmx/material/md_closure_model.hpp"
 #include "mpmx/mpm/reference.hpp"
 #include "mpmx/mpm/setup.hpp"
 #include "mpmx/mpm/step.hpp"
@@ -32,45 +38,84 @@ namespace mpmx::mpm {
 
 namespace {
 
+double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
 struct Sums {
-  double kinetic = 0.0, momentum = 0.0, abs_momentum = 0.0, internal = 0.0, mass = 0.0;
+  double kinetic = 0.0, abs_momentum = 0.0, internal = 0.0, mass = 0.0;
+  std::array<double, 3> momentum{};
 };
 
-Sums sums(const Particles<1>& p, bool solid) {
-  Sums s;
+template <int Dim>
+Sums sums(const State<Dim>& s) {
+  const auto& p = s.particles;
+  const auto view = points(p);
+  Sums r;
+  // 1-D keeps ADMPM's stored energy of the elastic bar (eq. 8.26) and no other.
+  const bool elastic_1d = Dim == 1 && typeid(*s.material) == typeid(material::LinearElastic<1>);
   for (std::size_t q = 0; q < p.size(); ++q) {
-    const double mv = p.mass[q] * p.v[0][q];
-    s.kinetic += 0.5 * mv * p.v[0][q];
-    s.momentum += mv;
-    s.abs_momentum += std::abs(mv);
-    s.mass += p.mass[q];
-    // Stored elastic energy in the reference configuration (ADMPM eq. 8.26).
-    if (solid) s.internal += 0.5 * p.volume0[q] * p.stress[0][q] * p.strain[0][q];
+    double v2 = 0.0;
+    for (int a = 0; a < Dim; ++a) {
+      r.momentum[a] += p.mass[q] * p.v[a][q];
+      v2 += p.v[a][q] * p.v[a][q];
+    }
+    if constexpr (Dim == 1) {
+      const double mv = p.mass[q] * p.v[0][q];
+      r.kinetic += 0.5 * mv * p.v[0][q];
+      r.abs_momentum += std::abs(mv);
+      if (elastic_1d) r.internal += 0.5 * p.volume0[q] * p.stress[0][q] * p.strain[0][q];
+    } else {
+      r.kinetic += 0.5 * p.mass[q] * v2;
+      r.abs_momentum += p.mass[q] * std::sqrt(v2);
+      r.internal += s.material->stored_energy(view, q);
+    }
+    r.mass += p.mass[q];
   }
-  return s;
+  return r;
 }
 
 // A NaN or Inf anywhere stops the run naming the step, the particle and the field.
 // The cheap per-step test is the sum of the new velocities and positions (from g2p)
 // and the stress work of the step: any non-finite value poisons them.
-void check_finite(const State<1>& s) {
+template <int Dim>
+void check_finite(const State<Dim>& s) {
   if (std::isfinite(s.finite_check) && std::isfinite(s.tallies.stress_work)) return;
   const auto& p = s.particles;
   for (std::size_t q = 0; q < p.size(); ++q) {
-    const std::pair<const char*, double> fields[] = {
-        {"velocity", p.v[0][q]}, {"stress", p.stress[0][q]}, {"position", p.x[0][q]},
-        {"volume", p.volume[q]}};
-    for (const auto& [name, v] : fields)
-      if (!std::isfinite(v))
-        throw RunError(fmt::format("non-finite {} ({}) at particle {} in step {} (t = {})", name,
-                                   v, q, s.step, s.time));
+    for (int a = 0; a < Dim; ++a) {
+      const std::pair<const char*, double> fields[] = {
+          {"velocity", p.v[a][q]}, {"stress", p.stress[a * Dim + a][q]}, {"position", p.x[a][q]},
+          {"volume", p.volume[q]}};
+      for (const auto& [name, v] : fields)
+        if (!std::isfinite(v))
+          throw RunError(fmt::format("non-finite {} ({}) at particle {} in step {} (t = {})", name,
+                                     v, q, s.step, s.time));
+    }
   }
   throw RunError(fmt::format("non-finite stress work in step {} (t = {})", s.step, s.time));
 }
 
+// The CFL step of the current state: cfl x the smallest cell side / max over points of
+// (sound speed + speed).
+template <int Dim>
+double stable_dt(const State<Dim>& s, double cfl) {
+  const auto& p = s.particles;
+  const auto view = points(p);
+  double dx = s.grid.dx[0], fastest = 0.0;
+  for (int d = 1; d < Dim; ++d) dx = std::min(dx, s.grid.dx[d]);
+  for (std::size_t q = 0; q < p.size(); ++q) {
+    double v2 = 0.0;
+    for (int a = 0; a < Dim; ++a) v2 += p.v[a][q] * p.v[a][q];
+    fastest = std::max(fastest, s.material->sound_speed(view, q) + std::sqrt(v2));
+  }
+  if (!(fastest > 0.0) || !std::isfinite(fastest))
+    throw RunError(fmt::format("dt = \"cfl\": no finite wave speed in step {} (t = {})", s.step, s.time));
+  return cfl * dx / fastest;
+}
+
 // A particle whose volume is no longer positive has failed (tension or compression
 // instability): checked where the volumes are read anyway, at the records.
-void check_volumes(const State<1>& s) {
+template <int Dim>
+void check_volumes(const State<Dim>& s) {
   const auto& p = s.particles;
   for (std::size_t q = 0; q < p.size(); ++q)
     if (!(p.volume[q] > 0.0))
@@ -117,23 +162,23 @@ bool matplotlib_present() {
 
 std::string checkpoint_path(const std::string& out_dir) { return out_dir + "/checkpoint.bin"; }
 
-RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
-  MpmConfig c = config;
-  c.material.md.threads = o.threads;
+template <int Dim>
+RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
+  const MpmConfig& c = config;
   const bool checkpoints = !o.out_dir.empty();
   if (o.resume && !checkpoints) throw InputError("resuming needs the run's output directory");
   if (o.resume && !std::filesystem::exists(checkpoint_path(o.out_dir)))
     throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(o.out_dir)));
-  RunResult r;
-  if (!o.resume && !o.quiet && c.material.model == "md_closure")
+  RunResultOf<Dim> r;
+  const bool md_closure = dynamic_cast<const material::MdClosureModel*>(c.material.spec.get()) != nullptr;
+  if (!o.resume && !o.quiet && md_closure)
     fmt::print(stderr, "{}: building {} MD boxes of {} atoms (section 6.2)...\n", c.id,
                static_cast<long>(c.cells) * c.per_cell, c.material.md.atoms_per_point());
-  r.state = make_state(c, !o.resume);
-  State<1>& s = r.state;
+  r.state = make_state<Dim>(c, !o.resume, o.threads);
+  State<Dim>& s = r.state;
   const auto* closure = dynamic_cast<const material::MdClosure*>(s.material.get());
   r.threads = closure ? closure->threads() : 1;
-  const auto ref = make_reference(c);
-  const bool solid = c.material.model == "linear_elastic";
+  const auto ref = Dim == 1 ? make_reference(c) : nullptr;
   const bool track_front = c.reference.name == "shock_front";
   const std::int64_t steps = c.steps();
   const double dt = c.dt;
@@ -151,8 +196,9 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
   rec.set("deck", c.deck);
   rec.set("deck_path", c.deck_path);
 
-  const Sums s0 = sums(s.particles, solid);
-  r.momentum_initial = s0.momentum;
+  const Sums s0 = sums(s);
+  r.momentum_initial_vec = s0.momentum;
+  r.stored_initial = s0.internal;
   r.kinetic_initial = s0.kinetic;
   r.mass_particles = s0.mass;
   r.momentum_scale = s0.abs_momentum;
@@ -165,9 +211,10 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
 
   // The run loop's own running figures, carried by a checkpoint after the state.
   auto carried = [&] {
-    return std::array<double*, 8>{&r.momentum_initial, &r.kinetic_initial, &r.mass_particles, &r.momentum_scale,
-                                  &r.max_kinetic, &eq712.squared_difference, &eq712.squared_reference,
-                                  &wall_before};
+    return std::array<double*, 11>{&r.momentum_initial_vec[0], &r.momentum_initial_vec[1], &r.momentum_initial_vec[2],
+                                   &r.kinetic_initial, &r.mass_particles, &r.momentum_scale,
+                                   &r.max_kinetic, &eq712.squared_difference, &eq712.squared_reference,
+                                   &wall_before, &r.stored_initial};
   };
   auto save_checkpoint = [&](Output* out, double wall_now) {
     const std::string path = checkpoint_path(o.out_dir), tmp = path + ".tmp";
@@ -232,9 +279,12 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
   }
   rec.set("threads", r.threads);
   std::unique_ptr<Output> out;
+  std::unique_ptr<VtkOutput<Dim>> vtk;
   if (!o.out_dir.empty()) {
     std::filesystem::create_directories(o.out_dir);
-    out = std::make_unique<Output>(o.out_dir, c.write_nodes, c.write_particles, resume_marks);
+    out = std::make_unique<Output>(o.out_dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles,
+                                   resume_marks);
+    if (c.write_vtk) vtk = std::make_unique<VtkOutput<Dim>>(o.out_dir, o.resume ? s.time : -1.0);
   }
   std::vector<double> u, uref, w;
   // Shock-front plateaus: the strain behind the right-going front is the mean of the
@@ -244,6 +294,7 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
 
   auto compare = [&]() {
     if (!ref || !ref->valid(s.time)) return;
+    if constexpr (Dim == 1) {
     const auto& p = s.particles;
     if (direct_md) {  // eq. 7.12: every point against the direct-MD bin it lies in
       reference::Eq712 now;
@@ -292,9 +343,10 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
       at.insert("peak", peak);
       rec.append(fmt::format("errors.{}.by_time", f), std::move(at));
     }
+    }
   };
   auto observe = [&]() {
-    const Sums now = sums(s.particles, solid);
+    const Sums now = sums(s);
     r.max_kinetic = std::max(r.max_kinetic, now.kinetic);
     const double e_ref = ref ? ref->total_energy(s.time) : std::nan("");
     if (std::isfinite(e_ref)) {
@@ -303,10 +355,12 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
       e.l2 = std::max(e.l2, e_ref);  // running max of the reference, normalised below
     }
     if (out)
-      out->energy(s.step, s.time, now.kinetic, now.internal, now.momentum,
-                  s.tallies.boundary_impulse, e_ref);
+      out->energy(s.step, s.time, now.kinetic, now.internal, Dim == 1 ? now.momentum[0] : norm(now.momentum),
+                  Dim == 1 ? s.tallies.boundary_impulse[0] : norm(s.tallies.boundary_impulse), e_ref);
   };
   auto record = [&]() {
+    if (vtk) vtk->record(s);
+    if constexpr (Dim == 1) {
     if (out) out->record(s, nodal_fields(s), ref.get());
     if (track_front && s.step > 0) {
       const auto& p = s.particles;
@@ -316,6 +370,7 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
         fronts.emplace_back(s.time, *x);
         if (out) out->front(s.time, *x, c.strain.at + front_c0 * s.time);
       }
+    }
     }
   };
 
@@ -331,19 +386,38 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
       record();
       observe();
     }
-    for (std::int64_t n = s.step + 1; n <= steps; ++n) {
-      step(s, dt);
-      s.time = n * dt;  // no drift from summing dt
+    // dt = "cfl": each step's dt from the state, shortened to land on the next record
+    // time; the run ends at time.end.
+    std::vector<double> record_times(c.output_times.begin(), c.output_times.end());
+    record_times.push_back(c.end);
+    std::sort(record_times.begin(), record_times.end());
+    auto done = [&](std::int64_t n) { return c.cfl_dt ? !(s.time < c.end) : n > steps; };
+    for (std::int64_t n = s.step + 1; !done(n); ++n) {
+      bool at_record_time = false;
+      if (c.cfl_dt) {
+        const double t0 = s.time;
+        const auto next = std::upper_bound(record_times.begin(), record_times.end(), t0 * (1.0 + 1e-12));
+        const double t_next = next == record_times.end() ? c.end : *next;
+        double h = stable_dt(s, c.cfl);
+        if (t0 + h >= t_next * (1.0 - 1e-12)) h = t_next - t0, at_record_time = true;
+        step(s, h);
+        s.time = at_record_time ? t_next : t0 + h;
+      } else {
+        step(s, dt);
+        s.time = n * dt;  // no drift from summing dt
+      }
       check_finite(s);
-      const bool is_record = record_steps.count(n) || (c.output_every > 0 && n % c.output_every == 0);
+      const bool last = c.cfl_dt ? !(s.time < c.end) : n == steps;
+      const bool is_record = (c.cfl_dt ? at_record_time : record_steps.count(n) > 0) ||
+                             (c.output_every > 0 && n % c.output_every == 0);
       if (compare_steps.count(n)) compare();
       if (is_record) record();
-      if (n % energy_every == 0 || n == steps) {
+      if (n % energy_every == 0 || last) {
         check_volumes(s);
         observe();
       }
-      progress.update(n);
-      if (checkpoints && n < steps) {
+      progress.update(c.cfl_dt ? std::min<std::int64_t>(steps - 1, std::llround(s.time / c.end * steps)) : n);
+      if (checkpoints && !last) {
         const bool stop = g_interrupted || n == o.stop_after;
         // Long runs of small steps read the clock every 64 steps: reading it costs a
         // good part of such a step.
@@ -369,11 +443,15 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
   if (closure) r.md_atom_steps = closure->atom_steps();
   if (direct_md && eq712.squared_reference > 0) r.stress_vs_direct_md = eq712.value();
 
-  const Sums s1 = sums(s.particles, solid);
-  r.momentum_final = s1.momentum;
+  const Sums s1 = sums(s);
+  r.momentum_final_vec = s1.momentum;
+  r.stored_final = s1.internal;
+  r.boundary_impulse_vec = s.tallies.boundary_impulse;
+  r.momentum_initial = r.momentum_initial_vec[0];
+  r.momentum_final = r.momentum_final_vec[0];
   r.kinetic_final = s1.kinetic;
   r.momentum_scale = std::max(r.momentum_scale, s1.abs_momentum);
-  r.boundary_impulse = s.tallies.boundary_impulse;
+  r.boundary_impulse = s.tallies.boundary_impulse[0];
   r.boundary_work = s.tallies.boundary_work;
   r.stress_work = s.tallies.stress_work;
   r.max_force_sum = s.tallies.max_force_sum;
@@ -415,6 +493,7 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
     rec.set("md.density", closure->density());
   }
   if (!failure.empty()) rec.set("error", failure);
+  rec.set("dim", static_cast<std::int64_t>(Dim));
   rec.set("steps", static_cast<std::int64_t>(r.steps));
   rec.set("time", s.time);
   rec.set("wall_seconds", r.wall_seconds);
@@ -429,9 +508,27 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
   rec.set("conservation.mass.particles", r.mass_particles);
   rec.set("conservation.mass.nodes", r.mass_nodes);
   rec.set("conservation.mass.relative_error", std::abs(r.mass_nodes - r.mass_particles) / r.mass_particles);
-  rec.set("conservation.momentum.initial", r.momentum_initial);
-  rec.set("conservation.momentum.final", r.momentum_final);
-  rec.set("conservation.momentum.boundary_impulse", r.boundary_impulse);
+  if constexpr (Dim == 1) {
+    rec.set("conservation.momentum.initial", r.momentum_initial);
+    rec.set("conservation.momentum.final", r.momentum_final);
+    rec.set("conservation.momentum.boundary_impulse", r.boundary_impulse);
+  } else {  // vector norms, and the vectors
+    rec.set("conservation.momentum.initial", norm(r.momentum_initial_vec));
+    rec.set("conservation.momentum.final", norm(r.momentum_final_vec));
+    rec.set("conservation.momentum.boundary_impulse", norm(r.boundary_impulse_vec));
+    rec.set("conservation.momentum.initial_vector",
+            std::vector<double>(r.momentum_initial_vec.begin(), r.momentum_initial_vec.begin() + Dim));
+    rec.set("conservation.momentum.final_vector",
+            std::vector<double>(r.momentum_final_vec.begin(), r.momentum_final_vec.begin() + Dim));
+    rec.set("conservation.momentum.boundary_impulse_vector",
+            std::vector<double>(r.boundary_impulse_vec.begin(), r.boundary_impulse_vec.begin() + Dim));
+    rec.set("conservation.energy.stored_initial", r.stored_initial);
+    rec.set("conservation.energy.stored_final", r.stored_final);
+    const double e0 = r.kinetic_initial + r.stored_initial, e1 = r.kinetic_final + r.stored_final;
+    rec.set("conservation.energy.total_initial", e0);
+    rec.set("conservation.energy.total_final", e1);
+    rec.set("conservation.energy.total_relative_change", e0 != 0.0 ? (e1 - e0 - r.boundary_work) / e0 : 0.0);
+  }
   rec.set("conservation.momentum.relative_error",
           r.momentum_scale > 0 ? r.momentum_error() / r.momentum_scale : 0.0);
   rec.set("conservation.momentum.max_internal_force_sum", r.max_force_sum);
@@ -446,15 +543,49 @@ RunResult run_mpm(const MpmConfig& config, const RunOptions& o) {
     out.reset();  // close the tables before plotting
     rec.write(o.out_dir + "/run.json");
     if (failure.empty() && !r.interrupted) std::filesystem::remove(checkpoint_path(o.out_dir));
-    if (failure.empty() && !r.interrupted && o.plot && c.plot && matplotlib_present()) {
-      const std::string cmd = fmt::format("{} {}/tools/plot/mpmx_plot.py --quiet '{}'", MPMX_PYTHON,
-                                          MPMX_SOURCE_DIR, o.out_dir);
+    if (failure.empty() && !r.interrupted && o.plot && c.plot && (Dim == 1 || (Dim == 2 && vtk)) &&
+        matplotlib_present()) {
+      const std::string cmd =
+          Dim == 1 ? fmt::format("{} {}/tools/plot/mpmx_plot.py --quiet '{}'", MPMX_PYTHON, MPMX_SOURCE_DIR, o.out_dir)
+                   : fmt::format("{} {}/tools/plot/points2d.py '{}/particles.pvd' --field stress --component xx "
+                                 "--out '{}/stress_xx.png' >/dev/null",
+                                 MPMX_PYTHON, MPMX_SOURCE_DIR, o.out_dir, o.out_dir);
       if (std::system(cmd.c_str()) != 0)
         fmt::print(stderr, "mpmx: plotting failed (the run's tables are complete): {}\n", cmd);
     }
   }
   if (!failure.empty()) throw RunError(failure);
   return r;
+}
+
+template RunResultOf<1> run_mpm_dim<1>(const MpmConfig&, const RunOptions&);
+template RunResultOf<2> run_mpm_dim<2>(const MpmConfig&, const RunOptions&);
+template RunResultOf<3> run_mpm_dim<3>(const MpmConfig&, const RunOptions&);
+
+RunResult run_mpm(const MpmConfig& c, const RunOptions& o) {
+  if (c.dim != 1) throw InputError(fmt::format("run_mpm runs 1-D decks; this one has grid.dim = {}", c.dim));
+  return run_mpm_dim<1>(c, o);
+}
+
+RunSummary run_any(const MpmConfig& c, const RunOptions& o) {
+  auto summary = [](const auto& r) {
+    RunSummary s;
+    s.steps = r.steps;
+    s.wall_seconds = r.wall_seconds;
+    s.particles = r.state.particles.size();
+    s.interrupted = r.interrupted;
+    s.errors = r.errors;
+    s.md_atom_steps = r.md_atom_steps;
+    s.threads = r.threads;
+    s.stress_vs_direct_md = r.stress_vs_direct_md;
+    return s;
+  };
+  switch (c.dim) {
+    case 1: return summary(run_mpm_dim<1>(c, o));
+    case 2: return summary(run_mpm_dim<2>(c, o));
+    case 3: return summary(run_mpm_dim<3>(c, o));
+  }
+  throw InputError(fmt::format("grid.dim = {}: must be 1, 2 or 3", c.dim));
 }
 
 }  // namespace mpmx::mpm

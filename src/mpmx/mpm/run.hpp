@@ -1,6 +1,8 @@
 #pragma once
 // A whole continuum run: set-up, the step loop, records, comparison with the
 // reference, conservation figures, run.json and figures.
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -30,28 +32,56 @@ struct FieldError {
   double peak = 0.0;          // max |u - r| / max |r - b|: overshoot and spikes
 };
 
-struct RunResult {
+template <int Dim>
+struct RunResultOf {
   std::int64_t steps = 0;
   double wall_seconds = 0.0;
   std::map<std::string, FieldError> errors;   // by field; also "energy", "front_speed"
   double front_speed = 0.0;                   // shock_front cases
-  // Conservation (S4).
+  // Conservation (S4). The scalars are the x components (1-D); the vectors every one.
   double mass_particles = 0.0, mass_nodes = 0.0;
   double momentum_initial = 0.0, momentum_final = 0.0, boundary_impulse = 0.0;
+  std::array<double, 3> momentum_initial_vec{}, momentum_final_vec{}, boundary_impulse_vec{};
   double momentum_scale = 0.0;                // max sum m|v| seen at the ends
   double max_force_sum = 0.0;                 // max_steps |sum f| / sum |f|
   double kinetic_initial = 0.0, kinetic_final = 0.0, stress_work = 0.0, boundary_work = 0.0;
+  double stored_initial = 0.0, stored_final = 0.0;  // the materials' stored energy
   double max_kinetic = 0.0;
   double stress_vs_direct_md = std::nan("");  // eq. 7.12 over the compared times (direct_md)
   std::int64_t md_atom_steps = 0;             // md_closure: atoms x MD steps, relaxation included
   int threads = 1;
   bool interrupted = false;                   // stopped by Ctrl-C (or stop_after): checkpoint written
-  State<1> state;                             // the final state
+  State<Dim> state;                           // the final state
   double energy_error() const { return std::abs(kinetic_final - kinetic_initial + stress_work - boundary_work); }
-  double momentum_error() const { return std::abs(momentum_final - momentum_initial - boundary_impulse); }
+  double momentum_error() const {
+    double e2 = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      const double e = momentum_final_vec[a] - momentum_initial_vec[a] - boundary_impulse_vec[a];
+      e2 += e * e;
+    }
+    return std::sqrt(e2);
+  }
 };
+using RunResult = RunResultOf<1>;
 
+// A run of the deck's dimension.
+template <int Dim>
+RunResultOf<Dim> run_mpm_dim(const MpmConfig& c, const RunOptions& o);
+// 1-D decks (the tests' and the multiscale cases').
 RunResult run_mpm(const MpmConfig& c, const RunOptions& o);
+
+// What the CLI reports of a run of any dimension.
+struct RunSummary {
+  std::int64_t steps = 0;
+  double wall_seconds = 0.0;
+  std::size_t particles = 0;
+  bool interrupted = false;
+  std::map<std::string, FieldError> errors;
+  std::int64_t md_atom_steps = 0;
+  int threads = 1;
+  double stress_vs_direct_md = std::nan("");
+};
+RunSummary run_any(const MpmConfig& c, const RunOptions& o);
 
 // The checkpoint of a run directory.
 std::string checkpoint_path(const std::string& out_dir);

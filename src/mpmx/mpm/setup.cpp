@@ -2,59 +2,143 @@
 
 #include <cmath>
 
-#include "mpmx/material/ideal_gas.hpp"
-#include "mpmx/material/linear_elastic.hpp"
+
+#include "mpmx/core/error.hpp"
 #include "mpmx/material/md_closure.hpp"
+#include "mpmx/mpm/points.hpp"
 
 namespace mpmx::mpm {
 
-std::unique_ptr<material::Material<1>> make_material(const MaterialConfig& m) {
-  using Gas = material::IdealGas<1>;
-  if (m.model == "linear_elastic")
-    return std::make_unique<material::LinearElastic<1>>(m.youngs_modulus, m.poisson_ratio);
-  if (m.model == "md_closure") return std::make_unique<material::MdClosure>(m.md);
-  if (m.model == "ideal_gas_isothermal")
-    return std::make_unique<Gas>(Gas::Mode::isothermal, m.sound_speed, 1.0);
-  return std::make_unique<Gas>(Gas::Mode::adiabatic, 0.0, m.gamma);
+bool Body::contains(const std::array<double, 3>& x, int dim) const {
+  switch (shape) {
+    case Shape::box:
+      for (int d = 0; d < dim; ++d)
+        if (x[d] < lower[d] || x[d] > upper[d]) return false;
+      return true;
+    case Shape::circle:
+    case Shape::sphere: {
+      double r2 = 0.0;
+      for (int d = 0; d < dim; ++d) r2 += (x[d] - center[d]) * (x[d] - center[d]);
+      return r2 <= radius * radius;
+    }
+    case Shape::polygon: {  // even-odd rule in the x-y plane
+      bool in = false;
+      const std::size_t n = vertices.size();
+      for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+        const auto& a = vertices[i];
+        const auto& b = vertices[j];
+        if ((a[1] > x[1]) != (b[1] > x[1]) && x[0] < (b[0] - a[0]) * (x[1] - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
+      }
+      return in;
+    }
+  }
+  return false;
 }
 
-State<1> make_state(const MpmConfig& c, bool initialize_material) {
-  State<1> s;
-  s.grid = Grid<1>({c.lower}, {c.upper}, {c.cells});
+template <int Dim>
+State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads) {
+  State<Dim> s;
+  std::array<double, Dim> lo, hi;
+  std::array<int, Dim> n;
+  for (int d = 0; d < Dim; ++d) lo[d] = c.lower_all[d], hi[d] = c.upper_all[d], n[d] = c.cells_all[d];
+  s.grid = Grid<Dim>(lo, hi, n);
   s.move = c.move;
   s.small_strain = c.material.small_strain;
   s.midpoint_gradient = c.scheme.midpoint_gradient;
   s.viscosity = c.viscosity;
   s.boundary = c.boundary;
-  s.material = make_material(c.material);
+  s.material = material::make<Dim>(*c.material.spec);
+  if (auto* closure = dynamic_cast<material::MdClosure*>(s.material.get())) closure->set_threads(threads);
 
-  const double dx = c.dx(), L = c.upper - c.lower;
-  const std::size_t n = static_cast<std::size_t>(c.cells) * c.per_cell;
+  // Points per axis over the whole grid; a point is kept when the deck has no bodies or
+  // its centre lies in a body and in no removing region.
+  std::array<double, Dim> l;
+  std::array<std::int64_t, Dim> count;
+  std::int64_t total = 1;
+  for (int d = 0; d < Dim; ++d) {
+    l[d] = s.grid.dx[d] / c.per_cell_all[d];
+    count[d] = static_cast<std::int64_t>(n[d]) * c.per_cell_all[d];
+    total *= count[d];
+  }
+  std::vector<std::array<double, 3>> at;
+  std::vector<int> owner;
+  for (std::int64_t k = 0; k < total; ++k) {
+    std::array<double, 3> x{};
+    std::int64_t r = k;
+    for (int d = 0; d < Dim; ++d) {
+      x[d] = lo[d] + (static_cast<double>(r % count[d]) + 0.5) * l[d];
+      r /= count[d];
+    }
+    int body = -1;
+    for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+      if (!c.bodies[b].contains(x, Dim)) continue;
+      if (c.bodies[b].remove) {
+        body = -2;
+        break;
+      }
+      if (body == -1) body = static_cast<int>(b);
+    }
+    if (!c.bodies.empty() && body < 0) continue;
+    at.push_back(x);
+    owner.push_back(body);
+  }
+  if (at.empty()) throw InputError("no material points: no [[body]] region holds a point centre of the grid");
+
   auto& p = s.particles;
-  p.resize(n);
-  const double l = dx / c.per_cell;
+  p.resize(at.size());
+  const double dx = c.dx(), L = c.upper - c.lower;
   const bool solid = c.material.solid();
-  const bool isothermal = c.material.model == "ideal_gas_isothermal";
-  for (std::size_t q = 0; q < n; ++q) {
-    const double x = c.lower + (static_cast<double>(q) + 0.5) * l;
-    p.x[0][q] = x;
-    p.length[0][q] = l;
-    p.volume[q] = p.volume0[q] = l;
-    p.v[0][q] = c.velocity(x, c.lower, L, dx);
+  const double rho_of_p = c.material.spec->density_at_pressure(1.0);  // isothermal gas: rho is set by p
+  double V = 1.0;
+  for (int d = 0; d < Dim; ++d) V *= l[d];
+  for (std::size_t q = 0; q < at.size(); ++q) {
+    const double x = at[q][0];
+    for (int d = 0; d < Dim; ++d) {
+      p.x[d][q] = at[q][d];
+      p.length[d * Dim + d][q] = l[d];
+      if (owner[q] >= 0) p.v[d][q] = c.bodies[owner[q]].velocity[d];
+    }
+    if (owner[q] >= 0 && Dim == 2) {  // omega x (x - centre)
+      const Body& b = c.bodies[owner[q]];
+      p.v[0][q] -= b.angular_velocity * (at[q][1] - b.center[1]);
+      p.v[1 % Dim][q] += b.angular_velocity * (at[q][0] - b.center[0]);
+    }
+    p.volume[q] = p.volume0[q] = V;
+    p.v[0][q] += c.velocity(x, c.lower, L, dx);
     double rho = c.material.density;
     if (solid) {
       p.strain[0][q] = c.strain(x, c.lower, L, dx);
       if (c.material.density_unstrained) rho /= 1.0 + p.strain[0][q];
     } else {
       const double pr = c.pressure(x, c.lower, L, dx);
-      if (isothermal) rho = pr / (c.material.sound_speed * c.material.sound_speed);
-      p.stress[0][q] = -pr;  // read by the adiabatic gas to fix its entropy
+      if (std::isfinite(rho_of_p)) rho = c.material.spec->density_at_pressure(pr);
+      for (int d = 0; d < Dim; ++d) p.stress[d * Dim + d][q] = -pr;  // read by the adiabatic gas
     }
-    p.mass[q] = rho * l;
+    p.mass[q] = rho * V;
   }
-  if (initialize_material) s.material->initialize(p);
-  s.shape = std::make_unique<ShapeEvaluator>(c.scheme, s.grid);
+  if (c.tensor_viscosity)
+    for (auto& a : p.viscous) a.assign(p.size(), 0.0);
+  s.tensor_viscosity = {c.tensor_viscosity, c.c_L, c.c_q};
+  double mean_mass = 0.0;
+  for (double m : p.mass) mean_mass += m;
+  mean_mass /= static_cast<double>(p.size());
+  s.mass_distribution.on = c.mass_distribution;
+  s.mass_distribution.threshold = c.mass_fraction * mean_mass;
+  if (initialize_material) s.material->initialize(points(p));
+  s.shape = std::make_unique<ShapeEvaluator<Dim>>(c.scheme, s.grid);
+  // Threads over particles pay only on large batches (a parallel region costs microseconds,
+  // much more on a busy machine); results are the same either way.
+  constexpr std::size_t kParallelFrom = 8192;
+  // Without --threads the continuum stays on one (two threads have not yet been timed
+  // faster on a shared two-core machine: docs/performance.md).
+  s.threads = p.size() < kParallelFrom || threads <= 0 ? 1 : threads;
+  s.shape->set_threads(s.threads);
+  if constexpr (Dim > 1) s.material->set_threads(s.threads);
   return s;
 }
+
+template State<1> make_state<1>(const MpmConfig&, bool, int);
+template State<2> make_state<2>(const MpmConfig&, bool, int);
+template State<3> make_state<3>(const MpmConfig&, bool, int);
 
 }  // namespace mpmx::mpm

@@ -1,14 +1,20 @@
 #pragma once
 // Builds the initial state of a run from its configuration: grid, evenly placed
-// particles (per_cell per cell, each owning an equal slice of its cell), material,
-// initial fields and boundaries.
+// particles (per_cell per cell and axis, each owning an equal part of its cell; in 2-D
+// and 3-D those whose centres lie in the deck's bodies), material, initial fields and
+// boundaries.
 #include "mpmx/mpm/config.hpp"
 #include "mpmx/mpm/state.hpp"
 
 namespace mpmx::mpm {
 
-// initialize_material = false leaves per-point material state to a checkpoint.
-State<1> make_state(const MpmConfig& c, bool initialize_material = true);
-std::unique_ptr<material::Material<1>> make_material(const MaterialConfig& m);
+// initialize_material = false leaves per-point material state to a checkpoint;
+// `threads` is the MD closure's (0: OpenMP's default).
+template <int Dim>
+State<Dim> make_state(const MpmConfig& c, bool initialize_material = true, int threads = 0);
+// A 1-D deck's state.
+inline State<1> make_state(const MpmConfig& c, bool initialize_material = true) {
+  return make_state<1>(c, initialize_material, 0);
+}
 
 }  // namespace mpmx::mpm

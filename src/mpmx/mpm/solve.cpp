@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace mpmx::mpm {
 
-void solve_grid(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& tally) {
+namespace {
+
+// 1-D: one vectorised pass over the nodes (the fused path's solve).
+void solve_1d(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& tally) {
   const int N = g.cells[0];
   const std::size_t i0 = g.index1(0), i1 = g.index1(N);
   double mass_sum = 0.0, force_sum = 0.0, force_abs = 0.0;
@@ -37,35 +41,134 @@ void solve_grid(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& 
     v[i] = side.velocity(t);
     vL[i] = side.velocity(t + dt);
     const double impulse = m[i] * (vL[i] - v[i]) - dt * f[i];
-    tally.boundary_impulse += impulse;
+    tally.boundary_impulse[0] += impulse;
     tally.boundary_work += impulse * 0.5 * (vL[i] + v[i]);
   };
-  hold(i0, bc.left);
-  hold(i1, bc.right);
+  hold(i0, bc.left());
+  hold(i1, bc.right());
   if (force_abs > 0.0) tally.max_force_sum = std::max(tally.max_force_sum, std::abs(force_sum) / force_abs);
   tally.node_mass = mass_sum;
 }
 
-void work_and_volumes(Particles<1>& p, double dt, bool small_strain, bool track_length,
-                      Tallies& tally) {
+}  // namespace
+
+template <int Dim>
+void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies& tally) {
+  if constexpr (Dim == 1) {
+    solve_1d(g, bc, t, dt, tally);
+  } else {
+    double mass_sum = 0.0;
+    std::array<double, Dim> force_sum{}, force_abs{};
+    std::size_t nodes = 1;
+    for (int d = 0; d < Dim; ++d) nodes *= static_cast<std::size_t>(g.cells[d] + 1);
+    g.for_each_node([&](std::size_t i, const std::array<int, Dim>&) {
+      mass_sum += g.mass[i];
+      for (int a = 0; a < Dim; ++a) {
+        force_sum[a] += g.force[a][i];
+        force_abs[a] += std::abs(g.force[a][i]);
+      }
+    });
+    const double tiny = 1e-14 * mass_sum / static_cast<double>(nodes);
+    g.for_each_node([&](std::size_t i, const std::array<int, Dim>& idx) {
+      const double m = g.mass[i];
+      const bool has = m > tiny;
+      const double r = 1.0 / (has ? m : 1.0);
+      for (int a = 0; a < Dim; ++a) {
+        const double vi = g.momentum[a][i] * r;
+        double v = has ? vi : 0.0, vL = has ? vi + dt * g.force[a][i] * r : 0.0;
+        // A node on a face with a condition on component a; at edges and corners the
+        // first face that holds the component sets it.
+        for (int f = 0; f < 2 * Dim; ++f) {
+          const int axis = f / 2;
+          const bool on = (f % 2 == 0) ? idx[axis] == 0 : idx[axis] == g.cells[axis];
+          const BoundarySide& side = bc.face[f];
+          if (!on || !side.holds(a, axis)) continue;
+          const double vn = side.velocity(t, a), vl = side.velocity(t + dt, a);
+          // What the face adds to the material's momentum: m (v^L - v^n) - dt f.
+          const double added = m * (vl - vn) - dt * g.force[a][i];
+          if (has) {
+            tally.boundary_impulse[a] += added;
+            tally.boundary_work += added * 0.5 * (vl + vn);
+          }
+          v = vn;
+          vL = vl;
+          break;
+        }
+        g.velocity[a][i] = v;
+        g.velocity_L[a][i] = vL;
+      }
+    });
+    double fs = 0.0, fa = 0.0;
+    for (int a = 0; a < Dim; ++a) fs += force_sum[a] * force_sum[a], fa += force_abs[a];
+    if (fa > 0.0) tally.max_force_sum = std::max(tally.max_force_sum, std::sqrt(fs) / fa);
+    tally.node_mass = mass_sum;
+  }
+}
+
+template <int Dim>
+void work_and_volumes(Particles<Dim>& p, double dt, bool small_strain, bool track_domain, Tallies& tally,
+                      int threads) {
   const std::size_t n = p.size();
   double w = 0.0;
-  double* __restrict V = p.volume.data();
-  const double* __restrict V0 = p.volume0.data();
-  const double* __restrict sig = p.stress[0].data();
-  const double* __restrict qv = p.viscous_pressure.data();
-  const double* __restrict L = p.grad_v[0].data();
+  if constexpr (Dim == 1) {
+    double* __restrict V = p.volume.data();
+    const double* __restrict V0 = p.volume0.data();
+    const double* __restrict sig = p.stress[0].data();
+    const double* __restrict qv = p.viscous_pressure.data();
+    const double* __restrict L = p.grad_v[0].data();
 #pragma omp simd reduction(+ : w)
-  for (std::size_t q = 0; q < n; ++q) {
-    w += (small_strain ? V0[q] : V[q]) * (sig[q] - qv[q]) * L[q];
-    V[q] *= 1.0 + dt * L[q];
-  }
-  if (track_length) {
-    double* __restrict len = p.length[0].data();
+    for (std::size_t q = 0; q < n; ++q) {
+      w += (small_strain ? V0[q] : V[q]) * (sig[q] - qv[q]) * L[q];
+      V[q] *= 1.0 + dt * L[q];
+    }
+    if (track_domain) {
+      double* __restrict len = p.length[0].data();
 #pragma omp simd
-    for (std::size_t q = 0; q < n; ++q) len[q] *= 1.0 + dt * L[q];
+      for (std::size_t q = 0; q < n; ++q) len[q] *= 1.0 + dt * L[q];
+    }
+  } else {
+    const bool tensor_q = !p.viscous[0].empty();
+    // Each chunk of particles sums its own work, the chunks are added in order: the same
+    // total for any thread count.
+    constexpr std::size_t chunk = 1024;
+    const std::size_t chunks = (n + chunk - 1) / chunk;
+    std::vector<double> part(chunks, 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (std::size_t ck = 0; ck < chunks; ++ck)
+    for (std::size_t q = ck * chunk; q < std::min(n, (ck + 1) * chunk); ++q) {
+      double work = 0.0, div = 0.0;
+      for (int a = 0; a < Dim; ++a) {
+        div += p.grad_v[a * Dim + a][q];
+        for (int b = 0; b < Dim; ++b) {
+          double s = p.stress[a * Dim + b][q] - (a == b ? p.viscous_pressure[q] : 0.0);
+          if (tensor_q) s += p.viscous[a * Dim + b][q];
+          work += s * p.grad_v[a * Dim + b][q];
+        }
+      }
+      part[ck] += (small_strain ? p.volume0[q] : p.volume[q]) * work;
+      p.volume[q] *= 1.0 + dt * div;
+      if (track_domain) {  // r_b += dt L r_b for every domain vector b
+        double r[Dim][Dim];
+        for (int a = 0; a < Dim; ++a)
+          for (int b = 0; b < Dim; ++b) r[a][b] = p.length[a * Dim + b][q];
+        for (int a = 0; a < Dim; ++a)
+          for (int b = 0; b < Dim; ++b) {
+            double lr = 0.0;
+            for (int c = 0; c < Dim; ++c) lr += p.grad_v[a * Dim + c][q] * r[c][b];
+            p.length[a * Dim + b][q] = r[a][b] + dt * lr;
+          }
+      }
+    }
+    for (double x : part) w += x;
   }
   tally.stress_work += dt * w;
 }
+
+template void solve_grid<1>(Grid<1>&, const Boundaries&, double, double, Tallies&);
+template void solve_grid<2>(Grid<2>&, const Boundaries&, double, double, Tallies&);
+template void solve_grid<3>(Grid<3>&, const Boundaries&, double, double, Tallies&);
+template void work_and_volumes<1>(Particles<1>&, double, bool, bool, Tallies&, int);
+template void work_and_volumes<2>(Particles<2>&, double, bool, bool, Tallies&, int);
+template void work_and_volumes<3>(Particles<3>&, double, bool, bool, Tallies&, int);
 
 }  // namespace mpmx::mpm

@@ -6,12 +6,14 @@
 
 namespace mpmx::mpm {
 
-void solve_grid(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& tally);
+template <int Dim>
+void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies& tally);
 
 // W += dt sum_p V_p (sigma_p - q_p) : grad v_p (the energy the stress absorbs, eq. 4.11,
 // over V0 for small strain), then V^{n+1} = V^n (1 + dt div v) and, when the scheme
-// tracks it, the domain length likewise.
-void work_and_volumes(Particles<1>& p, double dt, bool small_strain, bool track_length,
-                      Tallies& tally);
+// tracks it, the domain vectors by dr/dt = grad v r.
+template <int Dim>
+void work_and_volumes(Particles<Dim>& p, double dt, bool small_strain, bool track_domain, Tallies& tally,
+                      int threads = 1);
 
 }  // namespace mpmx::mpm

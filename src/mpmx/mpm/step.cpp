@@ -4,7 +4,10 @@
 #include <typeinfo>
 
 #include "mpmx/material/linear_elastic.hpp"
+#include "mpmx/mpm/mass_distribution.hpp"
+#include "mpmx/mpm/points.hpp"
 #include "mpmx/mpm/solve.hpp"
+#include "mpmx/mpm/tensor_viscosity.hpp"
 #include "mpmx/mpm/transfer.hpp"
 #include "mpmx/mpm/viscosity.hpp"
 
@@ -13,64 +16,89 @@ namespace mpmx::mpm {
 namespace {
 
 // Stress work of the step (eq. 4.11, with the stress the forces used), then
-// dV/dt = V div v and the domain length where the scheme tracks it; the material's
-// stress, the viscosity, the clock.
-void finish(State<1>& s, double dt) {
+// dV/dt = V div v and the domain where the scheme tracks it; the material's stress, the
+// artificial viscosity, the clock.
+template <int Dim>
+void finish(State<Dim>& s, double dt) {
   auto& p = s.particles;
-  work_and_volumes(p, dt, s.small_strain, tracks_domain(s.shape->options().scheme), s.tallies);
-  s.material->update_stress(p, dt);
+  work_and_volumes(p, dt, s.small_strain, tracks_domain(s.shape->options().scheme), s.tallies, s.threads);
+  const auto view = points(p);
+  s.material->update_stress(view, dt);
   artificial_viscosity(*s.material, s.viscosity, p);
+  if (s.tensor_viscosity.on) {
+    std::array<double*, Dim * Dim> q;
+    for (int c = 0; c < Dim * Dim; ++c) q[c] = p.viscous[c].data();
+    tensor_viscosity<Dim>(view, *s.material, s.tensor_viscosity.c_L, s.tensor_viscosity.c_q, q);
+    s.material->add_viscous_heat(view, q, dt);
+  }
   s.time += dt;
   ++s.step;
 }
 
 }  // namespace
 
-void step_stencil(State<1>& s, double dt) {
+template <int Dim>
+void step_stencil(State<Dim>& s, double dt) {
   auto& g = s.grid;
   auto& p = s.particles;
   (*s.shape)(g, p, s.stencil);                      // nearest nodes afresh, S_ip, G_ip
-  p2g(p, s.stencil, s.small_strain, g);             // m_i, v_i^n (eq. 3.16), f_i
+  p2g(p, s.stencil, s.small_strain, g, s.threads);  // m_i, v_i^n (eq. 3.16), f_i
+  const bool distribute = s.mass_distribution.on;
+  if (distribute) distribute_small_mass_forces(g, s.mass_distribution.threshold, s.mass_distribution.maps);  // eqs. 7.4-7.6
   solve_grid(g, s.boundary, s.time, dt, s.tallies); // v^L (eq. 3.12) with boundaries
-  s.finite_check = g2p(g, s.stencil, dt, s.move, s.midpoint_gradient, p);  // v_p, x_p, grad v
+  if (distribute) gradient_velocities(g, s.mass_distribution.maps);  // eq. 7.7
+  s.finite_check = g2p(g, s.stencil, dt, s.move, s.midpoint_gradient, p, s.threads);  // v_p, x_p, grad v
   finish(s, dt);
 }
 
-void step(State<1>& s, double dt) {
-  auto& g = s.grid;
-  auto& p = s.particles;
-  const SchemeOptions& opt = s.shape->options();
-  const Scheme scheme = opt.scheme;
-  if (scheme != Scheme::mpm && scheme != Scheme::ddmp && scheme != Scheme::ddmp_subpoints)
-    return step_stencil(s, dt);
-  // Fused hat + transfers (mpm; DDMP, eq. 3.31, sub-points eqs. 6.1-6.3): the same
-  // algorithm as the stencil path. For a linear elastic solid without viscosity, g2p
-  // also does what finish() does, in its own pass, where it can.
-  shape::ElasticUpdate update;
-  const auto& mat = *s.material;
-  const bool elastic = s.viscosity <= 0.0 && typeid(mat) == typeid(material::LinearElastic<1>);
-  if (elastic) {
-    update.small_strain = s.small_strain;
-    update.youngs_modulus = static_cast<const material::LinearElastic<1>&>(mat).youngs_modulus();
-  }
-  shape::ElasticUpdate* fuse = elastic ? &update : nullptr;
-  if (scheme == Scheme::mpm) {
-    shape::p2g_linear(g, p, s.small_strain, s.viscosity <= 0.0, s.linear_cells, g);
-    solve_grid(g, s.boundary, s.time, dt, s.tallies);
-    s.finite_check = shape::g2p_linear(g, s.linear_cells, dt, s.move, s.midpoint_gradient, p, fuse);
+template <int Dim>
+void step(State<Dim>& s, double dt) {
+  if constexpr (Dim > 1) {
+    step_stencil(s, dt);
   } else {
-    const int sub = scheme == Scheme::ddmp ? 0 : opt.subpoints;
-    shape::p2g_ddmp(g, p, s.small_strain, sub, s.linear_cells, g);
-    solve_grid(g, s.boundary, s.time, dt, s.tallies);
-    s.finite_check = shape::g2p_ddmp(g, s.linear_cells, dt, s.move, s.midpoint_gradient, sub, p, fuse);
+    auto& g = s.grid;
+    auto& p = s.particles;
+    const SchemeOptions& opt = s.shape->options();
+    const Scheme scheme = opt.scheme;
+    if ((scheme != Scheme::mpm && scheme != Scheme::ddmp && scheme != Scheme::ddmp_subpoints) ||
+        s.mass_distribution.on || s.tensor_viscosity.on)
+      return step_stencil(s, dt);
+    // Fused hat + transfers (mpm; DDMP, eq. 3.31, sub-points eqs. 6.1-6.3): the same
+    // algorithm as the stencil path. For a linear elastic solid without viscosity, g2p
+    // also does what finish() does, in its own pass, where it can.
+    shape::ElasticUpdate update;
+    const auto& mat = *s.material;
+    const bool elastic = s.viscosity <= 0.0 && typeid(mat) == typeid(material::LinearElastic<1>);
+    if (elastic) {
+      update.small_strain = s.small_strain;
+      update.youngs_modulus = static_cast<const material::LinearElastic<1>&>(mat).youngs_modulus();
+    }
+    shape::ElasticUpdate* fuse = elastic ? &update : nullptr;
+    if (scheme == Scheme::mpm) {
+      shape::p2g_linear(g, p, s.small_strain, s.viscosity <= 0.0, s.linear_cells, g);
+      solve_grid(g, s.boundary, s.time, dt, s.tallies);
+      s.finite_check = shape::g2p_linear(g, s.linear_cells, dt, s.move, s.midpoint_gradient, p, fuse);
+    } else {
+      const int sub = scheme == Scheme::ddmp ? 0 : opt.subpoints;
+      shape::p2g_ddmp(g, p, s.small_strain, sub, s.linear_cells, g);
+      solve_grid(g, s.boundary, s.time, dt, s.tallies);
+      s.finite_check = shape::g2p_ddmp(g, s.linear_cells, dt, s.move, s.midpoint_gradient, sub, p, fuse);
+    }
+    if (update.done) {
+      s.tallies.stress_work += update.stress_work;
+      s.time += dt;
+      ++s.step;
+      return;
+    }
+    finish(s, dt);
   }
-  if (update.done) {
-    s.tallies.stress_work += update.stress_work;
-    s.time += dt;
-    ++s.step;
-    return;
-  }
-  finish(s, dt);
 }
+
+template void step_stencil<1>(State<1>&, double);
+template void step_stencil<2>(State<2>&, double);
+template void step_stencil<3>(State<3>&, double);
+template void step<1>(State<1>&, double);
+template void step<2>(State<2>&, double);
+template void step<3>(State<3>&, double);
 
 }  // namespace mpmx::mpm

@@ -4,12 +4,14 @@
 
 namespace mpmx::mpm {
 
-// The step, through the fused 1-D kernels where the scheme has them (mpm, ddmp,
-// ddmp_subpoints).
-void step(State<1>& s, double dt);
+// The step as written (stencil, p2g, solve, g2p, material), for every scheme and
+// dimension: the production path in 2-D and 3-D and the reference in 1-D.
+template <int Dim>
+void step_stencil(State<Dim>& s, double dt);
 
-// The same step through the stored stencil, for every scheme: the algorithm as written,
-// against which the fused kernels are tested.
-void step_stencil(State<1>& s, double dt);
+// The production step: in 1-D through the fused kernels where the scheme has them
+// (mpm, ddmp, ddmp_subpoints), else step_stencil.
+template <int Dim>
+void step(State<Dim>& s, double dt);
 
 }  // namespace mpmx::mpm

@@ -3,6 +3,7 @@
 // (dissertation sec. 3.1, steps 3-10). One loop shape serves every scheme.
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "mpmx/mpm/grid.hpp"
@@ -14,18 +15,24 @@ namespace detail {
 
 // Kernels with the stencil width as a compile-time constant (W > 0) or read at run
 // time (W == 0), so the common widths unroll.
+// Over the particles list[0 .. count) (all, in order, when list is null).
 template <int Dim, int W>
 void p2g_kernel(const Particles<Dim>& p, const Stencil<Dim>& st, const std::vector<double>& vol,
-                Grid<Dim>& g) {
+                Grid<Dim>& g, const std::uint32_t* list, std::size_t count) {
   const int w = W > 0 ? W : st.width;
-  const std::size_t n = p.size();
+  const bool tensor_q = !p.viscous[0].empty();  // eqs. 7.8-7.10 in use
   double* __restrict mass = g.mass.data();
-  for (std::size_t q = 0; q < n; ++q) {
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t q = list ? list[k] : k;
     const double m = p.mass[q], V = vol[q], qv = p.viscous_pressure[q];
     double mv[Dim], sig[Dim][Dim];
     for (int a = 0; a < Dim; ++a) {
       mv[a] = m * p.v[a][q];
-      for (int b = 0; b < Dim; ++b) sig[a][b] = V * (p.stress[a * Dim + b][q] - (a == b ? qv : 0.0));
+      for (int b = 0; b < Dim; ++b) {
+        double s = p.stress[a * Dim + b][q] - (a == b ? qv : 0.0);
+        if (tensor_q) s += p.viscous[a * Dim + b][q];
+        sig[a][b] = V * s;
+      }
     }
     const std::size_t e0 = q * w;
     for (int k = 0; k < w; ++k) {
@@ -43,13 +50,19 @@ void p2g_kernel(const Particles<Dim>& p, const Stencil<Dim>& st, const std::vect
   }
 }
 
-// Returns the sum of the new velocities and positions: finite unless something blew up.
+// Returns the sum of the new velocities and positions: finite unless something blew up
+// (its rounding may depend on the threads; it is only tested for finiteness).
 template <int Dim, int W>
 double g2p_kernel(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool move, double wl,
-                  double wn, Particles<Dim>& p) {
+                  double wn, Particles<Dim>& p, int threads) {
   const int w = W > 0 ? W : st.width;
   const std::size_t n = p.size();
   double check = 0.0;
+  // The gradient reads the distributed velocities where the small-mass distribution is on.
+  const bool own = !g.gradient_velocity[0].empty();
+  const auto& gvl = own ? g.gradient_velocity_L : g.velocity_L;
+  const auto& gvn = own ? g.gradient_velocity : g.velocity;
+#pragma omp parallel for schedule(static) reduction(+ : check) num_threads(threads) if (threads > 1)
   for (std::size_t q = 0; q < n; ++q) {
     double dv[Dim] = {}, vbar[Dim] = {}, L[Dim][Dim] = {};
     const std::size_t e0 = q * w;
@@ -62,7 +75,8 @@ double g2p_kernel(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool mo
         const double vg = wl * vl + wn * vn;
         dv[a] += (vl - vn) * S;
         vbar[a] += vg * S;
-        for (int b = 0; b < Dim; ++b) L[a][b] += vg * st.G[b][e];
+        const double vgrad = wl * gvl[a][i] + wn * gvn[a][i];
+        for (int b = 0; b < Dim; ++b) L[a][b] += vgrad * st.G[b][e];
       }
     }
     for (int a = 0; a < Dim; ++a) {
@@ -82,18 +96,47 @@ double g2p_kernel(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool mo
 // 3.30 / 4.5). `reference_volume`: integrate over V0 (geometrically linear, small
 // strain) instead of the current V.
 template <int Dim>
-void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume, Grid<Dim>& g) {
+void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume, Grid<Dim>& g, int threads = 1) {
   std::fill(g.mass.begin(), g.mass.end(), 0.0);
   for (int d = 0; d < Dim; ++d) {
     std::fill(g.momentum[d].begin(), g.momentum[d].end(), 0.0);
     std::fill(g.force[d].begin(), g.force[d].end(), 0.0);
   }
   const std::vector<double>& vol = reference_volume ? p.volume0 : p.volume;
-  switch (st.width) {
-    case 2: return detail::p2g_kernel<Dim, 2>(p, st, vol, g);
-    case 4: return detail::p2g_kernel<Dim, 4>(p, st, vol, g);
-    case 5: return detail::p2g_kernel<Dim, 5>(p, st, vol, g);
-    default: return detail::p2g_kernel<Dim, 0>(p, st, vol, g);
+  auto kernel = [&](const std::uint32_t* list, std::size_t count) {
+    switch (st.width) {
+      case 2: return detail::p2g_kernel<Dim, 2>(p, st, vol, g, list, count);
+      case 4: return detail::p2g_kernel<Dim, 4>(p, st, vol, g, list, count);
+      case 5: return detail::p2g_kernel<Dim, 5>(p, st, vol, g, list, count);
+      case 8: return detail::p2g_kernel<Dim, 8>(p, st, vol, g, list, count);
+      case 16: return detail::p2g_kernel<Dim, 16>(p, st, vol, g, list, count);
+      default: return detail::p2g_kernel<Dim, 0>(p, st, vol, g, list, count);
+    }
+  };
+  if constexpr (Dim == 1) {
+    kernel(nullptr, p.size());
+  } else {
+    // Slabs of box[Dim-1] node rows along the last axis, by the row of each particle's
+    // first node: two slabs of the same parity never touch the same node, so the even
+    // slabs scatter at once, then the odd ones. Every node sums its particles in the
+    // same order (slab by slab, particles in order) for any thread count.
+    const int w = std::max(st.box[Dim - 1], 1);
+    const std::size_t row = static_cast<std::size_t>(g.stride[Dim - 1]);
+    const std::size_t n = p.size();
+    const std::size_t slabs = g.storage / row / static_cast<std::size_t>(w) + 1;
+    std::vector<std::uint32_t> start(slabs + 1, 0), order(n);
+    std::vector<std::uint32_t> slab(n);
+    for (std::size_t q = 0; q < n; ++q) {
+      slab[q] = static_cast<std::uint32_t>(static_cast<std::size_t>(st.node[q * st.width]) / row / w);
+      ++start[slab[q] + 1];
+    }
+    for (std::size_t s = 0; s < slabs; ++s) start[s + 1] += start[s];
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t q = 0; q < n; ++q) order[fill[slab[q]]++] = static_cast<std::uint32_t>(q);
+    for (std::size_t parity = 0; parity < 2; ++parity) {
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1)
+      for (std::size_t s = parity; s < slabs; s += 2) kernel(order.data() + start[s], start[s + 1] - start[s]);
+    }
   }
 }
 
@@ -105,13 +148,15 @@ void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume,
 // the new velocities and positions, for a cheap finiteness check.
 template <int Dim>
 double g2p(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool move, bool midpoint,
-           Particles<Dim>& p) {
+           Particles<Dim>& p, int threads = 1) {
   const double wl = midpoint ? 0.5 : 1.0, wn = midpoint ? 0.5 : 0.0;
   switch (st.width) {
-    case 2: return detail::g2p_kernel<Dim, 2>(g, st, dt, move, wl, wn, p);
-    case 4: return detail::g2p_kernel<Dim, 4>(g, st, dt, move, wl, wn, p);
-    case 5: return detail::g2p_kernel<Dim, 5>(g, st, dt, move, wl, wn, p);
-    default: return detail::g2p_kernel<Dim, 0>(g, st, dt, move, wl, wn, p);
+    case 2: return detail::g2p_kernel<Dim, 2>(g, st, dt, move, wl, wn, p, threads);
+    case 4: return detail::g2p_kernel<Dim, 4>(g, st, dt, move, wl, wn, p, threads);
+    case 5: return detail::g2p_kernel<Dim, 5>(g, st, dt, move, wl, wn, p, threads);
+    case 8: return detail::g2p_kernel<Dim, 8>(g, st, dt, move, wl, wn, p, threads);
+    case 16: return detail::g2p_kernel<Dim, 16>(g, st, dt, move, wl, wn, p, threads);
+    default: return detail::g2p_kernel<Dim, 0>(g, st, dt, move, wl, wn, p, threads);
   }
 }
 

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -15,15 +17,36 @@ namespace mpmx::md {
 
 namespace {
 
+// Limits of what a file may claim, checked before anything is sized by it: grid points
+// per table (LAMMPS's files have 500 to 10,000; 10^7 is 80 MB a table) and elements.
+constexpr std::int64_t kMaxGridPoints = 10'000'000;
+constexpr std::int64_t kMaxElements = 100;
+
 // Reads a potential file line by line and value by value, keeping the line number
 // for messages.
 class Cursor {
  public:
   explicit Cursor(std::string path) : path_(std::move(path)) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path_, ec))
+      throw InputError(fmt::format("{}: is a directory, not an EAM potential file", path_));
     std::ifstream in(path_);
     if (!in) throw InputError(fmt::format("{}: cannot open EAM potential file", path_));
     std::string line;
     while (std::getline(in, line)) lines_.push_back(line);
+    if (lines_.empty()) throw InputError(fmt::format("{}: the EAM potential file is empty", path_));
+  }
+
+  // How many values (words) the file holds from the next line on: a header's counts
+  // must fit in them before anything is sized by the counts.
+  std::int64_t values_left() const {
+    std::int64_t n = 0;
+    for (std::size_t k = next_; k < lines_.size(); ++k) {
+      std::istringstream words(lines_[k]);
+      std::string w;
+      while (words >> w) ++n;
+    }
+    return n;
   }
 
   [[noreturn]] void fail(int line, const std::string& what) const {
@@ -64,15 +87,23 @@ class Cursor {
     char* end = nullptr;
     errno = 0;
     const double v = std::strtod(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0' || !std::isfinite(v))
+    if (end == w.c_str() || *end != '\0')
       fail(line, fmt::format("expected a number ({}), found '{}'", what, w));
+    if (!std::isfinite(v))
+      fail(line, fmt::format("expected a finite number ({}), found '{}' (nan and inf are not accepted)", what, w));
     return v;
   }
-  long to_integer(const std::string& w, const std::string& what, int line) const {
+  // A whole number from lo to hi `unit`: out of range, the message names it, the value
+  // and the range.
+  std::int64_t to_integer(const std::string& w, const std::string& what, int line, std::int64_t lo,
+                          std::int64_t hi, const std::string& unit) const {
     char* end = nullptr;
-    const long v = std::strtol(w.c_str(), &end, 10);
+    errno = 0;
+    const long long v = std::strtoll(w.c_str(), &end, 10);
     if (end == w.c_str() || *end != '\0')
       fail(line, fmt::format("expected an integer ({}), found '{}'", what, w));
+    if (errno == ERANGE || v < lo || v > hi)
+      fail(line, fmt::format("{} = {}: out of range: expected from {} to {} {}", what, w, lo, hi, unit));
     return v;
   }
   std::vector<std::string> words(const std::string& text) const {
@@ -97,16 +128,30 @@ void read_grid(Cursor& c, EamTables& t) {
   const int ln = c.line_no();
   if (w.size() < 5)
     c.fail(ln, fmt::format("expected 5 values 'nrho drho nr dr cutoff', found {}", w.size()));
-  t.nrho = static_cast<int>(c.to_integer(w[0], "nrho", ln));
+  // Checked before anything is sized by them: at least 5 points (the splines), at most
+  // kMaxGridPoints.
+  t.nrho = static_cast<int>(c.to_integer(w[0], "nrho", ln, 5, kMaxGridPoints, "grid points"));
   t.drho = c.to_number(w[1], "drho", ln);
-  t.nr = static_cast<int>(c.to_integer(w[2], "nr", ln));
+  t.nr = static_cast<int>(c.to_integer(w[2], "nr", ln, 5, kMaxGridPoints, "grid points"));
   t.dr = c.to_number(w[3], "dr", ln);
   t.cut = c.to_number(w[4], "cutoff", ln);
-  if (t.nrho < 5) c.fail(ln, fmt::format("nrho = {}: expected at least 5 grid points", t.nrho));
-  if (t.nr < 5) c.fail(ln, fmt::format("nr = {}: expected at least 5 grid points", t.nr));
   if (!(t.drho > 0)) c.fail(ln, fmt::format("drho = {}: expected a positive spacing", t.drho));
   if (!(t.dr > 0)) c.fail(ln, fmt::format("dr = {}: expected a positive spacing", t.dr));
   if (!(t.cut > 0)) c.fail(ln, fmt::format("cutoff = {}: expected a positive cutoff", t.cut));
+}
+
+// The values a header promises must be in the file before big tables are sized by them:
+// a header claiming 10^7 points in a file of a few lines is refused here, not by the
+// allocator. A smaller shortfall is left to the reading, which names the line where the
+// file ends and what it expected there.
+constexpr double kValuesReadOptimistically = 1e6;  // 8 MB
+
+void check_values_left(Cursor& c, int header_line, double needed, const std::string& what) {
+  if (needed <= kValuesReadOptimistically) return;
+  const std::int64_t left = c.values_left();
+  if (needed > static_cast<double>(left))
+    c.fail(header_line, fmt::format("{} promise {:.0f} values, but the rest of the file holds {}", what, needed,
+                                    left));
 }
 
 // "Z mass [a lattice]" line of one element.
@@ -144,6 +189,8 @@ EamTables read_funcfl(const std::string& path) {
   const double mass = read_mass(c, "of the funcfl file");
   EamTables file;  // the file's own grid
   read_grid(c, file);
+  check_values_left(c, c.line_no(), static_cast<double>(file.nrho) + 2.0 * file.nr,
+                    fmt::format("nrho = {} and nr = {}", file.nrho, file.nr));
   std::vector<double> frho = one_based(file.nrho), zr = one_based(file.nr), rhor = one_based(file.nr);
   c.grab(file.nrho, &frho[1], "F(rho)");
   c.grab(file.nr, &zr[1], "Z(r)");
@@ -200,15 +247,21 @@ EamTables read_setfl_or_fs(const std::string& path, bool fs) {
     const auto w = c.words(text);
     const int ln = c.line_no();
     if (w.empty()) c.fail(ln, "expected 'N element1 ... elementN', found an empty line");
-    const long n = c.to_integer(w[0], "number of elements", ln);
-    if (n < 1) c.fail(ln, fmt::format("number of elements = {}: expected at least 1", n));
-    if (static_cast<long>(w.size()) - 1 != n)
+    const std::int64_t n = c.to_integer(w[0], "number of elements", ln, 1, kMaxElements, "elements");
+    if (static_cast<std::int64_t>(w.size()) - 1 != n)
       c.fail(ln, fmt::format("expected {} element names after N, found {}", n, w.size() - 1));
     t.elements.assign(w.begin() + 1, w.end());
   }
   read_grid(c, t);
   t.rhomax = (t.nrho - 1) * t.drho;
   const int n = static_cast<int>(t.elements.size());
+  {
+    // Per element: a mass line (2+ words), F(rho), rho(r) (n of them in fs); per pair: r*phi.
+    const double dn = n;
+    const double needed = dn * (2.0 + t.nrho + (fs ? dn : 1.0) * t.nr) + dn * (dn + 1) / 2 * t.nr;
+    check_values_left(c, c.line_no(), needed,
+                      fmt::format("{} element(s) with nrho = {} and nr = {}", n, t.nrho, t.nr));
+  }
   t.frho.assign(n, one_based(t.nrho));
   t.rhor.assign(fs ? n * n : n, one_based(t.nr));
   for (int i = 0; i < n; ++i) {

@@ -14,21 +14,18 @@ namespace mpmx::mpm::shape {
 struct DdmpTable {
   // D_{j,j-1}, D_{j,j}, D_{j,j+1} for node j (storage index incl. ghosts; zero on ghosts).
   std::vector<double> dm, d0, dp;
-  explicit DdmpTable(const Grid<1>& g);
+  // M_{j,i} / V_j for i = j-1, j, j+1, M_ji = int S_j S_i dx: the smoothed shape
+  // sum_j S_j(x) M_ji / V_j that carries eq. 7.2's smoothed gradient across the other
+  // axes of a tensor-product grid (2-D, 3-D).
+  std::vector<double> bm, b0, bp;
+  // Along one axis of `cells` cells of width dx.
+  DdmpTable(int cells, double dx);
+  explicit DdmpTable(const Grid<1>& g) : DdmpTable(g.cells[0], g.dx[0]) {}
 };
 
 // Adds w * Gbar_i(xi) for i = c-1 .. c+2 into out[base + (c - 1 - first) ...], i.e.
 // into the entries of the nodes starting at grid index `first`.
 void add_ddmp_gradient(const Grid<1>& g, const DdmpTable& t, double xi, double w, int first,
                        double* out);
-
-// DDMP: hat shape functions, modified gradient at the particle (eq. 3.31).
-void evaluate_ddmp(const Grid<1>& g, const DdmpTable& t, const Particles<1>& p, Stencil<1>& st);
-
-// DDMP with sub-points (eqs. 4.5-4.6, 6.1-6.3): n sub-points placed evenly in the
-// particle domain [x - l/2, x + l/2]; the gradient is their volume-weighted average
-// (equal volumes V_p / n); the shape function stays the hat at the particle.
-void evaluate_ddmp_subpoints(const Grid<1>& g, const DdmpTable& t, const Particles<1>& p,
-                             int n, Stencil<1>& st);
 
 }  // namespace mpmx::mpm::shape

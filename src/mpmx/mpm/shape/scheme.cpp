@@ -1,49 +1,344 @@
 #include "mpmx/mpm/shape/scheme.hpp"
 
-#include <stdexcept>
+#include <algorithm>
+
+#include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/mpm/shape/axis.hpp"
 #include "mpmx/mpm/shape/ddmp.hpp"
-#include "mpmx/mpm/shape/domain.hpp"
-#include "mpmx/mpm/shape/linear.hpp"
 
 namespace mpmx::mpm {
 
-const std::vector<std::string>& scheme_names() {
-  static const std::vector<std::string> names{"mpm", "ugimp", "cpgimp", "cpdi", "ddmp",
-                                              "ddmp_subpoints"};
-  return names;
+const std::vector<SchemeInfo>& schemes() {
+  static const std::vector<SchemeInfo> s{
+      {Scheme::mpm, "mpm", false, false, false},
+      {Scheme::ugimp, "ugimp", false, false, false},
+      {Scheme::cpgimp, "cpgimp", true, false, false},
+      {Scheme::cpdi, "cpdi", true, false, false},
+      {Scheme::ddmp, "ddmp", false, true, false},
+      {Scheme::ddmp_subpoints, "ddmp_subpoints", true, true, true},
+  };
+  return s;
+}
+
+const SchemeInfo& scheme_info(Scheme s) { return schemes()[static_cast<std::size_t>(s)]; }
+
+std::vector<std::string> scheme_names() {
+  std::vector<std::string> n;
+  for (const auto& s : schemes()) n.push_back(s.name);
+  return n;
 }
 
 Scheme scheme_from_name(std::string_view name) {
-  const auto& n = scheme_names();
-  for (std::size_t i = 0; i < n.size(); ++i)
-    if (n[i] == name) return static_cast<Scheme>(i);
-  throw InputError("unknown scheme '" + std::string(name) + "'");
+  for (const auto& s : schemes())
+    if (s.name == name) return s.scheme;
+  throw InputError(fmt::format("unknown scheme '{}' (one of {})", name, fmt::join(scheme_names(), ", ")));
 }
 
-std::string scheme_name(Scheme s) { return scheme_names()[static_cast<std::size_t>(s)]; }
+std::string scheme_name(Scheme s) { return scheme_info(s).name; }
 
-bool tracks_domain(Scheme s) {
-  return s == Scheme::cpgimp || s == Scheme::cpdi || s == Scheme::ddmp_subpoints;
+template <int Dim>
+ShapeEvaluator<Dim>::ShapeEvaluator(SchemeOptions opt, const Grid<Dim>& grid) : opt_(opt) {
+  if (scheme_info(opt_.scheme).ddmp)
+    for (int d = 0; d < Dim; ++d) ddmp_.emplace_back(grid.cells[d], grid.dx[d]);
+}
+template <int Dim>
+ShapeEvaluator<Dim>::~ShapeEvaluator() = default;
+template <int Dim>
+ShapeEvaluator<Dim>::ShapeEvaluator(ShapeEvaluator&&) noexcept = default;
+
+namespace {
+
+using shape::Axis;
+
+// The particle's position in cell units, checked to lie at most a cell off the grid.
+template <int Dim>
+std::array<double, Dim> cell_coords(const Grid<Dim>& g, const Particles<Dim>& p, std::size_t q) {
+  std::array<double, Dim> xi;
+  for (int d = 0; d < Dim; ++d) {
+    xi[d] = (p.x[d][q] - g.lower[d]) * g.inv_dx[d];
+    shape::require_inside(xi[d], g.cells[d], q, p.x[d][q]);
+  }
+  return xi;
 }
 
-ShapeEvaluator::ShapeEvaluator(SchemeOptions opt, const Grid<1>& grid) : opt_(opt) {
-  if (opt_.scheme == Scheme::ddmp || opt_.scheme == Scheme::ddmp_subpoints)
-    ddmp_ = std::make_unique<shape::DdmpTable>(grid);
+// Entry k of a stencil box of widths W, x fastest: the offset along each axis.
+template <int Dim>
+std::array<int, Dim> offsets(int k, const std::array<int, Dim>& W) {
+  std::array<int, Dim> o;
+  for (int d = 0; d < Dim; ++d) {
+    o[d] = k % W[d];
+    k /= W[d];
+  }
+  return o;
 }
-ShapeEvaluator::~ShapeEvaluator() = default;
-ShapeEvaluator::ShapeEvaluator(ShapeEvaluator&&) noexcept = default;
 
-void ShapeEvaluator::operator()(const Grid<1>& g, const Particles<1>& p, Stencil<1>& st) const {
-  switch (opt_.scheme) {
-    case Scheme::mpm: return shape::evaluate_linear(g, p, st);
-    case Scheme::ugimp:
-    case Scheme::cpgimp: return shape::evaluate_domain(g, p, st, true);
-    case Scheme::cpdi: return shape::evaluate_domain(g, p, st, false);
-    case Scheme::ddmp: return shape::evaluate_ddmp(g, *ddmp_, p, st);
-    case Scheme::ddmp_subpoints: return shape::evaluate_ddmp_subpoints(g, *ddmp_, p, opt_.subpoints, st);
+// The stencil's node indices for the box starting at ax[d].first.
+template <int Dim>
+void set_nodes(const Grid<Dim>& g, const Axis* ax, const std::array<int, Dim>& W, int width, int* node) {
+  for (int k = 0; k < width; ++k) {
+    const auto o = offsets<Dim>(k, W);
+    std::array<int, Dim> idx;
+    for (int d = 0; d < Dim; ++d) idx[d] = ax[d].first + o[d];
+    node[k] = static_cast<int>(g.index_clamped(idx));
   }
 }
+
+// S = prod_a S_a, G_d = S_d' prod_{a != d} S_a: the tensor product of 1-D factors,
+// entries x fastest.
+template <int Dim>
+void separable(const Axis* ax, const std::array<int, Dim>& W, int width, double* S, std::array<double*, Dim> G) {
+  std::array<int, Dim> o{};
+  for (int k = 0; k < width; ++k) {
+    double s = 1.0;
+    for (int a = 0; a < Dim; ++a) s *= ax[a].S[o[a]];
+    S[k] = s;
+    for (int d = 0; d < Dim; ++d) {
+      double gd = ax[d].G[o[d]];
+      for (int a = 0; a < Dim; ++a)
+        if (a != d) gd *= ax[a].S[o[a]];
+      G[d][k] = gd;
+    }
+    for (int a = 0; a < Dim && ++o[a] == W[a]; ++a) o[a] = 0;  // next entry
+  }
+}
+
+// Eq. 7.2 at one evaluation point of weight w, its axis factors at offsets `at`:
+// G_d += w (alpha dS_d prod S + (1 - alpha) A_d prod B).
+template <int Dim>
+void add_ddmp(const Axis* ax, const std::array<int, Dim>& at, double w, const std::array<int, Dim>& W,
+              DdmpAlpha form, std::array<double*, Dim> G) {
+  double q[Dim];
+  for (int a = 0; a < Dim; ++a) q[a] = ax[a].q;
+  const double alpha = form == DdmpAlpha::eq_7_3 ? shape::ddmp_alpha_nd<Dim>(q) : shape::ddmp_alpha_product<Dim>(q);
+  const double beta = 1.0 - alpha;
+  constexpr int n4 = Dim == 1 ? 4 : Dim == 2 ? 16 : 64;
+  for (int k = 0; k < n4; ++k) {
+    std::array<int, Dim> o, cell;
+    int kk = k, flat = 0, stride = 1;
+    for (int a = 0; a < Dim; ++a) {
+      cell[a] = kk % 4;
+      kk /= 4;
+      o[a] = at[a] + cell[a];
+      flat += o[a] * stride;
+      stride *= W[a];
+    }
+    for (int d = 0; d < Dim; ++d) {
+      double sharp = ax[d].G[o[d]], smooth = ax[d].A[o[d]];
+      for (int a = 0; a < Dim; ++a)
+        if (a != d) {
+          sharp *= ax[a].S[o[a]];
+          smooth *= ax[a].B[o[a]];
+        }
+      G[d][flat] += w * (alpha * sharp + beta * smooth);
+    }
+  }
+}
+
+}  // namespace
+
+template <int Dim>
+void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p, Stencil<Dim>& st) const {
+  const std::size_t n = p.size();
+  const Scheme scheme = opt_.scheme;
+  const bool corners = scheme == Scheme::cpdi && Dim > 1;  // CPDI's deformed domains
+  // Sub-points per axis (1-D: the deck's count).
+  std::array<int, Dim> nsub;
+  for (int d = 0; d < Dim; ++d)
+    nsub[d] = scheme != Scheme::ddmp_subpoints ? 1 : Dim == 1 ? opt_.subpoints : opt_.subpoints_axes[d];
+  auto half = [&](std::size_t q, int d) { return 0.5 * p.length[d * Dim + d][q] * g.inv_dx[d]; };
+  // Position of corner or sub-point `c` of particle q in cell units, from its domain
+  // vectors: x + sum_b r_b u_b with u_b = s_b / 2 (corners) or (s_b + 1/2) / n - 1/2.
+  auto place = [&](std::size_t q, const std::array<double, Dim>& xi, int c, bool corner) {
+    std::array<double, Dim> u, at = xi;
+    for (int b = 0; b < Dim; ++b) {
+      const int s = corner ? c >> b & 1 : c % nsub[b];
+      if (!corner) c /= nsub[b];
+      u[b] = corner ? (s ? 0.5 : -0.5) : (s + 0.5) / nsub[b] - 0.5;
+    }
+    for (int a = 0; a < Dim; ++a)
+      for (int b = 0; b < Dim; ++b) at[a] += p.length[a * Dim + b][q] * g.inv_dx[a] * u[b];
+    return at;
+  };
+  int points = 1;  // corners or sub-points per particle
+  for (int d = 0; d < Dim; ++d) points *= corners ? 2 : nsub[d];
+
+  // Pass 1: the box width along each axis, the widest particle's.
+  std::array<int, Dim> W;
+  W.fill(scheme == Scheme::ddmp ? 4 : 2);
+  if (scheme == Scheme::mpm || scheme == Scheme::ddmp) {
+    for (std::size_t q = 0; q < n; ++q) cell_coords(g, p, q);
+  } else {
+    for (std::size_t q = 0; q < n; ++q) {
+      const auto xi = cell_coords(g, p, q);
+      if (scheme == Scheme::ugimp || scheme == Scheme::cpgimp || (scheme == Scheme::cpdi && Dim == 1)) {
+        for (int d = 0; d < Dim; ++d) W[d] = std::max(W[d], shape::domain_width(xi[d], half(q, d), g.cells[d]));
+        continue;
+      }
+      std::array<int, Dim> lo, hi;
+      lo.fill(1 << 30);
+      hi.fill(-(1 << 30));
+      for (int c = 0; c < points; ++c) {
+        const auto at = place(q, xi, c, corners);
+        for (int d = 0; d < Dim; ++d) {
+          const int cell = shape::ddmp_cell(at[d], g.cells[d]);
+          lo[d] = std::min(lo[d], corners ? cell : cell - 1);
+          hi[d] = std::max(hi[d], corners ? cell + 1 : cell + 2);
+        }
+      }
+      for (int d = 0; d < Dim; ++d) W[d] = std::max(W[d], hi[d] - lo[d] + 1);
+    }
+  }
+  int width = 1;
+  for (int d = 0; d < Dim; ++d) {
+    shape::require_width(W[d]);
+    width *= W[d];
+  }
+  st.reset(n, width, scheme != Scheme::mpm);
+  st.box = W;
+
+  // Pass 2: every particle's factors and their products, each particle on its own.
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (std::size_t q = 0; q < n; ++q) {
+    Axis ax[Dim];
+    std::array<double, Dim> xi;
+    for (int d = 0; d < Dim; ++d) xi[d] = (p.x[d][q] - g.lower[d]) * g.inv_dx[d];
+    const std::size_t e = q * static_cast<std::size_t>(width);
+    std::array<double*, Dim> G;
+    for (int d = 0; d < Dim; ++d) G[d] = &st.G[d][e];
+    double* S = &st.S[e];
+    switch (scheme) {
+      case Scheme::mpm:
+        for (int d = 0; d < Dim; ++d) shape::hat_axis(xi[d], g.cells[d], g.inv_dx[d], ax[d]);
+        separable<Dim>(ax, W, width, S, G);
+        break;
+      case Scheme::ugimp:
+      case Scheme::cpgimp:
+      case Scheme::cpdi:
+        if (!corners) {
+          for (int d = 0; d < Dim; ++d) {
+            ax[d].clear(W[d]);
+            shape::domain_axis(xi[d], half(q, d), g.cells[d], g.inv_dx[d], scheme != Scheme::cpdi, W[d], ax[d]);
+          }
+          separable<Dim>(ax, W, width, S, G);
+        } else {
+          // CPDI: S_ip the mean of the corner values; grad S_ip the mean gradient of their
+          // multilinear interpolant over the parallelogram (parallelepiped), 2 R^-T g with
+          // g_b = sum_c s_b S(x_c) / 2^d and R the domain vectors as columns.
+          std::array<int, Dim> lo;
+          lo.fill(1 << 30);
+          for (int c = 0; c < points; ++c) {
+            const auto at = place(q, xi, c, true);
+            for (int d = 0; d < Dim; ++d) lo[d] = std::min(lo[d], shape::ddmp_cell(at[d], g.cells[d]));
+          }
+          for (int d = 0; d < Dim; ++d) ax[d].first = lo[d];
+          std::array<std::vector<double>, Dim> gxi;
+          for (auto& v : gxi) v.assign(width, 0.0);
+          for (int c = 0; c < points; ++c) {
+            const auto at = place(q, xi, c, true);
+            Axis cx[Dim];
+            for (int d = 0; d < Dim; ++d) {
+              cx[d].clear(W[d]);
+              const int cell = shape::ddmp_cell(at[d], g.cells[d]);
+              for (int k = 0; k < 2; ++k) {
+                const int i = cell + k;
+                cx[d].S[cell - lo[d] + k] = shape::hat_ext(at[d], i, g.cells[d]);
+              }
+            }
+            for (int k = 0; k < width; ++k) {
+              const auto o = offsets<Dim>(k, W);
+              double s = 1.0;
+              for (int a = 0; a < Dim; ++a) s *= cx[a].S[o[a]];
+              S[k] += s / points;
+              for (int b = 0; b < Dim; ++b) gxi[b][k] += ((c >> b & 1) ? s : -s) / points;
+            }
+          }
+          // R^-T by the cofactors of R (2-D, 3-D).
+          double R[3][3] = {}, inv[3][3] = {};
+          for (int a = 0; a < Dim; ++a)
+            for (int b = 0; b < Dim; ++b) R[a][b] = p.length[a * Dim + b][q];
+          if constexpr (Dim == 2) {
+            const double det = R[0][0] * R[1][1] - R[0][1] * R[1][0];
+            inv[0][0] = R[1][1] / det, inv[0][1] = -R[0][1] / det;
+            inv[1][0] = -R[1][0] / det, inv[1][1] = R[0][0] / det;
+          } else if constexpr (Dim == 3) {
+            const double det = R[0][0] * (R[1][1] * R[2][2] - R[1][2] * R[2][1]) -
+                               R[0][1] * (R[1][0] * R[2][2] - R[1][2] * R[2][0]) +
+                               R[0][2] * (R[1][0] * R[2][1] - R[1][1] * R[2][0]);
+            for (int a = 0; a < 3; ++a)
+              for (int b = 0; b < 3; ++b) {
+                const int a1 = (b + 1) % 3, a2 = (b + 2) % 3, b1 = (a + 1) % 3, b2 = (a + 2) % 3;
+                inv[a][b] = (R[a1][b1] * R[a2][b2] - R[a1][b2] * R[a2][b1]) / det;  // (R^-1)_ab
+              }
+          }
+          for (int k = 0; k < width; ++k)
+            for (int d = 0; d < Dim; ++d) {
+              double v = 0.0;
+              for (int b = 0; b < Dim; ++b) v += inv[b][d] * gxi[b][k];  // (R^-T)_db = (R^-1)_bd
+              G[d][k] = 2.0 * v;
+            }
+        }
+        break;
+      case Scheme::ddmp:
+        for (int d = 0; d < Dim; ++d) {
+          ax[d].clear(4);
+          shape::ddmp_axis(xi[d], g.cells[d], g.inv_dx[d], ddmp_[d], 0, ax[d]);
+          ax[d].first = shape::ddmp_cell(xi[d], g.cells[d]) - 1;
+          S = &st.S[e];
+        }
+        for (int k = 0; k < width; ++k) {
+          const auto o = offsets<Dim>(k, W);
+          double s = 1.0;
+          for (int a = 0; a < Dim; ++a) s *= ax[a].S[o[a]];
+          S[k] = s;
+        }
+        add_ddmp<Dim>(ax, std::array<int, Dim>{}, 1.0, W, opt_.alpha, G);
+        break;
+      case Scheme::ddmp_subpoints: {
+        // The box: the sub-points' cells widened by one node below and two above.
+        std::array<int, Dim> lo;
+        lo.fill(1 << 30);
+        for (int c = 0; c < points; ++c) {
+          const auto at = place(q, xi, c, false);
+          for (int d = 0; d < Dim; ++d) lo[d] = std::min(lo[d], shape::ddmp_cell(at[d], g.cells[d]) - 1);
+        }
+        // S: the hat at the particle itself.
+        Axis px[Dim];
+        for (int d = 0; d < Dim; ++d) {
+          px[d].clear(W[d]);
+          const int c = shape::ddmp_cell(xi[d], g.cells[d]);
+          shape::ddmp_axis(xi[d], g.cells[d], g.inv_dx[d], ddmp_[d], c - 1 - lo[d], px[d]);
+          px[d].first = lo[d];
+        }
+        for (int k = 0; k < width; ++k) {
+          const auto o = offsets<Dim>(k, W);
+          double s = 1.0;
+          for (int a = 0; a < Dim; ++a) s *= px[a].S[o[a]];
+          S[k] = s;
+        }
+        // G: the volume-weighted mean of eq. 7.2 over the sub-points (eqs. 4.5-4.6).
+        const double w = 1.0 / points;
+        for (int c = 0; c < points; ++c) {
+          const auto at = place(q, xi, c, false);
+          std::array<int, Dim> off;
+          for (int d = 0; d < Dim; ++d) {
+            ax[d].clear(W[d]);
+            off[d] = shape::ddmp_cell(at[d], g.cells[d]) - 1 - lo[d];
+            shape::ddmp_axis(at[d], g.cells[d], g.inv_dx[d], ddmp_[d], off[d], ax[d]);
+          }
+          add_ddmp<Dim>(ax, off, w, W, opt_.alpha, G);
+        }
+        for (int d = 0; d < Dim; ++d) ax[d].first = lo[d];
+        break;
+      }
+    }
+    set_nodes<Dim>(g, ax, W, width, &st.node[e]);
+  }
+}
+
+template class ShapeEvaluator<1>;
+template class ShapeEvaluator<2>;
+template class ShapeEvaluator<3>;
 
 }  // namespace mpmx::mpm

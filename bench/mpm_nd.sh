@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The 2-D and 3-D continuum against the peer: the two-disk case (160 x 160 cells) and the
+# two-sphere case (40^3 cells) of issue 13, with mpm, ddmp and ddmp_subpoints (2 per
+# axis), on one thread and two. Prints million particle-steps per second and the ratios
+# against Karamelo's figures for the same case measured on this machine kind
+# (docs/performance.md: 2-D 1.50-2.05, 3-D 0.85-0.93 million particle-steps/s, one rank),
+# and two threads against one. Steps cut to a tenth (BENCH_FULL=1: the whole run).
+set -euo pipefail
+BUILD=${1:-build-bench}
+MPMX="$BUILD/mpmx"
+cd "$(dirname "$0")/.."
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+rate() { /usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['particle_steps_per_second'] / 1e6)" "$1"; }
+for case in disks_2d:1.50:2.05 spheres_3d:0.85:0.93; do
+  IFS=: read -r name klo khi <<<"$case"
+  for scheme in mpm ddmp ddmp_subpoints; do
+    deck="$tmp/$name-$scheme.toml"
+    sed "s/^name = \"mpm\"/name = \"$scheme\"$([ "$scheme" = ddmp_subpoints ] && echo '\nsubpoints = 2')/" "bench/$name.toml" > "$deck"
+    [ "${BENCH_FULL:-0}" = 1 ] || sed -i 's/^end = 3.5/end = 0.35/' "$deck"
+    for t in 1 2; do
+      "$MPMX" run "$deck" --out "$tmp/$name-$scheme-$t" --threads "$t" --quiet --no-plot > /dev/null
+    done
+    r1=$(rate "$tmp/$name-$scheme-1/run.json")
+    r2=$(rate "$tmp/$name-$scheme-2/run.json")
+    /usr/bin/python3 -c "
+import sys
+r1, r2, lo, hi = map(float, sys.argv[1:5])
+print(f'{sys.argv[5]:>11} {sys.argv[6]:<15} 1 thread {r1:6.2f} M/s ({r1/hi:4.1f}-{r1/lo:4.1f}x Karamelo), 2 threads {r2:6.2f} M/s ({r2/r1:4.2f}x one)')
+" "$r1" "$r2" "$klo" "$khi" "$name" "$scheme"
+  done
+done

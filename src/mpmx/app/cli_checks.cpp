@@ -1,0 +1,96 @@
+#include "mpmx/app/cli_checks.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/machine.hpp"
+
+namespace mpmx::app {
+
+namespace {
+
+// The value as a whole number, or an error message.
+bool parse_whole(const std::string& s, std::int64_t& v, std::string& why) {
+  const char* b = s.data();
+  const char* e = b + s.size();
+  if (b != e && *b == '+') ++b;
+  const auto r = std::from_chars(b, e, v);
+  if (r.ec == std::errc::result_out_of_range) {
+    why = fmt::format("{} is out of range", s);
+    return false;
+  }
+  if (s.empty() || r.ec != std::errc() || r.ptr != e) {
+    why = fmt::format("'{}' is not a whole number", s);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+CLI::Validator thread_count() {
+  const unsigned most = max_threads();
+  return CLI::Validator(
+      [most](std::string& s) -> std::string {
+        std::int64_t v = 0;
+        std::string why;
+        if (!parse_whole(s, v, why)) return why + fmt::format(": give 0 (all cores) or up to {}", most);
+        if (v < 0) return fmt::format("{} is negative: give 0 (all cores) or a count up to {}", s, most);
+        if (v > static_cast<std::int64_t>(most))
+          return fmt::format("{} is too many: at most {} on this machine ({} x {} hardware threads)", s, most,
+                             kThreadsPerHardwareThread, hardware_threads());
+        return {};
+      },
+      fmt::format("0..{}", most), "THREADS");
+}
+
+CLI::Validator whole_number(std::int64_t lo, std::int64_t hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& s) -> std::string {
+        std::int64_t v = 0;
+        std::string why;
+        if (!parse_whole(s, v, why)) return why;
+        if (v < lo) return fmt::format("{} is below {}", s, lo);
+        if (v > hi) return fmt::format("{} is above {}", s, hi);
+        return {};
+      },
+      hi == std::numeric_limits<std::int64_t>::max() ? fmt::format(">= {}", lo) : fmt::format("{}..{}", lo, hi),
+      "WHOLE");
+}
+
+CLI::Validator finite_non_negative() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(s.c_str(), &end);
+        if (s.empty() || end != s.c_str() + s.size()) return fmt::format("'{}' is not a number", s);
+        if (!std::isfinite(v)) return fmt::format("{} is not a finite number", s);
+        if (v < 0) return fmt::format("{} is negative", s);
+        return {};
+      },
+      ">= 0", "FINITE_NON_NEGATIVE");
+}
+
+CLI::Validator non_empty_path() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string { return s.empty() ? "the path is empty: give a directory" : ""; }, "",
+      "NON_EMPTY");
+}
+
+void apply_shared_checks(CLI::App& app) {
+  for (CLI::Option* o : app.get_options()) {
+    // transform() puts the check first, so its message is the one a bad value gets.
+    if (o->check_lname("threads")) o->transform(thread_count());
+    if (o->check_lname("checkpoint-minutes")) o->transform(finite_non_negative());
+    if (o->check_lname("checkpoint-every"))
+      o->transform(whole_number(0, std::numeric_limits<std::int64_t>::max()));
+    if (o->check_lname("out")) o->transform(non_empty_path());
+  }
+  for (CLI::App* sub : app.get_subcommands({})) apply_shared_checks(*sub);
+}
+
+}  // namespace mpmx::app

@@ -1,0 +1,29 @@
+#pragma once
+// Checks of command-line values, one short line each naming the option and the value:
+// thread counts bounded by the machine, finite non-negative numbers, whole numbers in a
+// range, non-empty paths. CLI11 validators, so a bad value is a CLI::ValidationError
+// (exit code 2) before any command runs.
+#include <cstdint>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace mpmx::app {
+
+// --threads N: a whole number from 0 (all cores) to max_threads() (4 x the hardware
+// threads): "100000 is too many: at most 8 on this machine (4 x 2 hardware threads)".
+CLI::Validator thread_count();
+// A whole number from lo to hi ("-1 is below 1", "'x' is not a whole number").
+CLI::Validator whole_number(std::int64_t lo, std::int64_t hi);
+// A finite number >= 0 ("nan is not a finite number").
+CLI::Validator finite_non_negative();
+// A path that is not empty (`--out ""`).
+CLI::Validator non_empty_path();
+
+// The shared policy, applied by main() to every command once all are registered: any
+// option named --threads, --checkpoint-minutes, --checkpoint-every or --out gets the
+// check above, ahead of any check the command added itself. A command that declares
+// such an option needs to do nothing more.
+void apply_shared_checks(CLI::App& app);
+
+}  // namespace mpmx::app

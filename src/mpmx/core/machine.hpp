@@ -1,0 +1,22 @@
+#pragma once
+// What this machine has, for refusing up front a run it cannot hold or finish: physical
+// memory and hardware threads.
+#include <cstdint>
+#include <string>
+
+namespace mpmx {
+
+// Physical memory in bytes (sysconf; /proc/meminfo as a fallback); 0 when unknown.
+std::uint64_t physical_memory_bytes();
+
+// std::thread::hardware_concurrency(), at least 1.
+unsigned hardware_threads();
+
+// The most threads a --threads option accepts: kThreadsPerHardwareThread x the hardware threads.
+inline constexpr unsigned kThreadsPerHardwareThread = 4;
+unsigned max_threads();
+
+// "1.5 GiB", "512 MiB", "12 KiB", "100 B": a byte count for messages.
+std::string format_bytes(double bytes);
+
+}  // namespace mpmx

@@ -1,0 +1,230 @@
+#include "mpmx/dpd/run.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/io/run_record.hpp"
+#include "mpmx/dpd/dump.hpp"
+#include "mpmx/dpd/setup.hpp"
+
+namespace mpmx::dpd {
+
+System build_system(const DpdConfig& c, int threads) {
+  Particles all;
+  std::vector<RigidGroup> groups;
+  std::int64_t next_id = 1;
+  for (std::size_t b = 0; b < c.blocks.size(); ++b) {
+    const BlockSpec& s = c.blocks[b];
+    Particles p = s.fcc ? fcc_block(s.cells, s.constant, s.origin, s.mass, 0, next_id)
+                        : random_block(s.count, s.size, s.origin, s.mass, 0, next_id, c.params.seed + 7919 * b);
+    next_id += static_cast<std::int64_t>(p.size());
+    if (!s.group.empty()) {
+      groups.push_back({s.group, s.velocity});
+      for (auto& g : p.group) g = static_cast<int>(groups.size()) - 1;
+    }
+    append(all, p);
+  }
+  for (const RegionGroupSpec& r : c.regions) {
+    groups.push_back({r.name, r.velocity});
+    const int g = static_cast<int>(groups.size()) - 1;
+    long n = 0;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      const double x[3] = {all.x[i], all.y[i], all.z[i]};
+      bool in = !all.rigid(i);
+      for (int d = 0; d < 3; ++d) in = in && x[d] >= r.lo[d] && x[d] < r.hi[d];
+      if (in) all.group[i] = g, ++n;
+    }
+    if (n == 0) throw InputError(fmt::format("rigid group \"{}\": its region holds no particle", r.name));
+  }
+  maxwell_velocities(all, c.initial_temperature, c.params.seed);
+  // Mobile blocks with a velocity move as a whole on top of the thermal motion.
+  {
+    std::size_t i = 0;
+    for (const BlockSpec& s : c.blocks) {
+      const std::size_t n = s.fcc ? 4ul * s.cells[0] * s.cells[1] * s.cells[2] : static_cast<std::size_t>(s.count);
+      if (s.group.empty())
+        for (std::size_t k = i; k < i + n; ++k)
+          all.vx[k] += s.velocity[0], all.vy[k] += s.velocity[1], all.vz[k] += s.velocity[2];
+      i += n;
+    }
+  }
+  if (c.params.energy_conserving)
+    for (auto& u : all.u) u = c.params.heat_capacity * c.initial_temperature;
+  std::vector<RigidGroup> at_rest = groups;
+  for (auto& g : at_rest) g.velocity = {0, 0, 0};
+  SystemOptions opt;
+  opt.skin = c.skin;
+  opt.threads = threads;
+  return System(std::move(all), c.domain, c.potential, c.params, opt, std::move(at_rest));
+}
+
+namespace {
+
+class Thermo {
+ public:
+  Thermo(const std::string& path, const System& s) : out_(path) {
+    out_ << "phase,step,time_ps,pe_eV,ke_eV,internal_eV,etotal_eV,temperature_K,internal_temperature_K,"
+            "px_amu_A_per_ps,py_amu_A_per_ps,pz_amu_A_per_ps,pressure_GPa,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,"
+            "sxz_GPa,syz_GPa";
+    for (const auto& g : s.groups()) out_ << fmt::format(",{0}_fx_eV_per_A,{0}_fy_eV_per_A,{0}_fz_eV_per_A", g.name);
+    out_ << "\n";
+  }
+  void row(const char* phase, const System& s) {
+    const auto st = s.stress_gpa();
+    const auto m = s.momentum();
+    out_ << fmt::format("{},{},{:.6f},{:.15g},{:.15g},{:.15g},{:.15g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},"
+                        "{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}",
+                        phase, s.step(), s.time(), s.potential_energy(), s.kinetic_energy(), s.internal_energy(),
+                        s.total_energy(), s.temperature(), s.internal_temperature(), m[0], m[1], m[2],
+                        s.pressure_gpa(), st[0], st[4], st[8], st[1], st[2], st[5]);
+    for (std::size_t g = 0; g < s.groups().size(); ++g) {
+      const auto f = s.group_force(static_cast<int>(g));
+      out_ << fmt::format(",{:.10g},{:.10g},{:.10g}", f[0], f[1], f[2]);
+    }
+    out_ << "\n";
+  }
+
+ private:
+  std::ofstream out_;
+};
+
+toml::array vec(const md::Vec3& v) { return toml::array{v[0], v[1], v[2]}; }
+
+}  // namespace
+
+DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads,
+                      bool quiet) {
+  namespace fs = std::filesystem;
+  fs::create_directories(out_dir);
+  const auto t0 = std::chrono::steady_clock::now();
+  System sys = build_system(c, threads);
+  const double n = static_cast<double>(sys.particles().size());
+  Thermo thermo((fs::path(out_dir) / "thermo.csv").string(), sys);
+  std::ofstream dump;
+  if (c.dump_every > 0) dump.open(fs::path(out_dir) / "dump.lammpstrj");
+  const bool tty = !quiet && isatty(fileno(stderr));
+  double tsum = 0;  // kinetic temperature summed over the run's thermo rows
+  long tcount = 0;
+  std::vector<double> row_step, row_energy, row_kinetic;  // the run's rows, for the drift
+  auto last = std::chrono::steady_clock::now();
+
+  // One phase of `steps` steps with thermo rows and progress.
+  auto phase = [&](const char* name, std::int64_t steps, const Berendsen* b, bool dumps) {
+    thermo.row(name, sys);
+    if (dumps && c.dump_every > 0) write_lammps_dump(dump, sys.step(), sys.particles(), sys.domain());
+    const auto start = std::chrono::steady_clock::now();
+    for (std::int64_t done = 0; done < steps;) {
+      const std::int64_t chunk = std::min<std::int64_t>(c.thermo, steps - done);
+      sys.advance(static_cast<int>(chunk), c.dt, b);
+      done += chunk;
+      thermo.row(name, sys);
+      if (dumps) {
+        tsum += sys.temperature(), ++tcount;
+        row_step.push_back(static_cast<double>(sys.step()));
+        row_energy.push_back(sys.total_energy());
+        row_kinetic.push_back(sys.kinetic_energy());
+      }
+      if (dumps && c.dump_every > 0 && done % c.dump_every == 0)
+        write_lammps_dump(dump, sys.step(), sys.particles(), sys.domain());
+      const auto now = std::chrono::steady_clock::now();
+      if (!quiet && std::chrono::duration<double>(now - last).count() > 2.0) {
+        last = now;
+        const double el = std::chrono::duration<double>(now - start).count();
+        fmt::print(stderr, "{}dpd {}: step {}/{} ({:.0f}%), {:.3g} particle-steps/s, ETA {:.0f} s{}",
+                   tty ? "\r" : "", name, done, steps, 100.0 * done / steps, n * done / el,
+                   el * (steps - done) / done, tty ? "" : "\n");
+      }
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+
+  if (c.equilibrate && c.equilibrate_steps > 0) phase("equilibrate", c.equilibrate_steps, &c.berendsen, false);
+  // The run: rigid groups at their velocities, energy and momentum from here.
+  DpdRunSummary r;
+  std::vector<md::Vec3> set_v;  // groups in build_system's order: blocks, then regions
+  for (const BlockSpec& s : c.blocks)
+    if (!s.group.empty()) set_v.push_back(s.velocity);
+  for (const RegionGroupSpec& s : c.regions) set_v.push_back(s.velocity);
+  for (std::size_t g = 0; g < set_v.size(); ++g) sys.set_group_velocity(static_cast<int>(g), set_v[g]);
+  const double e0 = sys.total_energy(), k0 = sys.kinetic_energy();
+  const md::Vec3 p0 = sys.momentum();
+  row_step.push_back(static_cast<double>(sys.step()));
+  row_energy.push_back(e0);
+  row_kinetic.push_back(k0);
+  const std::int64_t step0 = sys.step();
+  const double run_seconds = phase("run", c.steps, nullptr, true);
+  if (tty) fmt::print(stderr, "\n");
+  const auto t1 = std::chrono::steady_clock::now();
+
+  r.particles = static_cast<long>(n);
+  r.steps = static_cast<long>(c.steps);
+  r.wall_seconds = std::chrono::duration<double>(t1 - t0).count();
+  r.particle_steps_per_second = run_seconds > 0 ? n * c.steps / run_seconds : 0.0;
+  // Drift: least-squares slope of the total energy over the run's rows, per 1000 steps,
+  // over the mean kinetic energy (the rows' scatter is velocity Verlet's O(dt^2) wobble).
+  double slope = 0, mean_k = 0;
+  if (row_step.size() >= 2) {
+    const double m = static_cast<double>(row_step.size());
+    double mx = 0, my = 0;
+    for (std::size_t k = 0; k < row_step.size(); ++k) mx += row_step[k] / m, my += row_energy[k] / m, mean_k += row_kinetic[k] / m;
+    double sxy = 0, sxx = 0;
+    for (std::size_t k = 0; k < row_step.size(); ++k)
+      sxy += (row_step[k] - mx) * (row_energy[k] - my), sxx += (row_step[k] - mx) * (row_step[k] - mx);
+    slope = sxx > 0 ? sxy / sxx : 0.0;
+  }
+  r.energy_drift = (c.params.energy_conserving && mean_k > 0) ? slope * 1000 / mean_k : 0.0;
+  r.temperature = tcount > 0 ? tsum / tcount : sys.temperature();
+
+  const md::Vec3 p1 = sys.momentum();
+  toml::table rec{{"version", MPMX_VERSION},
+                  {"command", "dpd"},
+                  {"deck_file", c.deck_file},
+                  {"deck", deck_echo},
+                  {"case", c.id},
+                  {"potential", describe(c.potential)},
+                  {"particles", static_cast<std::int64_t>(r.particles)},
+                  {"steps", static_cast<std::int64_t>(r.steps)},
+                  {"equilibrate_steps", static_cast<std::int64_t>(c.equilibrate ? c.equilibrate_steps : 0)},
+                  {"dt_ps", c.dt},
+                  {"threads", threads},
+                  {"wall_seconds", r.wall_seconds},
+                  {"run_seconds", run_seconds},
+                  {"particle_steps_per_second", r.particle_steps_per_second},
+                  {"neighbor_builds", sys.neighbor_builds()},
+                  {"sweep_slabs", sys.sweep_slabs()},
+                  {"integrator", c.params.integrator == Integrator::shardlow ? "shardlow" : "velocity_verlet"},
+                  {"ensemble", c.params.energy_conserving ? "dpde" : "dpd"},
+                  {"mean_temperature_K", r.temperature},
+                  {"final",
+                   toml::table{{"step", sys.step()},
+                               {"potential_energy_eV", sys.potential_energy()},
+                               {"kinetic_energy_eV", sys.kinetic_energy()},
+                               {"internal_energy_eV", sys.internal_energy()},
+                               {"temperature_K", sys.temperature()},
+                               {"internal_temperature_K", sys.internal_temperature()},
+                               {"pressure_GPa", sys.pressure_gpa()}}},
+                  {"conservation",
+                   toml::table{{"energy_start_eV", e0},
+                               {"energy_end_eV", sys.total_energy()},
+                               {"energy_drift_per_1000_steps_over_kinetic", r.energy_drift},
+                               {"energy_change_over_kinetic", k0 > 0 ? (sys.total_energy() - e0) / k0 : 0.0},
+                               {"momentum_start", vec(p0)},
+                               {"momentum_end", vec(p1)},
+                               {"from_step", step0}}}};
+  std::ostringstream os;
+  os << toml::json_formatter{rec} << '\n';
+  io::write_file_atomic((fs::path(out_dir) / "run.json").string(), os.str());
+  return r;
+}
+
+}  // namespace mpmx::dpd

@@ -1,0 +1,78 @@
+#include "mpmx/dpd/setup.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/units.hpp"
+#include "mpmx/dpd/pair_random.hpp"
+#include "mpmx/dpd/thermostat.hpp"
+#include "mpmx/md/lattice.hpp"
+#include "mpmx/md/rng.hpp"
+
+namespace mpmx::dpd {
+
+Particles fcc_block(const std::array<int, 3>& cells, double a, const md::Vec3& origin, double mass, int type,
+                    std::int64_t first_id) {
+  const md::Crystal c = md::fcc(cells[0], cells[1], cells[2], a, 0.0, type);
+  Particles p;
+  for (std::size_t i = 0; i < c.atoms.size(); ++i)
+    p.push_back(origin[0] + c.atoms.x[i], origin[1] + c.atoms.y[i], origin[2] + c.atoms.z[i], mass, type,
+                first_id + static_cast<std::int64_t>(i));
+  return p;
+}
+
+Particles random_block(long count, const md::Vec3& size, const md::Vec3& origin, double mass, int type,
+                       std::int64_t first_id, std::uint64_t seed) {
+  if (count < 0 || !(size[0] > 0 && size[1] > 0 && size[2] > 0))
+    throw InputError(fmt::format("random block: count {} in {} x {} x {}: need count >= 0 and a positive size",
+                                 count, size[0], size[1], size[2]));
+  md::RngStream rng(seed, 0);
+  Particles p;
+  for (long i = 0; i < count; ++i) {
+    const double x = origin[0] + size[0] * rng.uniform();
+    const double y = origin[1] + size[1] * rng.uniform();
+    const double z = origin[2] + size[2] * rng.uniform();
+    p.push_back(x, y, z, mass, type, first_id + i);
+  }
+  return p;
+}
+
+void append(Particles& a, const Particles& b) {
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    a.push_back(b.x[i], b.y[i], b.z[i], b.mass[i], b.type[i], b.id[i]);
+    const std::size_t k = a.size() - 1;
+    a.vx[k] = b.vx[i], a.vy[k] = b.vy[i], a.vz[k] = b.vz[i];
+    a.u[k] = b.u[i];
+    a.group[k] = b.group[i];
+  }
+}
+
+void maxwell_velocities(Particles& p, double temperature_K, std::uint64_t seed) {
+  if (!(temperature_K >= 0)) throw InputError(fmt::format("temperature = {} K: must be >= 0", temperature_K));
+  double mt = 0, px = 0, py = 0, pz = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.rigid(i)) continue;
+    // Three normal components from the particle's own stream: independent of order.
+    md::RngStream rng(seed, mix64(static_cast<std::uint64_t>(p.id[i])));
+    const double sd = std::sqrt(units::boltzmann_eV_per_K * temperature_K / (p.mass[i] * units::mvv2e));
+    p.vx[i] = sd * rng.normal(), p.vy[i] = sd * rng.normal(), p.vz[i] = sd * rng.normal();
+    mt += p.mass[i], px += p.mass[i] * p.vx[i], py += p.mass[i] * p.vy[i], pz += p.mass[i] * p.vz[i];
+  }
+  if (mt == 0) return;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.rigid(i)) continue;
+    p.vx[i] -= px / mt, p.vy[i] -= py / mt, p.vz[i] -= pz / mt;
+  }
+  const double t = kinetic_temperature(p);
+  if (t > 0) {
+    const double s = std::sqrt(temperature_K / t);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.rigid(i)) continue;
+      p.vx[i] *= s, p.vy[i] *= s, p.vz[i] *= s;
+    }
+  }
+}
+
+}  // namespace mpmx::dpd

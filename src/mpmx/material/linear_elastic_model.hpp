@@ -1,0 +1,27 @@
+#pragma once
+// The [material] table of model = "linear_elastic".
+#include "mpmx/material/registry.hpp"
+
+namespace mpmx::material {
+
+struct LinearElasticModel final : Model {
+  double rho = 1.0, E = 1.0, nu = 0.0;
+  bool unstrained = false;
+
+  std::string name() const override { return "linear_elastic"; }
+  double density() const override { return rho; }
+  bool solid() const override { return true; }
+  bool density_of_unstrained() const override { return unstrained; }
+  // The P-wave modulus of uniaxial strain: E in 1-D, lambda + 2 mu otherwise.
+  double modulus(int dim) const {
+    return dim == 1 ? E : E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+  }
+  double wave_speed(int dim, double density, double) const override;
+  std::unique_ptr<Material<1>> make1() const override;
+  std::unique_ptr<Material<2>> make2() const override;
+  std::unique_ptr<Material<3>> make3() const override;
+};
+
+std::shared_ptr<const Model> read_linear_elastic(io::Section& m, const Context& ctx);
+
+}  // namespace mpmx::material

@@ -1,0 +1,69 @@
+#include "mpmx/md/budget.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/machine.hpp"
+
+namespace mpmx::md {
+
+namespace {
+
+// Bytes, fitted to the peak RSS of `mpmx md` (Cu EAM, Release): boxes of 500, 32,000
+// and 131,072 atoms (14.5, 65 and 221 MB) and a 144,000-atom bar (287 MB, estimate
+// within 2%). Per local atom: its fields and copies (300), and per pair of its half
+// list the list and the force passes' pair buffers (24); per entry of locals plus ghosts
+// (positions in three layouts, type, owner, image, forces, density) 110, and 56 more for
+// a bar's per-atom energy and virial; the program and potential tables 16 MiB.
+constexpr double kBytesPerLocal = 300.0;
+constexpr double kBytesPerPair = 24.0;
+constexpr double kBytesPerEntry = 110.0;
+constexpr double kBytesPerEntryPerAtom = 56.0;
+constexpr double kBytesFixed = 16.0 * 1024 * 1024;
+
+}  // namespace
+
+MdBudget estimate_md(const MdConfig& c, double cutoff) {
+  MdBudget b;
+  const double a = c.lattice_constant, reach = cutoff + c.options.skin;
+  double n[3];
+  if (c.bar) {
+    n[0] = c.bar_config.cells_x, n[1] = n[2] = c.bar_config.cells_yz;
+    b.size_key = "bar.cells_x and bar.cells_yz";
+  } else {
+    for (int d = 0; d < 3; ++d) n[d] = c.cells[d];
+    b.size_key = "lattice.cells";
+  }
+  b.atoms = 4.0 * n[0] * n[1] * n[2];
+  // Locals plus ghosts: the box grown by the reach on every side (an upper bound: the
+  // bar's x has vacuum instead of images).
+  const double density = 4.0 / (a * a * a);
+  double entries = density;
+  for (int d = 0; d < 3; ++d) entries *= n[d] * a + 2.0 * reach;
+  entries = std::max(entries, b.atoms);
+  const double pairs = b.atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density;
+  b.bytes = kBytesFixed + kBytesPerLocal * b.atoms + kBytesPerEntry * entries + kBytesPerPair * pairs +
+            (c.bar ? kBytesPerEntryPerAtom * entries : 0.0);
+  const double steps = static_cast<double>(c.relax_steps) + static_cast<double>(c.steps);
+  b.atom_steps = b.atoms * (steps + c.scan_points);
+  b.work_key = c.relax_steps > 0 ? "thermal.relax_steps + run.steps" : "run.steps";
+  return b;
+}
+
+void check_md_budget(const MdBudget& b, std::uint64_t memory_bytes, bool force) {
+  if (memory_bytes > 0 && b.bytes > static_cast<double>(memory_bytes))
+    throw InputError(fmt::format(
+        "{}: {:.4g} atoms need about {} of memory ({:.4g} bytes), more than this machine's {}: make the "
+        "system smaller",
+        b.size_key, b.atoms, format_bytes(b.bytes), b.bytes, format_bytes(static_cast<double>(memory_bytes))));
+  if (!force && b.atom_steps > kMdWorkLimit)
+    throw InputError(fmt::format(
+        "{}: {:.4g} atoms x {:.4g} steps = {:.4g} atom-steps, about {:.3g} days at {:.2g} atom-steps/s: more "
+        "than the {:.3g} atom-steps (a day) a run takes without --force",
+        b.work_key, b.atoms, b.atom_steps / b.atoms, b.atom_steps,
+        b.atom_steps / kMdAtomStepsPerSecond / 86400.0, kMdAtomStepsPerSecond, kMdWorkLimit));
+}
+
+}  // namespace mpmx::md

@@ -1,0 +1,25 @@
+#pragma once
+// Which vector path the fused 1-D kernels take. One build holds a path per instruction set
+// (Google Highway's dynamic dispatch) and runs the best this machine has, or the one
+// named by the environment variable MPMX_ISA (read once, at the first kernel call): a
+// Highway target in lower case, "avx512" for AVX3. Paths are named widest first:
+// "avx512", "avx2", "sse4", "scalar" on x86.
+#include <string>
+#include <vector>
+
+namespace mpmx::mpm::shape {
+
+std::vector<std::string> isa_compiled();   // the paths in this build
+std::vector<std::string> isa_supported();  // those this machine can run
+// The path the kernels take; InputError where MPMX_ISA names no path of this build or
+// one this machine cannot run.
+std::string isa_chosen();
+// Takes the named path from now on (tests, benches); InputError as for MPMX_ISA.
+void isa_use(const std::string& name);
+// The path the kernels' dispatch takes now, as the kernels themselves report it (tests).
+std::string isa_dispatched();
+// "paths avx512 avx2 sse4 scalar; this machine: ...; chosen: avx512 (MPMX_ISA=...)",
+// for `mpmx --version`.
+std::string isa_summary();
+
+}  // namespace mpmx::mpm::shape

@@ -1,0 +1,142 @@
+// The command line (issue 17): one exit-code table for every command (0 done, 1
+// internal, 2 bad input, 3 stopped by the physics, 130 interrupted), unknown commands
+// and flags named, bounded --threads, finite numbers, a non-empty --out, and each
+// message printed once.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <string>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/exit_codes.hpp"
+
+namespace {
+
+struct Result {
+  int status;
+  std::string output;
+};
+
+Result mpmx_cli(const std::string& args) {
+  const std::string cmd = std::string(MPMX_BINARY) + " " + args + " 2>&1";
+  Result r{-1, {}};
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  while (std::fgets(buf, sizeof buf, p)) r.output += buf;
+  const int st = pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+std::size_t count(const std::string& s, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
+  return n;
+}
+
+const std::string kDeck = std::string(MPMX_SOURCE_DIR) + "/examples/A1_standing_wave_moving.toml";
+const std::string kMdDeck = std::string(MPMX_SOURCE_DIR) + "/examples/M1_cu_energy_vs_lattice.toml";
+
+}  // namespace
+
+TEST(Cli, ExitCodeTable) {
+  EXPECT_EQ(mpmx::exit_code::done, 0);
+  EXPECT_EQ(mpmx::exit_code::internal, 1);
+  EXPECT_EQ(mpmx::exit_code::bad_input, 2);
+  EXPECT_EQ(mpmx::exit_code::stopped, 3);
+  EXPECT_EQ(mpmx::exit_code::interrupted, 130);
+}
+
+TEST(Cli, UnknownCommandIsNamed) {
+  const auto r = mpmx_cli("frobnicate");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("unknown command 'frobnicate': expected one of run, check, md"), std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("A subcommand is required"), std::string::npos) << r.output;
+}
+
+TEST(Cli, NoCommandSaysWhichAreThere) {
+  const auto r = mpmx_cli("");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("a command is required: one of run, check, md"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownFlagIsNamedWithExitCode2) {
+  for (const std::string& args : {"md --bogus " + kMdDeck, "run --bogus " + kDeck, "check --frob " + kDeck}) {
+    const auto r = mpmx_cli(args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.output;
+    const auto word = args.substr(args.find("--"), args.find(' ', args.find("--")) - args.find("--"));
+    EXPECT_NE(r.output.find("The following argument was not expected: " + word), std::string::npos) << r.output;
+    EXPECT_EQ(count(r.output, word), 1u) << r.output;
+  }
+}
+
+TEST(Cli, HelpAndVersionExitZero) {
+  EXPECT_EQ(mpmx_cli("--help").status, 0);
+  EXPECT_EQ(mpmx_cli("md --help").status, 0);
+  const auto v = mpmx_cli("--version");
+  EXPECT_EQ(v.status, 0);
+  EXPECT_NE(v.output.find("mpmx "), std::string::npos);
+}
+
+TEST(Cli, ThreadsAreBoundedByTheMachine) {
+  const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
+  const auto r = mpmx_cli("run --threads 100000 " + kDeck + " --out " + ::testing::TempDir() + "cli_threads");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(fmt::format("--threads: 100000 is too many: at most {} on this machine (4 x {} hardware "
+                                      "threads)",
+                                      4 * hw, hw)),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(Cli, NegativeThreadsGetAShortMessage) {
+  const auto r = mpmx_cli("run --threads -1 " + kDeck);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("--threads: -1 is negative: give 0 (all cores) or a count up to"), std::string::npos)
+      << r.output;
+  EXPECT_LT(r.output.size(), 200u) << r.output;  // not the 309-digit range of a double
+  const auto x = mpmx_cli("run --threads 2.5 " + kDeck);
+  EXPECT_EQ(x.status, 2) << x.output;
+  EXPECT_NE(x.output.find("--threads: '2.5' is not a whole number"), std::string::npos) << x.output;
+}
+
+TEST(Cli, CheckpointMinutesMustBeFinite) {
+  for (const char* v : {"nan", "inf", "NaN"}) {
+    const auto r = mpmx_cli(std::string("run ") + kDeck + " --checkpoint-minutes " + v + " --out " +
+                            ::testing::TempDir() + "cli_nan");
+    EXPECT_EQ(r.status, 2) << v << r.output;
+    EXPECT_NE(r.output.find(std::string("--checkpoint-minutes: ") + v + " is not a finite number"),
+              std::string::npos)
+        << r.output;
+  }
+  const auto r = mpmx_cli("run " + kDeck + " --checkpoint-minutes -5");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("--checkpoint-minutes: -5 is negative"), std::string::npos) << r.output;
+}
+
+TEST(Cli, EmptyOutIsRefused) {
+  for (const std::string& cmd : {"md " + kMdDeck, "run " + kDeck}) {
+    const auto r = mpmx_cli(cmd + " --out ''");
+    EXPECT_EQ(r.status, 2) << cmd << r.output;
+    EXPECT_NE(r.output.find("--out: the path is empty: give a directory"), std::string::npos) << r.output;
+  }
+}
+
+TEST(Cli, InputErrorsArePrintedOnce) {
+  const std::string dir = ::testing::TempDir() + "cli_once";
+  std::FILE* f = std::fopen((::testing::TempDir() + "cli_once.toml").c_str(), "w");
+  std::fputs("[potential]\nstyle = \"lj\"\nepsilon = 0.4\nsigma = 2.3\ncutoff = 5.0\nmass = 63.5\n"
+             "[lattice]\nconstant = -3.6\ncells = [3]\n[run]\ndt = nan\nsteps = 1e3\n",
+             f);
+  std::fclose(f);
+  const auto r = mpmx_cli("md " + ::testing::TempDir() + "cli_once.toml --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_EQ(count(r.output, "lattice.constant"), 1u) << r.output;
+  EXPECT_EQ(count(r.output, "run.dt"), 1u) << r.output;
+  EXPECT_EQ(count(r.output, "run.steps"), 1u) << r.output;
+  EXPECT_EQ(count(r.output, "input error"), 1u) << r.output;
+}

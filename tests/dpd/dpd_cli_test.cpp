@@ -1,0 +1,194 @@
+// `mpmx dpd DECK --out DIR [--threads N] [--check]`: deck errors name the key, the value
+// and the reason (exit status 2, nothing written); a run writes run.json, thermo.csv and
+// the LAMMPS dump; --threads 2 writes the same thermo table as --threads 1; rigid
+// groups and the Berendsen equilibration from the deck.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status;
+  std::string output;
+};
+
+Result run(const std::string& args) {
+  const std::string cmd = std::string(MPMX_BINARY) + " " + args + " 2>&1";
+  Result r{0, {}};
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[4096];
+  while (std::fgets(buf, sizeof buf, p)) r.output += buf;
+  const int st = pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+const fs::path& dir() {
+  static const struct D {
+    fs::path p = fs::temp_directory_path() / ("mpmx_dpd_cli_" + std::to_string(getpid()));
+    D() { fs::create_directories(p); }
+    ~D() {
+      std::error_code ec;
+      fs::remove_all(p, ec);
+    }
+  } d;
+  return d.p;
+}
+
+fs::path deck(const std::string& name, const std::string& text) {
+  const fs::path p = dir() / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A top-level number of run.json (indented 4: the deck's echo has keys of the same names).
+double json_number(const std::string& json, const std::string& key) {
+  const std::string tag = "\n    \"" + key + "\" : ";
+  const auto at = json.find(tag);
+  if (at == std::string::npos) return std::nan("");
+  return std::strtod(json.c_str() + at + tag.size(), nullptr);
+}
+
+// A small DPDE Cu crystal with a rigid grip and a short Berendsen start.
+const std::string kGood = R"(
+[case]
+id = "dpd_cli"
+[potential]
+style = "morse"
+d0 = 2.7432
+alpha = 0.6794
+r0 = 5.732
+cutoff = 12.0
+[[block]]
+lattice = "fcc"
+constant = 7.23
+cells = [4, 4, 4]
+mass = 508.368
+[[rigid]]
+name = "grip"
+x = [0.0, 3.0]
+velocity = [-0.5, 0.0, 0.0]
+[box]
+boundary = ["f", "p", "p"]
+[dpd]
+ensemble = "dpde"
+gamma = 0.2
+temperature = 298.0
+heat_capacity_kB = 21.0
+seed = 5
+[equilibrate]
+tau = 0.5
+steps = 40
+[run]
+dt = 0.005
+steps = 60
+thermo = 20
+dump_every = 20
+)";
+
+TEST(DpdCli, RunWritesRecordThermoAndDump) {
+  const fs::path d = deck("good.toml", kGood);
+  const fs::path out = dir() / "out1";
+  const Result r = run("dpd " + d.string() + " --out " + out.string() + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string json = slurp(out / "run.json");
+  EXPECT_EQ(json_number(json, "particles"), 256);
+  EXPECT_EQ(json_number(json, "steps"), 60);
+  EXPECT_EQ(json_number(json, "equilibrate_steps"), 40);
+  EXPECT_GT(json_number(json, "particle_steps_per_second"), 0);
+  EXPECT_NE(json.find("\"ensemble\" : \"dpde\""), std::string::npos);
+  EXPECT_NE(json.find("\"conservation\""), std::string::npos);
+  const std::string thermo = slurp(out / "thermo.csv");
+  EXPECT_NE(thermo.find("grip_fx_eV_per_A"), std::string::npos);
+  long rows = 0, run_rows = 0;
+  std::istringstream ss(thermo);
+  std::string line;
+  std::getline(ss, line);
+  while (std::getline(ss, line)) ++rows, run_rows += line.rfind("run,", 0) == 0;
+  EXPECT_EQ(rows, 3 + 4);  // equilibrate: steps 0, 20, 40; run: 40, 60, 80, 100
+  EXPECT_EQ(run_rows, 4);
+  const std::string dump = slurp(out / "dump.lammpstrj");
+  EXPECT_NE(dump.find("ITEM: BOX BOUNDS ss pp pp"), std::string::npos);
+  EXPECT_NE(dump.find("ITEM: ATOMS id type mass x y z vx vy vz u"), std::string::npos);
+  std::size_t frames = 0;
+  for (std::size_t at = dump.find("ITEM: TIMESTEP"); at != std::string::npos; at = dump.find("ITEM: TIMESTEP", at + 1))
+    ++frames;
+  EXPECT_EQ(frames, 4u);
+}
+
+TEST(DpdCli, TwoThreadsWriteTheSameThermoTable) {
+  const fs::path d = deck("threads.toml", kGood);
+  ASSERT_EQ(run("dpd " + d.string() + " --out " + (dir() / "t1").string() + " --quiet --threads 1").status, 0);
+  ASSERT_EQ(run("dpd " + d.string() + " --out " + (dir() / "t2").string() + " --quiet --threads 2").status, 0);
+  EXPECT_EQ(slurp(dir() / "t1" / "thermo.csv"), slurp(dir() / "t2" / "thermo.csv"));
+  EXPECT_EQ(slurp(dir() / "t1" / "dump.lammpstrj"), slurp(dir() / "t2" / "dump.lammpstrj"));
+}
+
+TEST(DpdCli, CheckValidatesWithoutRunning) {
+  const fs::path d = deck("check.toml", kGood);
+  const Result r = run("dpd " + d.string() + " --check --out " + (dir() / "never").string());
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("ok"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir() / "never"));
+}
+
+struct BadCase {
+  const char* from;
+  const char* to;
+  const char* expect;  // in the message
+};
+
+TEST(DpdCli, BadDecksNameKeyValueAndReason) {
+  const BadCase cases[] = {
+      {"gamma = 0.2", "gamma = -0.2", "'dpd.gamma' = -0.2: must not be negative"},
+      {"gamma = 0.2", "gama = 0.2", "gama"},
+      {"style = \"morse\"", "style = \"lj\"", "potential.style"},
+      {"cutoff = 12.0", "cutoff = 5.0", "'potential.cutoff' = 5: must exceed r0"},
+      {"ensemble = \"dpde\"", "ensemble = \"dpde\"\nintegrator = \"velocity_verlet\"", "dpd.integrator"},
+      {"heat_capacity_kB = 21.0", "heat_capacity_kB = 0.0", "'dpd.heat_capacity_kB' = 0: must be positive"},
+      {"boundary = [\"f\", \"p\", \"p\"]", "boundary = [\"f\", \"q\", \"p\"]", "box.boundary"},
+      {"cells = [4, 4, 4]", "cells = [4, 4]", "block[0].cells"},
+      {"x = [0.0, 3.0]", "x = [3.0, 0.0]", "rigid[0].x"},
+      {"dump_every = 20", "dump_every = 7", "'run.dump_every' = 7: must be 0 (no dump) or a multiple of thermo"},
+      {"dt = 0.005", "dt = -0.005", "'run.dt' = -0.005: must be positive"},
+  };
+  for (const BadCase& c : cases) {
+    std::string text = kGood;
+    const auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    text.replace(at, std::string(c.from).size(), c.to);
+    const fs::path d = deck("bad.toml", text);
+    const fs::path out = dir() / "bad_out";
+    const Result r = run("dpd " + d.string() + " --out " + out.string());
+    EXPECT_EQ(r.status, 2) << c.to << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.expect), std::string::npos) << "expected '" << c.expect << "' in:\n" << r.output;
+    EXPECT_FALSE(fs::exists(out)) << c.to;
+  }
+}
+
+TEST(DpdCli, ExampleDecksValidate) {
+  for (const char* name : {"D_dpd_equilibrium.toml", "D_dpde_cu_nve.toml"}) {
+    const Result r = run(std::string("dpd ") + MPMX_SOURCE_DIR + "/examples/" + name + " --check");
+    EXPECT_EQ(r.status, 0) << name << "\n" << r.output;
+  }
+}
+
+}  // namespace

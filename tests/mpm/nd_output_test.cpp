@@ -1,0 +1,214 @@
+// ctest-label: unit
+// What a 2-D run leaves for a user: VTK files that VTK itself reads back (points with
+// every field, the stress as a 9-component tensor; the grid as image data), .pvd
+// series, and run.json with the keys other checks rely on. Unknown scheme and material
+// names are refused with the list of known ones.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "mpm_test_util.hpp"
+#include "mpmx/core/error.hpp"
+#include "mpmx/material/registry.hpp"
+#include "mpmx/mpm/setup.hpp"
+
+using namespace mpmx;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string capture(const std::string& cmd) {
+  std::string out;
+  if (FILE* f = popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    while (std::size_t n = fread(buf, 1, sizeof buf, f)) out.append(buf, n);
+    pclose(f);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(NdOutput, VtkFilesReadBackWithVtkAndRunJsonHasTheKeys) {
+  const fs::path dir = fs::temp_directory_path() / "mpmx_nd_output_test";
+  fs::remove_all(dir);
+  const auto c = test::deck_with(test::example("N3_two_disks_cpdi.toml"), [](toml::table& t) {
+    t["time"].as_table()->insert_or_assign("end", 0.5);
+  });
+  mpm::RunOptions o;
+  o.out_dir = dir.string();
+  o.quiet = true;
+  o.plot = false;
+  const auto r = mpm::run_mpm_dim<2>(c, o);
+  for (const char* f : {"run.json", "particles.pvd", "grid.pvd", "vtk/particles_000000.vtu", "vtk/particles_000050.vtu",
+                        "vtk/grid_000050.vti"})
+    EXPECT_TRUE(fs::exists(dir / f)) << f;
+  const std::string json = test::slurp(dir / "run.json");
+  for (const char* key : {"\"dim\" : 2", "\"particles\"", "\"steps\" : 50", "\"wall_seconds\"",
+                          "\"particle_steps_per_second\"", "\"mass\"", "\"momentum\"", "\"energy\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  const std::string pvd = test::slurp(dir / "particles.pvd");
+  EXPECT_NE(pvd.find("vtk/particles_000050.vtu"), std::string::npos);
+
+  if (std::system("/usr/bin/python3 -c 'import vtk' >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "python3-vtk9 is not installed (scripts/install-deps installs it)";
+  const std::string script =
+      "import vtk, sys\n"
+      "r = vtk.vtkXMLUnstructuredGridReader(); r.SetFileName(sys.argv[1]); r.Update(); o = r.GetOutput()\n"
+      "s = o.GetPointData().GetArray('stress'); v = o.GetPointData().GetArray('velocity')\n"
+      "g = vtk.vtkXMLImageDataReader(); g.SetFileName(sys.argv[2]); g.Update(); i = g.GetOutput()\n"
+      "print(o.GetNumberOfPoints(), s.GetNumberOfComponents(), v.GetNumberOfComponents(), "
+      "repr(s.GetComponent(7, 0)), repr(v.GetComponent(7, 1)), repr(o.GetPoint(7)[0]), i.GetDimensions()[0], "
+      "i.GetDimensions()[1], i.GetPointData().GetArray('mass').GetNumberOfTuples())\n";
+  const fs::path py = dir / "read.py";
+  std::ofstream(py) << script;
+  const std::string out = capture("/usr/bin/python3 " + py.string() + " " + (dir / "vtk/particles_000050.vtu").string() +
+                                  " " + (dir / "vtk/grid_000050.vti").string());
+  std::istringstream in(out);
+  std::size_t n = 0;
+  int sc = 0, vc = 0, nx = 0, ny = 0;
+  double s7 = 0, v7 = 0, x7 = 0;
+  std::size_t nodes = 0;
+  in >> n >> sc >> vc >> s7 >> v7 >> x7 >> nx >> ny >> nodes;
+  ASSERT_TRUE(in) << out;
+  const auto& p = r.state.particles;
+  EXPECT_EQ(n, p.size());
+  EXPECT_EQ(sc, 9);
+  EXPECT_EQ(vc, 3);
+  EXPECT_EQ(s7, p.stress[0][7]);  // bit for bit
+  EXPECT_EQ(v7, p.v[1][7]);
+  EXPECT_EQ(x7, p.x[0][7]);
+  EXPECT_EQ(nx, 21);
+  EXPECT_EQ(ny, 21);
+  EXPECT_EQ(nodes, 21u * 21u);
+  fs::remove_all(dir);
+}
+
+TEST(Registries, EveryNameTheGuideListsIsAcceptedAndUnknownOnesAreRefusedWithTheList) {
+  for (const std::string& scheme : mpm::scheme_names()) {
+    const auto c = test::deck_with(test::example("N3_two_disks_mpm.toml"), [&](toml::table& t) {
+      t["scheme"].as_table()->insert_or_assign("name", scheme);
+      if (scheme == "ddmp_subpoints") t["scheme"].as_table()->insert_or_assign("subpoints", 2);
+    });
+    EXPECT_EQ(mpm::scheme_name(c.scheme.scheme), scheme);
+  }
+  try {
+    test::deck_with(test::example("N3_two_disks_mpm.toml"),
+                    [](toml::table& t) { t["scheme"].as_table()->insert_or_assign("name", "flip"); });
+    ADD_FAILURE() << "an unknown scheme was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cpdi"), std::string::npos) << e.what();
+  }
+  const auto names = material::names();
+  for (const char* m : {"linear_elastic", "cubic_elastic", "mie_gruneisen", "ideal_gas_isothermal",
+                        "ideal_gas_adiabatic", "md_closure"})
+    EXPECT_NE(std::find(names.begin(), names.end(), m), names.end()) << m;
+  try {
+    test::deck_with(test::example("N3_two_disks_mpm.toml"),
+                    [](toml::table& t) { t["material"].as_table()->insert_or_assign("model", "rubber"); });
+    ADD_FAILURE() << "an unknown material was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("mie_gruneisen"), std::string::npos) << e.what();
+  }
+}
+
+// dt = "cfl": every step's dt from the state, the records landing on their times.
+TEST(NdOutput, CflTimeStepLandsOnTheRecordTimes) {
+  const fs::path dir = fs::temp_directory_path() / "mpmx_nd_cfl_test";
+  fs::remove_all(dir);
+  const auto c = test::deck_with(test::example("N3_two_disks_mpm.toml"), [](toml::table& t) {
+    auto& time = *t["time"].as_table();
+    time.insert_or_assign("dt", "cfl");
+    time.insert_or_assign("cfl", 0.4);
+    time.insert_or_assign("end", 0.5);
+    auto& out = *t["output"].as_table();
+    out.erase("every");
+    out.insert_or_assign("times", toml::array{0.25});
+  });
+  EXPECT_TRUE(c.cfl_dt);
+  // The first step's estimate: 0.4 dx / (c + |v|), c = sqrt(M / rho) of nu = 0.3.
+  const double M = 1000.0 * 0.7 / (1.3 * 0.4), speed = std::sqrt(M / 1000.0) + 0.1 * std::sqrt(2.0);
+  EXPECT_NEAR(c.dt, 0.4 * 0.05 / speed, 1e-12);
+  mpm::RunOptions o;
+  o.out_dir = dir.string();
+  o.quiet = true;
+  o.plot = false;
+  const auto r = mpm::run_mpm_dim<2>(c, o);
+  EXPECT_EQ(r.state.time, 0.5);
+  EXPECT_GE(r.steps, std::llround(0.5 / c.dt));
+  const std::string pvd = test::slurp(dir / "particles.pvd");
+  EXPECT_NE(pvd.find("timestep=\"0.25\""), std::string::npos) << pvd;
+  EXPECT_NE(pvd.find("timestep=\"0.5\""), std::string::npos) << pvd;
+  fs::remove_all(dir);
+}
+
+// Bodies: a box with a triangular notch cut from its right face (the copper jet's V),
+// each point kept by its centre; a circle carries its own velocity.
+TEST(NdBodies, BoxWithANotchAndACircle) {
+  const auto c = test::deck_with(test::example("N3_two_disks_mpm.toml"), [](toml::table& t) {
+    toml::array bodies;
+    bodies.push_back(toml::table{{"shape", "box"}, {"lower", toml::array{-0.5, -0.5}}, {"upper", toml::array{0.0, 0.5}}});
+    bodies.push_back(toml::table{{"shape", "polygon"}, {"remove", true},
+                                 {"vertices", toml::array{0.0, -0.5, 0.0, 0.5, -0.25, 0.0}}});
+    bodies.push_back(toml::table{{"shape", "circle"}, {"center", toml::array{0.25, 0.0}}, {"radius", 0.1},
+                                 {"velocity", toml::array{-1.0, 0.5}}});
+    t.insert_or_assign("body", bodies);
+  });
+  const auto s = mpm::make_state<2>(c);
+  // Centres on the 40 x 40 lattice of spacing 0.025 starting at -0.4875.
+  std::size_t in_box = 0, in_circle = 0;
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j) {
+      const double x = -0.4875 + 0.025 * i, y = -0.4875 + 0.025 * j;
+      const bool notch = x > -0.25 + 0.5 * std::abs(y) && x < 0.0;  // the V: apex at (-0.25, 0)
+      if (x <= 0.0 && !notch) ++in_box;
+      if ((x - 0.25) * (x - 0.25) + y * y <= 0.01) ++in_circle;
+    }
+  EXPECT_EQ(s.particles.size(), in_box + in_circle);
+  std::size_t moving = 0;
+  for (std::size_t q = 0; q < s.particles.size(); ++q) {
+    EXPECT_FALSE(s.particles.x[0][q] > -0.25 + 0.5 * std::abs(s.particles.x[1][q]) && s.particles.x[0][q] < 0.0)
+        << "a point in the notch at " << s.particles.x[0][q] << ", " << s.particles.x[1][q];
+    if (s.particles.v[0][q] == -1.0 && s.particles.v[1][q] == 0.5) ++moving;
+  }
+  EXPECT_EQ(moving, in_circle);
+}
+
+// A 2-D run stopped (as by Ctrl-C) and resumed from its checkpoint ends bit for bit as
+// the uninterrupted run, its .pvd series continuing where it stopped.
+TEST(NdOutput, CheckpointResumesBitForBit) {
+  const fs::path dir = fs::temp_directory_path() / "mpmx_nd_resume_test";
+  fs::remove_all(dir);
+  const auto c = test::deck_with(test::example("N3_two_disks_ddmp_subpoints.toml"), [](toml::table& t) {
+    t["time"].as_table()->insert_or_assign("end", 1.0);
+  });
+  const auto whole = test::run_dim<2>(c);
+  mpm::RunOptions o;
+  o.out_dir = dir.string();
+  o.quiet = true;
+  o.plot = false;
+  o.stop_after = 60;
+  const auto first = mpm::run_mpm_dim<2>(c, o);
+  ASSERT_TRUE(first.interrupted);
+  o.stop_after = 0;
+  o.resume = true;
+  const auto rest = mpm::run_mpm_dim<2>(c, o);
+  EXPECT_EQ(rest.steps, whole.steps);
+  for (int d = 0; d < 2; ++d) {
+    EXPECT_EQ(rest.state.particles.x[d], whole.state.particles.x[d]);
+    EXPECT_EQ(rest.state.particles.v[d], whole.state.particles.v[d]);
+  }
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(rest.state.particles.stress[k], whole.state.particles.stress[k]);
+    EXPECT_EQ(rest.state.particles.length[k], whole.state.particles.length[k]);
+  }
+  EXPECT_EQ(rest.stress_work, whole.stress_work);
+  const std::string pvd = test::slurp(dir / "particles.pvd");
+  EXPECT_NE(pvd.find("particles_000050.vtu"), std::string::npos);
+  EXPECT_NE(pvd.find("particles_000100.vtu"), std::string::npos);
+  fs::remove_all(dir);
+}
