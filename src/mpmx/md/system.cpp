@@ -40,13 +40,20 @@ void System::rebuild() {
   if (opt_.sort_atoms && atoms_.size() > 1) {
     // Spatial order (bins of half the cutoff), ties by id: deterministic.
     const double cell = std::max(0.5 * pot_.cutoff(), 1e-3);
-    const long nx = std::max(1L, static_cast<long>(box_.lx / cell));
-    const long ny = std::max(1L, static_cast<long>(box_.ly / cell));
+    // Bin counts and indices clamped to [0, 2^20) before any integer arithmetic, so that
+    // a box or atoms gone huge or non-finite (stopped at the next thermo row) cannot
+    // overflow the key.
+    constexpr double kMaxBins = 1 << 20;
+    auto count = [&](double extent) { return static_cast<long>(std::clamp(extent / cell, 1.0, kMaxBins)); };
+    auto index = [](double b, long n) {
+      return static_cast<long>(b >= 0.0 ? std::min(b, static_cast<double>(n - 1)) : 0.0);  // NaN -> 0
+    };
+    const long nx = count(box_.lx), ny = count(box_.ly);
     std::vector<long> key(atoms_.size());
     for (std::size_t i = 0; i < atoms_.size(); ++i) {
-      const long ix = std::min(nx - 1, static_cast<long>(atoms_.x[i] / box_.lx * nx));
-      const long iy = std::min(ny - 1, static_cast<long>(atoms_.y[i] / box_.ly * ny));
-      const long iz = static_cast<long>(atoms_.z[i] / cell);
+      const long ix = index(atoms_.x[i] / box_.lx * nx, nx);
+      const long iy = index(atoms_.y[i] / box_.ly * ny, ny);
+      const long iz = index(atoms_.z[i] / cell, static_cast<long>(kMaxBins));
       key[i] = (iz * ny + iy) * nx + ix;
     }
     std::vector<std::size_t> order(atoms_.size());
