@@ -81,10 +81,12 @@ void check_finite(const State<Dim>& s) {
   if (std::isfinite(s.finite_check) && std::isfinite(s.tallies.stress_work)) return;
   const auto& p = s.particles;
   for (std::size_t q = 0; q < p.size(); ++q) {
+    if (!std::isfinite(p.volume[q]))
+      throw RunError(fmt::format("non-finite volume ({}) at particle {} in step {} (t = {})", p.volume[q], q,
+                                 s.step, s.time));
     for (int a = 0; a < Dim; ++a) {
       const std::pair<const char*, double> fields[] = {
-          {"velocity", p.v[a][q]}, {"stress", p.stress[a * Dim + a][q]}, {"position", p.x[a][q]},
-          {"volume", p.volume[q]}};
+          {"velocity", p.v[a][q]}, {"stress", p.stress[a * Dim + a][q]}, {"position", p.x[a][q]}};
       for (const auto& [name, v] : fields)
         if (!std::isfinite(v))
           throw RunError(fmt::format("non-finite {} ({}) at particle {} in step {} (t = {})", name,

@@ -70,6 +70,8 @@ void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies
     });
     const double tiny = 1e-14 * mass_sum / static_cast<double>(nodes);
     g.for_each_node([&](std::size_t i, const std::array<int, Dim>& idx) {
+      bool on_face = false;  // most nodes are inside: no face loop for them
+      for (int d = 0; d < Dim; ++d) on_face = on_face || idx[d] == 0 || idx[d] == g.cells[d];
       const double m = g.mass[i];
       const bool has = m > tiny;
       const double r = 1.0 / (has ? m : 1.0);
@@ -78,7 +80,7 @@ void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies
         double v = has ? vi : 0.0, vL = has ? vi + dt * g.force[a][i] * r : 0.0;
         // A node on a face with a condition on component a; at edges and corners the
         // first face that holds the component sets it.
-        for (int f = 0; f < 2 * Dim; ++f) {
+        for (int f = 0; on_face && f < 2 * Dim; ++f) {
           const int axis = f / 2;
           const bool on = (f % 2 == 0) ? idx[axis] == 0 : idx[axis] == g.cells[axis];
           const BoundarySide& side = bc.face[f];
