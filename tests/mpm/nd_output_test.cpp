@@ -8,12 +8,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 
 #include "mpm_test_util.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/material/registry.hpp"
+#include "mpmx/mpm/points.hpp"
 #include "mpmx/mpm/setup.hpp"
 
 using namespace mpmx;
@@ -178,6 +180,55 @@ TEST(NdBodies, BoxWithANotchAndACircle) {
   EXPECT_EQ(moving, in_circle);
 }
 
+// A body with its own [body.material]: its points get that law's density and stress,
+// the others the deck's; a removing region or a gas body among solids is refused.
+TEST(NdBodies, BodiesTakeTheirOwnMaterial) {
+  auto with_bodies = [](toml::table body_material) {
+    return [body_material](toml::table& t) {
+      toml::array bodies;
+      bodies.push_back(toml::table{{"shape", "box"}, {"lower", toml::array{-0.5, -0.5}}, {"upper", toml::array{0.0, 0.5}},
+                                   {"material", body_material}});
+      bodies.push_back(toml::table{{"shape", "box"}, {"lower", toml::array{0.0, -0.5}}, {"upper", toml::array{0.5, 0.5}}});
+      t.insert_or_assign("body", bodies);
+    };
+  };
+  const toml::table soft{{"model", "linear_elastic"}, {"density", 250.0}, {"youngs_modulus", 10.0}, {"poisson_ratio", 0.3}};
+  const auto c = test::deck_with(test::example("N3_two_disks_mpm.toml"), with_bodies(soft));
+  auto s = mpm::make_state<2>(c);
+  ASSERT_EQ(s.particles.size(), 1600u);
+  std::size_t light = 0;
+  for (std::size_t q = 0; q < s.particles.size(); ++q) {
+    const double rho = s.particles.mass[q] / s.particles.volume[q];
+    if (s.particles.x[0][q] < 0.0) {
+      EXPECT_DOUBLE_EQ(rho, 250.0);
+      ++light;
+    } else {
+      EXPECT_DOUBLE_EQ(rho, 1000.0);
+    }
+  }
+  EXPECT_EQ(light, 800u);
+  EXPECT_EQ(s.material->name(), "linear_elastic+linear_elastic");
+  // The same uniform stretch rate gives each block its own modulus' stress (the deck's
+  // law holds the first block of points).
+  ASSERT_GT(s.particles.x[0][0], 0.0);
+  auto& p = s.particles;
+  for (std::size_t q = 0; q < p.size(); ++q) p.grad_v[0][q] = 1e-3;
+  s.material->update_stress(mpm::points(p), 1.0);
+  for (std::size_t q = 0; q < p.size(); ++q) {
+    const double ratio = p.x[0][q] < 0.0 ? 10.0 / 1000.0 : 1.0;
+    EXPECT_NEAR(p.stress[0][q], ratio * p.stress[0][0], 1e-12 * std::abs(p.stress[0][0]));
+  }
+  for (const auto& [table, word] :
+       {std::pair{toml::table{{"model", "ideal_gas_isothermal"}, {"sound_speed", 1.0}}, std::string("solids and gases")}}) {
+    try {
+      test::deck_with(test::example("N3_two_disks_mpm.toml"), with_bodies(table));
+      ADD_FAILURE() << "a gas body among solids was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << e.what();
+    }
+  }
+}
+
 // A 2-D run stopped (as by Ctrl-C) and resumed from its checkpoint ends bit for bit as
 // the uninterrupted run, its .pvd series continuing where it stopped.
 TEST(NdOutput, CheckpointResumesBitForBit) {
@@ -211,4 +262,36 @@ TEST(NdOutput, CheckpointResumesBitForBit) {
   EXPECT_NE(pvd.find("particles_000050.vtu"), std::string::npos);
   EXPECT_NE(pvd.find("particles_000100.vtu"), std::string::npos);
   fs::remove_all(dir);
+}
+
+// The keys of N2 and N4 are checked like every other: each refusal names its key.
+TEST(NdDecks, ManufacturedConvergenceAndNormalKeysAreChecked) {
+  auto refused = [](const std::string& deck, const std::function<void(toml::table&)>& edit, const std::string& word) {
+    try {
+      test::deck_with(test::example(deck), edit);
+      ADD_FAILURE() << "accepted; expected a refusal naming " << word;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << e.what();
+    }
+  };
+  const std::string n4 = "N4_manufactured_cpgimp.toml", n2 = "N2_rotated_shock_tube_cpdi.toml";
+  refused(n4, [](toml::table& t) { t["manufactured"].as_table()->insert_or_assign("amplitude", 0.5); }, "amplitude");
+  refused(n4, [](toml::table& t) { t["material"].as_table()->insert_or_assign("model", "mie_gruneisen"); },
+          "manufactured");
+  refused(n4, [](toml::table& t) { t["reference"].as_table()->insert_or_assign("fields", toml::array{"pressure"}); },
+          "fields");
+  refused(n4, [](toml::table& t) { t["convergence"].as_table()->insert_or_assign("levels", 20); }, "levels");
+  refused(n4, [](toml::table& t) { t.erase("reference"); }, "levels");
+  refused(n2, [](toml::table& t) {
+    t["initial"].as_table()->get("pressure")->as_table()->insert_or_assign("normal", toml::array{0.0, 0.0});
+  }, "normal");
+  refused(n2, [](toml::table& t) { t["reference"].as_table()->insert_or_assign("name", "standing_wave"); }, "name");
+  const auto c = test::deck(test::example(n4));
+  EXPECT_EQ(c.convergence_levels, 4);
+  EXPECT_TRUE(c.manufactured.on);
+  const auto s = mpm::make_state<2>(c);  // started with the exact velocity
+  ASSERT_TRUE(s.manufactured);
+  const double pi = 3.141592653589793;
+  for (std::size_t q = 0; q < s.particles.size(); q += 37)
+    EXPECT_DOUBLE_EQ(s.particles.v[1][q], 0.01 * 100.0 * pi * std::sin(2.0 * pi * s.particles.x[1][q]));
 }

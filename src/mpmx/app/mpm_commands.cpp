@@ -55,6 +55,8 @@ void add_mpm_commands(CLI::App& app) {
     fmt::print("{}: {} steps in {:.3f} s -> {}/run.json\n", cfg.id, r.steps, r.wall_seconds, out);
     for (const auto& [f, e] : r.errors)
       fmt::print("  error {:<12} l1 {:.3e}  l2 {:.3e}  peak {:.3e}\n", f, e.l1, e.l2, e.peak);
+    for (const auto& [f, order] : r.convergence_order)
+      fmt::print("  observed order {:<12} {:.2f} (L2, over {} grids)\n", f, order, cfg.convergence_levels);
     if (r.md_atom_steps > 0)
       fmt::print("  MD: {:.4g} atom-steps, {:.4g} atom-steps/s on {} thread(s)\n",
                  static_cast<double>(r.md_atom_steps), r.md_atom_steps / r.wall_seconds, r.threads);

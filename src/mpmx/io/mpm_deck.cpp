@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
@@ -25,7 +27,7 @@ using mpm::Profile;
 const std::vector<std::string> kReferences{"standing_wave", "wave_reflection", "gas_wave",
                                            "riemann_isothermal", "shock_front", "direct_md"};
 
-Profile read_profile(Section s, double fallback) {
+Profile read_profile(Section s, double fallback, int dim) {
   Profile p;
   p.value = fallback;
   if (!s.present()) return p;
@@ -48,6 +50,18 @@ Profile read_profile(Section s, double fallback) {
     if (kind == "tanh") {
       p.cells = s.number("cells");
       s.positive("cells", p.cells);
+    }
+  }
+  if (s.has("normal")) {
+    const auto n = s.numbers("normal");
+    double len = 0.0;
+    for (double v : n) len += v * v;
+    len = std::sqrt(len);
+    if (dim == 1 || static_cast<int>(n.size()) != dim || !(len > 0.0) || !std::isfinite(len)) {
+      s.check(false, "normal", fmt::format("needs {} numbers, not all zero, in a 2-D or 3-D deck", dim));
+    } else {
+      p.normal = {0.0, 0.0, 0.0};
+      for (int d = 0; d < dim; ++d) p.normal[d] = n[d] / len;
     }
   }
   return p;
@@ -99,7 +113,7 @@ std::array<double, 3> read_vector(Section& s, std::string_view key, int dim, std
   return r;
 }
 
-Body read_body(Section s, int dim) {
+Body read_body(Section s, int dim, const material::Context& ctx) {
   Body b;
   const std::vector<std::string> shapes =
       dim == 2 ? std::vector<std::string>{"box", "circle", "polygon"} : std::vector<std::string>{"box", "sphere"};
@@ -127,6 +141,11 @@ Body read_body(Section s, int dim) {
     s.check(dim == 2 && b.shape == Body::Shape::circle && !b.remove, "angular_velocity",
             "a rigid spin is given to a circle of a 2-D deck");
     b.angular_velocity = s.number("angular_velocity");
+  }
+  if (s.has("material")) {  // its own law; otherwise the deck's [material]
+    s.check(!b.remove, "material", "a region that removes points has no material");
+    Section m = s.table("material");
+    if (!b.remove) b.material = material::read(m, ctx);
   }
   return b;
 }
@@ -176,7 +195,8 @@ MpmConfig read(Deck& deck) {
   c.per_cell = c.per_cell_all[0];
   c.move = pt.boolean("move", true);
   if (dim > 1)
-    for (auto& b : root.tables("body")) c.bodies.push_back(read_body(b, dim));
+    for (auto& b : root.tables("body"))
+      c.bodies.push_back(read_body(b, dim, material::Context{dim, deck_dir, c.units}));
   else if (root.has("body"))
     root.check(false, "body", "1-D decks fill the grid; [[body]] regions are for 2-D and 3-D");
 
@@ -206,10 +226,31 @@ MpmConfig read(Deck& deck) {
   else if (sc.has("alpha"))
     sc.check(false, "alpha", "only ddmp and ddmp_subpoints in 2-D and 3-D choose their alpha");
 
-  Section m = root.table("material");
+  // [material] is every point's law unless its body names its own; it may be left out
+  // when every body does.
+  const bool bodies_own = !c.bodies.empty() && std::all_of(c.bodies.begin(), c.bodies.end(), [](const Body& b) {
+    return b.remove || b.material;
+  });
   auto& mat = c.material;
-  mat.small_strain = m.boolean("small_strain", false);
-  mat.spec = material::read(m, material::Context{dim, deck_dir, c.units});
+  if (bodies_own && !root.has("material")) {
+    for (const auto& b : c.bodies)
+      if (b.material) {
+        mat.spec = b.material;
+        break;
+      }
+  } else {
+    Section m = root.table("material");
+    mat.small_strain = m.boolean("small_strain", false);
+    mat.spec = material::read(m, material::Context{dim, deck_dir, c.units});
+  }
+  for (const auto& b : c.bodies) {
+    if (!b.material || !mat.spec) continue;
+    if (b.material->solid() != mat.spec->solid())
+      root.check(false, "body", "solids and gases in one deck are not supported: every body's material.model must be "
+                                "of the same kind as the others");
+    if (dynamic_cast<const material::MdClosureModel*>(b.material.get()))
+      root.check(false, "body", "md_closure is not a body material (it is a 1-D closure)");
+  }
   if (mat.spec) {
     mat.model = mat.spec->name();
     mat.density = mat.spec->density();
@@ -223,15 +264,15 @@ MpmConfig read(Deck& deck) {
   }
 
   Section in = root.optional_table("initial");
-  c.velocity = read_profile(in.optional_table("velocity"), 0.0);
+  c.velocity = read_profile(in.optional_table("velocity"), 0.0, dim);
   const bool solid = mat.solid();
   if (solid) {
-    c.strain = read_profile(in.optional_table("strain"), 0.0);
+    c.strain = read_profile(in.optional_table("strain"), 0.0, dim);
     if (in.has("pressure")) in.check(false, "pressure", "a solid takes [initial.strain], not pressure");
   } else {
     const auto* gas = dynamic_cast<const material::IdealGasModel*>(mat.spec.get());
     const double p_default = gas && gas->isothermal ? gas->c * gas->c * gas->rho : 1.0;
-    c.pressure = read_profile(in.optional_table("pressure"), p_default);
+    c.pressure = read_profile(in.optional_table("pressure"), p_default, dim);
     if (in.has("strain")) in.check(false, "strain", "a gas takes [initial.pressure], not strain");
   }
 
@@ -288,15 +329,38 @@ MpmConfig read(Deck& deck) {
   c.plot = o.boolean("plot", true);
   c.write_vtk = o.boolean("vtk", dim > 1);
 
+  Section mf = root.optional_table("manufactured");
+  if (mf.present()) {
+    c.manufactured.on = true;
+    mf.choice("solution", {"axis_aligned"}, "axis_aligned");
+    c.manufactured.amplitude = mf.number("amplitude", 0.01);
+    c.manufactured.speed = mf.number("speed", 1.0);
+    mf.check(c.manufactured.amplitude > 0.0 && 2.0 * std::numbers::pi * c.manufactured.amplitude < 1.0, "amplitude",
+             "must lie in (0, 1 / (2 pi)): the stretch 1 + 2 pi A cos(2 pi X) sin(c pi t) stays positive");
+    mf.positive("speed", c.manufactured.speed);
+    if (dim == 1) mf.error("the manufactured solution drives 2-D and 3-D decks");
+    if (mat.model != "linear_elastic" || !c.bodies.empty())
+      mf.error("the manufactured solution is exact for one linear_elastic body filling the grid (no [[body]])");
+    if (in.has("velocity")) in.check(false, "velocity", "the manufactured solution sets the initial velocity");
+  }
+
   Section r = root.optional_table("reference");
-  if (r.present() && dim > 1) r.error("the references (analytic and direct-MD) compare 1-D decks; a 2-D or 3-D deck has none yet");
-  if (r.present() && dim == 1) {
-    c.reference.name = r.choice("name", kReferences);
+  // 2-D and 3-D decks compare with a 1-D exact solution along the initial profile's
+  // normal (riemann_isothermal) or with the manufactured solution.
+  const std::vector<std::string> nd_references{"riemann_isothermal", "manufactured"};
+  if (r.present()) {
+    c.reference.name = r.choice("name", dim == 1 ? kReferences : nd_references);
+    if (c.reference.name == "manufactured" && !c.manufactured.on)
+      r.check(false, "name", "reference manufactured needs a [manufactured] table");
     c.reference.fields = r.strings("fields", {});
-    const std::vector<std::string> known{"velocity", "strain", "stress", "pressure", "density"};
+    const std::vector<std::string> known =
+        c.reference.name == "manufactured" ? std::vector<std::string>{"displacement"}
+                                           : std::vector<std::string>{"velocity", "strain", "stress", "pressure", "density"};
     for (const auto& f : c.reference.fields)
       r.check(std::find(known.begin(), known.end(), f) != known.end(), "fields",
-              fmt::format("'{}' is not one of velocity, strain, stress, pressure, density", f));
+              fmt::format("'{}' is not one of {}", f, fmt::join(known, ", ")));
+    if (c.reference.name == "manufactured" && c.reference.fields.empty()) c.reference.fields = {"displacement"};
+    if (dim > 1 && r.has("at")) r.check(false, "at", "2-D and 3-D decks compare at the particles");
     c.reference.times = r.numbers("times", {});
     c.reference.at_nodes = r.choice("at", {"particles", "nodes"}, "particles") == "nodes";
     if (c.reference.name == "direct_md") {
@@ -314,6 +378,11 @@ MpmConfig read(Deck& deck) {
               fmt::format("every time must lie in (0, time.end = {}]", c.end));
   }
 
+  Section cv = root.optional_table("convergence");
+  c.convergence_levels = cv.integer_int("levels", 1, 1, 8);
+  if (c.convergence_levels > 1 && c.reference.name.empty())
+    cv.check(false, "levels", "a convergence study needs a [reference] to measure the error against");
+
   // Checks that need several sections.
   double dx_min = c.dx();
   for (int d = 1; d < dim; ++d) dx_min = std::min(dx_min, (c.upper_all[d] - c.lower_all[d]) / c.cells_all[d]);
@@ -326,6 +395,8 @@ MpmConfig read(Deck& deck) {
       for (int i = 0; i <= 4 * c.cells; ++i)
         pmax = std::max(pmax, c.pressure(c.lower + L * i / (4.0 * c.cells), c.lower, L, c.dx()));
     double cs_max = mat.spec->wave_speed(dim, mat.density, pmax);
+    for (const auto& body : c.bodies)
+      if (body.material) cs_max = std::max(cs_max, body.material->wave_speed(dim, body.material->density(), pmax));
     double vmax = 0.0;
     for (const auto& body : c.bodies) {
       double v2 = 0.0;

@@ -44,6 +44,7 @@ struct Body {
   std::vector<std::array<double, 2>> vertices;  // polygon (2-D, x-y plane)
   std::array<double, 3> velocity{};
   double angular_velocity = 0.0;            // 2-D: a rigid spin about `center` (circle)
+  std::shared_ptr<const material::Model> material;  // its own [body.material]; null: the deck's
   bool contains(const std::array<double, 3>& x, int dim) const;
 };
 
@@ -53,6 +54,13 @@ struct ReferenceConfig {
   std::vector<std::string> fields;
   std::vector<double> times;     // times compared (also recorded)
   bool at_nodes = false;         // compare nodal (mapped) fields instead of particle fields
+};
+
+// [manufactured]: the axis-aligned manufactured solution of reference/manufactured.hpp
+// (VALIDATION.md N4): its body force drives the run, its velocity starts it.
+struct ManufacturedConfig {
+  bool on = false;
+  double amplitude = 0.01, speed = 1.0;
 };
 
 struct MpmConfig {
@@ -97,6 +105,10 @@ struct MpmConfig {
   bool write_vtk = true;             // 2-D, 3-D: VTK files for ParaView
   // [reference]
   ReferenceConfig reference;
+  ManufacturedConfig manufactured;
+  // [convergence] levels: the run repeated on grids refined by 2 (dt with them), the
+  // observed order of each compared field fitted over the levels (mpm/convergence.hpp)
+  int convergence_levels = 1;
 
   toml::table deck;                // the deck as written, echoed into run.json
   std::string deck_path;

@@ -1,6 +1,9 @@
 #pragma once
 // Initial-state profiles along x: uniform, sinusoid, step, and a step smoothed by
 // tanh over a given number of cells (dissertation sec. 6.3: 26 cells, 13 each side).
+// In 2-D and 3-D a profile runs along its unit `normal` (x by default): it is evaluated
+// at n . x, and a velocity profile points along n.
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -14,6 +17,14 @@ struct Profile {
   double mode = 1.0;
   double left = 0.0, right = 0.0, at = 0.0;  // step and tanh
   double cells = 0.0;                        // tanh: width of the transition in cells
+  std::array<double, 3> normal{1.0, 0.0, 0.0};  // 2-D, 3-D: the direction the profile runs along
+
+  // The coordinate the profile reads at point x of a `dim`-dimensional deck.
+  double along(const std::array<double, 3>& x, int dim) const {
+    double s = 0.0;
+    for (int d = 0; d < dim; ++d) s += normal[d] * x[d];
+    return s;
+  }
 
   // `lower`, `length` of the domain and the cell size `dx` fix the sinusoid and tanh.
   double operator()(double x, double lower, double length, double dx) const {

@@ -1,5 +1,6 @@
 #include "mpmx/mpm/reference.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 namespace mpmx::mpm {
 
 double Reference::total_energy(double) const { return std::nan(""); }
+double Reference::signal_speed() const { return std::nan(""); }
 
 double particle_field(const Particles<1>& p, const std::string& f, std::size_t q) {
   if (f == "velocity") return p.v[0][q];
@@ -85,6 +87,10 @@ class RiemannRef final : public Reference {
     if (f == "pressure") return s.p;
     if (f == "stress") return -s.p;
     return s.rho;
+  }
+  double signal_speed() const override {
+    return std::max({std::abs(star_.left.head), std::abs(star_.left.tail), std::abs(star_.right.head),
+                     std::abs(star_.right.tail)});
   }
   // The undisturbed state ahead of the shock (the right state).
   double baseline(const std::string& f) const override {

@@ -20,6 +20,9 @@ class Reference {
   virtual double baseline(const std::string& field) const = 0;
   // Total energy of the system where the reference knows it (NaN otherwise).
   virtual double total_energy(double t) const;
+  // The fastest signal of the solution (2-D and 3-D decks compare only points that no
+  // wall's reflection has reached); NaN where unbounded or unknown.
+  virtual double signal_speed() const;
 };
 
 // nullptr when the deck names no field reference (none, or shock_front).

@@ -80,7 +80,9 @@ struct RunSummary {
   std::int64_t md_atom_steps = 0;
   int threads = 1;
   double stress_vs_direct_md = std::nan("");
+  std::map<std::string, double> convergence_order;  // a convergence study's L2 order by field
 };
+// Runs a deck of any dimension (a convergence study when convergence.levels > 1).
 RunSummary run_any(const MpmConfig& c, const RunOptions& o);
 
 // The checkpoint of a run directory.

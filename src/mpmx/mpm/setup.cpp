@@ -1,9 +1,11 @@
 #include "mpmx/mpm/setup.hpp"
 
+#include <algorithm>
 #include <cmath>
-
+#include <numeric>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/material/composite.hpp"
 #include "mpmx/material/md_closure.hpp"
 #include "mpmx/mpm/points.hpp"
 
@@ -47,8 +49,6 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
   s.midpoint_gradient = c.scheme.midpoint_gradient;
   s.viscosity = c.viscosity;
   s.boundary = c.boundary;
-  s.material = material::make<Dim>(*c.material.spec);
-  if (auto* closure = dynamic_cast<material::MdClosure*>(s.material.get())) closure->set_threads(threads);
 
   // Points per axis over the whole grid; a point is kept when the deck has no bodies or
   // its centre lies in a body and in no removing region.
@@ -84,15 +84,47 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
   }
   if (at.empty()) throw InputError("no material points: no [[body]] region holds a point centre of the grid");
 
+  // The laws in play: the deck's [material] first, then each body's own. Points are
+  // ordered by law (stable, so a one-law deck keeps the grid order) and each law gets
+  // its block (material/composite.hpp).
+  std::vector<const material::Model*> laws{c.material.spec.get()};
+  std::vector<int> law(at.size(), 0);
+  for (std::size_t q = 0; q < at.size(); ++q) {
+    const int b = owner[q];
+    if (b < 0 || !c.bodies[b].material) continue;
+    const material::Model* m = c.bodies[b].material.get();
+    auto it = std::find(laws.begin(), laws.end(), m);
+    if (it == laws.end()) it = laws.insert(laws.end(), m);
+    law[q] = static_cast<int>(it - laws.begin());
+  }
+  {
+    std::vector<std::size_t> order(at.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return law[a] < law[b]; });
+    std::vector<std::array<double, 3>> at2(at.size());
+    std::vector<int> owner2(at.size()), law2(at.size());
+    for (std::size_t k = 0; k < order.size(); ++k) at2[k] = at[order[k]], owner2[k] = owner[order[k]], law2[k] = law[order[k]];
+    at.swap(at2), owner.swap(owner2), law.swap(law2);
+  }
+  if (law.front() == law.back()) {
+    s.material = material::make<Dim>(*laws[law.front()]);
+  } else {
+    std::vector<typename material::Composite<Dim>::Part> parts;
+    for (std::size_t q = 0; q < law.size(); ++q) {
+      if (q == 0 || law[q] != law[q - 1]) parts.push_back({material::make<Dim>(*laws[law[q]]), q, 0});
+      ++parts.back().count;
+    }
+    if constexpr (Dim > 1) s.material = std::make_unique<material::Composite<Dim>>(std::move(parts));
+  }
+  if (auto* closure = dynamic_cast<material::MdClosure*>(s.material.get())) closure->set_threads(threads);
+
   auto& p = s.particles;
   p.resize(at.size());
   const double dx = c.dx(), L = c.upper - c.lower;
-  const bool solid = c.material.solid();
-  const double rho_of_p = c.material.spec->density_at_pressure(1.0);  // isothermal gas: rho is set by p
+  const bool solid = c.material.solid();  // every law of a deck is of one kind (io/mpm_deck.cpp)
   double V = 1.0;
   for (int d = 0; d < Dim; ++d) V *= l[d];
   for (std::size_t q = 0; q < at.size(); ++q) {
-    const double x = at[q][0];
     for (int d = 0; d < Dim; ++d) {
       p.x[d][q] = at[q][d];
       p.length[d * Dim + d][q] = l[d];
@@ -104,14 +136,16 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
       p.v[1 % Dim][q] += b.angular_velocity * (at[q][0] - b.center[0]);
     }
     p.volume[q] = p.volume0[q] = V;
-    p.v[0][q] += c.velocity(x, c.lower, L, dx);
-    double rho = c.material.density;
+    const double v_profile = c.velocity(c.velocity.along(at[q], Dim), c.lower, L, dx);
+    for (int d = 0; d < Dim; ++d) p.v[d][q] += v_profile * c.velocity.normal[d];
+    const material::Model& m = *laws[law[q]];
+    double rho = m.density();
     if (solid) {
-      p.strain[0][q] = c.strain(x, c.lower, L, dx);
-      if (c.material.density_unstrained) rho /= 1.0 + p.strain[0][q];
+      p.strain[0][q] = c.strain(c.strain.along(at[q], Dim), c.lower, L, dx);
+      if (m.density_of_unstrained()) rho /= 1.0 + p.strain[0][q];
     } else {
-      const double pr = c.pressure(x, c.lower, L, dx);
-      if (std::isfinite(rho_of_p)) rho = c.material.spec->density_at_pressure(pr);
+      const double pr = c.pressure(c.pressure.along(at[q], Dim), c.lower, L, dx);
+      if (std::isfinite(m.density_at_pressure(1.0))) rho = m.density_at_pressure(pr);  // isothermal gas: p sets rho
       for (int d = 0; d < Dim; ++d) p.stress[d * Dim + d][q] = -pr;  // read by the adiabatic gas
     }
     p.mass[q] = rho * V;
@@ -124,6 +158,12 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
   mean_mass /= static_cast<double>(p.size());
   s.mass_distribution.on = c.mass_distribution;
   s.mass_distribution.threshold = c.mass_fraction * mean_mass;
+  if constexpr (Dim > 1)
+    if (c.manufactured.on) {
+      auto m = std::make_shared<Manufactured<Dim>>(c, p);
+      m->start(p);
+      s.manufactured = std::move(m);
+    }
   if (initialize_material) s.material->initialize(points(p));
   s.shape = std::make_unique<ShapeEvaluator<Dim>>(c.scheme, s.grid);
   // Threads over particles pay only on large batches (a parallel region costs microseconds,

@@ -8,6 +8,7 @@
 #include "mpmx/material/material.hpp"
 #include "mpmx/mpm/bcs.hpp"
 #include "mpmx/mpm/grid.hpp"
+#include "mpmx/mpm/manufactured.hpp"
 #include "mpmx/mpm/mass_distribution.hpp"
 #include "mpmx/mpm/particles.hpp"
 #include "mpmx/mpm/fused1d/linear_fused.hpp"
@@ -50,6 +51,7 @@ struct State {
   Boundaries boundary;
   MassDistribution mass_distribution;
   TensorViscosity tensor_viscosity;
+  std::shared_ptr<const Manufactured<Dim>> manufactured;  // its body force drives the run (N4)
   bool move = true;
   bool small_strain = false;  // force and work integrals over V0 (ADMPM's geometrically linear form)
   bool midpoint_gradient = true;  // grad v at v^{n+1/2} (eq. 4.10) or at v^L

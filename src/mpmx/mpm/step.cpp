@@ -43,6 +43,7 @@ void step_stencil(State<Dim>& s, double dt) {
   auto& p = s.particles;
   (*s.shape)(g, p, s.stencil);                      // nearest nodes afresh, S_ip, G_ip
   p2g(p, s.stencil, s.small_strain, g, s.threads);  // m_i, v_i^n (eq. 3.16), f_i
+  if (s.manufactured) s.manufactured->add_body_force(p, s.stencil, s.time, g);
   const bool distribute = s.mass_distribution.on;
   if (distribute) distribute_small_mass_forces(g, s.mass_distribution.threshold, s.mass_distribution.maps);  // eqs. 7.4-7.6
   solve_grid(g, s.boundary, s.time, dt, s.tallies); // v^L (eq. 3.12) with boundaries
