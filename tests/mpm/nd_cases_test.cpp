@@ -34,6 +34,7 @@ double approach_speed(const mpm::Particles<Dim>& p, const std::vector<bool>& fir
 }  // namespace
 
 TEST(N3, TwoDisksKeepMomentumRoundOffAndRebound) {
+  double mpm_drift = 1.0;
   for (const std::string scheme : {"mpm", "ugimp", "cpgimp", "cpdi", "ddmp", "ddmp_subpoints"}) {
     const auto c = test::deck(test::example("N3_two_disks_" + scheme + ".toml"));
     const auto r = test::run_dim<2>(c);
@@ -46,10 +47,13 @@ TEST(N3, TwoDisksKeepMomentumRoundOffAndRebound) {
     for (std::size_t q = 0; q < first.size(); ++q) first[q] = s0.particles.x[0][q] + s0.particles.x[1][q] < 0.0;
     EXPECT_GT(approach_speed(s0.particles, first), 0.1);
     EXPECT_LT(approach_speed(r.state.particles, first), -0.05) << scheme;
-    // Energy after separation: the catalog asks 0.8%; measured 1.3-5.5% at t = 3.5, dt = 0.01
-    // (docs/validation.md, N3), held here as a regression bound.
+    // Energy after separation (the decks' MUSL update): within the catalog's 0.8% of E0 at
+    // t = 3.5 for every scheme, sub-points at least as close as mpm (docs/validation.md, N3).
     const double e0 = r.kinetic_initial;
-    EXPECT_LT(std::abs(total_energy(r) - e0) / e0, 0.07) << scheme;
+    const double drift = std::abs(total_energy(r) - e0) / e0;
+    EXPECT_LT(drift, 0.008) << scheme;
+    if (scheme == "mpm") mpm_drift = drift;
+    if (scheme == "ddmp_subpoints") EXPECT_LE(drift, mpm_drift);
   }
 }
 

@@ -218,8 +218,9 @@ MpmConfig read(Deck& deck) {
   } else if (sc.has("subpoints")) {
     sc.check(false, "subpoints", fmt::format("only ddmp_subpoints uses sub-points, not {}", name));
   }
-  c.scheme.midpoint_gradient =
-      sc.choice("update_velocity", {"midpoint", "updated"}, "midpoint") == "midpoint";
+  const std::string update = sc.choice("update_velocity", {"midpoint", "updated", "musl"}, "midpoint");
+  c.scheme.midpoint_gradient = update == "midpoint";
+  c.scheme.musl = update == "musl";
   if (mpm::scheme_info(c.scheme.scheme).ddmp && dim > 1)
     c.scheme.alpha = sc.choice("alpha", {"eq_7_3", "axis_product"}, "eq_7_3") == "eq_7_3" ? mpm::DdmpAlpha::eq_7_3
                                                                                      : mpm::DdmpAlpha::axis_product;

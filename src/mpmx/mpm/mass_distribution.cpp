@@ -93,10 +93,12 @@ void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps) {
   g.gradient_velocity = g.velocity;
   g.gradient_velocity_L = g.velocity_L;
   for (auto* v : {&g.gradient_velocity, &g.gradient_velocity_L})
-    for (int a = 0; a < Dim; ++a) {
-      gather(maps.c1, (*v)[a]);  // A1^T
-      gather(maps.c0, (*v)[a]);  // A0^T
-    }
+    for (int a = 0; a < Dim; ++a) adjoint_velocity(maps, (*v)[a]);
+}
+
+void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v) {
+  gather(maps.c1, v);  // A1^T
+  gather(maps.c0, v);  // A0^T
 }
 
 template void distribute_small_mass_forces<1>(Grid<1>&, double, SmallMassMaps&);

@@ -42,4 +42,7 @@ void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& map
 template <int Dim>
 void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps);
 
+// v <- A0^T A1^T v for one nodal velocity component (what a gradient reads).
+void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v);
+
 }  // namespace mpmx::mpm

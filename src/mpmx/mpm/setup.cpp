@@ -47,6 +47,7 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
   s.move = c.move;
   s.small_strain = c.material.small_strain;
   s.midpoint_gradient = c.scheme.midpoint_gradient;
+  s.musl = c.scheme.musl;
   s.viscosity = c.viscosity;
   s.boundary = c.boundary;
 

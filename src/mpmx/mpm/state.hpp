@@ -55,6 +55,8 @@ struct State {
   bool move = true;
   bool small_strain = false;  // force and work integrals over V0 (ADMPM's geometrically linear form)
   bool midpoint_gradient = true;  // grad v at v^{n+1/2} (eq. 4.10) or at v^L
+  bool musl = false;              // grad v from the re-mapped new velocities (mpm/musl.hpp)
+  std::array<std::vector<double>, Dim> musl_velocity;  // its nodal velocities
   double viscosity = 0.0;     // linear artificial viscosity coefficient (1-D form, ch. 6)
   double time = 0.0;
   double finite_check = 0.0;  // sum of new v and x of the last step: NaN/Inf shows here

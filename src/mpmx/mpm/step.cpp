@@ -5,6 +5,7 @@
 
 #include "mpmx/material/linear_elastic.hpp"
 #include "mpmx/mpm/mass_distribution.hpp"
+#include "mpmx/mpm/musl.hpp"
 #include "mpmx/mpm/points.hpp"
 #include "mpmx/mpm/solve.hpp"
 #include "mpmx/mpm/tensor_viscosity.hpp"
@@ -49,6 +50,9 @@ void step_stencil(State<Dim>& s, double dt) {
   solve_grid(g, s.boundary, s.time, dt, s.tallies); // v^L (eq. 3.12) with boundaries
   if (distribute) gradient_velocities(g, s.mass_distribution.maps);  // eq. 7.7
   s.finite_check = g2p(g, s.stencil, dt, s.move, s.midpoint_gradient, p, s.threads);  // v_p, x_p, grad v
+  if (s.musl)
+    musl_gradient(s.stencil, s.boundary, s.time + dt, g, p, distribute ? &s.mass_distribution.maps : nullptr,
+                  s.musl_velocity, s.threads);
   finish(s, dt);
 }
 
@@ -62,7 +66,7 @@ void step(State<Dim>& s, double dt) {
     const SchemeOptions& opt = s.shape->options();
     const Scheme scheme = opt.scheme;
     if ((scheme != Scheme::mpm && scheme != Scheme::ddmp && scheme != Scheme::ddmp_subpoints) ||
-        s.mass_distribution.on || s.tensor_viscosity.on)
+        s.mass_distribution.on || s.tensor_viscosity.on || s.musl)
       return step_stencil(s, dt);
     // Fused hat + transfers (mpm; DDMP, eq. 3.31, sub-points eqs. 6.1-6.3): the same
     // algorithm as the stencil path. For a linear elastic solid without viscosity, g2p

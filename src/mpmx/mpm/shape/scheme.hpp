@@ -43,6 +43,7 @@ struct SchemeOptions {
   std::array<int, 3> subpoints_axes{1, 1, 1};  // ddmp_subpoints per axis (their product in all)
   DdmpAlpha alpha = DdmpAlpha::eq_7_3;
   bool midpoint_gradient = true;  // x and grad v advanced with v^{n+1/2} (eqs. 3.14, 4.10) or v^L
+  bool musl = false;              // grad v from the re-mapped new velocities (mpm/musl.hpp); x with v^L
 };
 
 namespace shape {
