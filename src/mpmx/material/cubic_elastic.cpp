@@ -9,6 +9,9 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/units.hpp"
+#include "mpmx/material/md_closure.hpp"
+#include "mpmx/md/config.hpp"
 
 namespace mpmx::material {
 
@@ -149,9 +152,38 @@ CubicConstants read_cubic_constants(io::Section& m, const Context&) {
 
 std::shared_ptr<const Model> read_cubic_elastic(io::Section& m, const Context& ctx) {
   auto r = std::make_shared<CubicElasticModel>();
-  r->rho = m.number("density");
-  m.positive("density", r->rho);
-  r->c = read_cubic_constants(m, ctx);
+  if (m.choice("constants_from", {"deck", "potential"}, "deck") == "deck") {
+    r->rho = m.number("density");
+    m.positive("density", r->rho);
+    r->c = read_cubic_constants(m, ctx);
+    return r;
+  }
+  // The 0 K crystal of an MD potential (md/equilibrium.hpp): the constants the DDMP-MD
+  // closure's crystal has, for the continuum baseline beside it (VALIDATION.md J4).
+  for (const char* key : {"c11", "c12", "c44"})
+    if (m.has(key)) m.check(false, key, "is taken from the potential (constants_from = \"potential\")");
+  const auto u = units::unit_system(ctx.units);
+  if (!u) {
+    m.check(false, "constants_from",
+            fmt::format("potential constants need case.units to be one of {}, not '{}'", units::unit_system_names(),
+                        ctx.units));
+    return r;
+  }
+  const md::PotentialSpec spec = md::read_potential(m.table("potential"), ctx.deck_dir);
+  if (spec.style == "eam" && spec.file.empty()) return r;  // read_potential said why
+  try {
+    const auto props = md_closure_properties(spec, *u);
+    r->c.c11 = props.modulus;
+    r->c.c12 = props.c12;
+    r->c.c44 = props.c44;
+    r->rho = props.density;
+  } catch (const std::exception& e) {
+    m.check(false, "potential", e.what());
+  }
+  if (m.has("density")) {  // the crystal's own unless the deck says otherwise
+    r->rho = m.number("density");
+    m.positive("density", r->rho);
+  }
   return r;
 }
 

@@ -25,6 +25,8 @@ MdClosureProperties properties(const md::FccEquilibrium& eq, const units::UnitSy
   r.equilibrium = eq;
   r.density = eq.density_amu_per_A3 / mass_unit_amu(u) * std::pow(u.length_A, 3);
   r.modulus = eq.c11_gpa / u.stress_GPa;
+  r.c12 = eq.c12_gpa / u.stress_GPa;
+  r.c44 = eq.c44_gpa / u.stress_GPa;
   r.sound_speed = std::sqrt(r.modulus / r.density);
   return r;
 }

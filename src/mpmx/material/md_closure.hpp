@@ -40,6 +40,7 @@ struct MdClosureConfig {
 struct MdClosureProperties {
   md::FccEquilibrium equilibrium;
   double density = 0.0, modulus = 0.0, sound_speed = 0.0;
+  double c12 = 0.0, c44 = 0.0;  // the other cubic constants (continuum units)
 };
 MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, const units::UnitSystem& u);
 

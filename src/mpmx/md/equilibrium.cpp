@@ -18,6 +18,19 @@ System crystal(const Potential& pot, double a, double strain_x = 0.0) {
   return System(fcc(2, 2, 2, a, strain_x), pot);
 }
 
+// The same crystal under the simple shear x += gamma y (atoms and image lattice). fcc is
+// a Bravais lattice: no internal relaxation, so the homogeneous shear is the answer.
+System sheared(const Potential& pot, double a, double gamma) {
+  Crystal c = fcc(2, 2, 2, a);
+  for (std::size_t i = 0; i < c.atoms.size(); ++i) {
+    double& x = c.atoms.x[i];
+    x += gamma * c.atoms.y[i];
+    x -= c.box.lx * std::floor(x / c.box.lx);
+  }
+  c.box.xy = gamma * c.box.ly;
+  return System(c, pot);
+}
+
 double pressure(const Potential& pot, double a) {
   const Mat3 s = crystal(pot, a).stress();
   return -(s[0] + s[4] + s[8]) / 3.0;
@@ -54,6 +67,10 @@ FccEquilibrium fcc_equilibrium(const Potential& pot) {
   const double e = 1e-5;  // central difference: O(e^2) error, far below the digits used
   r.c11_gpa = (crystal(pot, r.lattice_constant, e).stress_gpa()[0] -
                crystal(pot, r.lattice_constant, -e).stress_gpa()[0]) / (2 * e);
+  r.c12_gpa = (crystal(pot, r.lattice_constant, e).stress_gpa()[4] -
+               crystal(pot, r.lattice_constant, -e).stress_gpa()[4]) / (2 * e);
+  r.c44_gpa = (sheared(pot, r.lattice_constant, e).stress_gpa()[1] -
+               sheared(pot, r.lattice_constant, -e).stress_gpa()[1]) / (2 * e);
   r.density_amu_per_A3 = 4.0 * pot.mass(0) / std::pow(r.lattice_constant, 3);
   return r;
 }
