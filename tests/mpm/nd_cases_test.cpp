@@ -53,7 +53,9 @@ TEST(N3, TwoDisksKeepMomentumRoundOffAndRebound) {
     const double drift = std::abs(total_energy(r) - e0) / e0;
     EXPECT_LT(drift, 0.008) << scheme;
     if (scheme == "mpm") mpm_drift = drift;
-    if (scheme == "ddmp_subpoints") EXPECT_LE(drift, mpm_drift);
+    if (scheme == "ddmp_subpoints") {
+      EXPECT_LE(drift, mpm_drift);
+    }
   }
 }
 

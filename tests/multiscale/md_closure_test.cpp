@@ -38,7 +38,7 @@ TEST(Equilibrium, CopperLatticeAndModulus) {
 TEST(MdClosure, UnstrainedPointAtZeroKelvinHasZeroStress) {
   auto c = test::tiny_bar(4, 3, 2);
   c.material.md.threads = 1;
-  material::MdClosure m(c.material.md);
+  material::MdClosure<1> m(c.material.md);
   mpm::Particles<1> p;
   p.resize(2);
   p.strain[0] = {0.0, -0.01};

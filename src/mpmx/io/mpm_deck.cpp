@@ -250,7 +250,7 @@ MpmConfig read(Deck& deck) {
       root.check(false, "body", "solids and gases in one deck are not supported: every body's material.model must be "
                                 "of the same kind as the others");
     if (dynamic_cast<const material::MdClosureModel*>(b.material.get()))
-      root.check(false, "body", "md_closure is not a body material (it is a 1-D closure)");
+      root.check(false, "body", "md_closure is the deck's [material] only: a body does not take it");
   }
   if (mat.spec) {
     mat.model = mat.spec->name();

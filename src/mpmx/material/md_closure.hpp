@@ -29,6 +29,7 @@ struct MdClosureConfig {
   bool mixed_precision = false;
   units::UnitSystem units{"nm_ps_GPa", 10.0, 1.0, 1.0};
   int threads = 0;                 // 0: OpenMP default
+  int energy_consistency = -1;     // eq. 7.11: 1 on, 0 off, -1 the default (on in 2-D and 3-D)
 
   int atoms_per_point() const { return 4 * cells * cells * cells; }
   // MD steps in a continuum step `dt` (continuum units); 0 when not a whole number.
@@ -44,16 +45,25 @@ struct MdClosureProperties {
 };
 MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, const units::UnitSystem& u);
 
-class MdClosure final : public Material<1> {
+// In 2-D and 3-D the point's full velocity gradient drives its box (eqs. 5.7-5.8; a lower
+// triangle is turned upper triangular by eq. 5.20, the z length of a 2-D run stays
+// fixed) and the full virial stress comes back. Eq. 5.20 gives the box the same rate of
+// deformation but another spin than the point's, so each point carries the rotation R
+// between the box's crystal and the point's (dR/dt = W R - R W') and returns R sigma R^T.
+// Energy consistency (eq. 7.11, on by default in 2-D and 3-D): each macro step the
+// difference between the continuum's work V sigma : D dt and the box's own energy change
+// goes into the box as kinetic energy about its mean velocity.
+template <int Dim>
+class MdClosure final : public Material<Dim> {
  public:
   explicit MdClosure(const MdClosureConfig& config);
 
   std::string name() const override { return "md_closure"; }
   // Builds one box per point from p.strain (engineering, along x); sets the stress.
-  void initialize(const Points<1>& p) override;
-  void update_stress(const Points<1>& p, double dt) override;
+  void initialize(const Points<Dim>& p) override;
+  void update_stress(const Points<Dim>& p, double dt) override;
   // sqrt(C11 / rho): the 0 K uniaxial-strain wave speed, for the viscosity.
-  double sound_speed(const Points<1>& p, std::size_t q) const override;
+  double sound_speed(const Points<Dim>& p, std::size_t q) const override;
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;
 
@@ -63,20 +73,28 @@ class MdClosure final : public Material<1> {
   int atoms_per_point() const { return cfg_.atoms_per_point(); }
   std::int64_t atom_steps() const { return atom_steps_; }
   int threads() const { return batch_.threads(); }
-  // The run's --threads (0: OpenMP's default); set before initialize().
-  void set_threads(int threads) { batch_ = multiscale::Batch(threads); }
+  // The boxes spread over the run's --threads (0: OpenMP's default), set before
+  // initialize(); the continuum's particle threads (set_threads) do not apply to them.
+  void use_threads(int threads) { batch_ = multiscale::Batch(threads); }
+  void set_threads(int) override {}
   const std::vector<md::System>& boxes() const { return boxes_; }
+  // Eq. 7.11: energy put into (positive) or taken from the boxes so far, eV; and what
+  // could not be taken from a box with too little thermal energy.
+  double energy_injected_ev() const { return injected_ev_; }
+  double energy_shortfall_ev() const { return shortfall_ev_; }
 
  private:
   md::SystemOptions box_options() const;
+  void set_point_stress(const Points<Dim>& p, std::size_t q) const;
 
   MdClosureConfig cfg_;
   md::Potential pot_;
   MdClosureProperties props_;
   multiscale::Batch batch_;
   std::vector<md::System> boxes_;
-  std::vector<md::Mat3> gradients_, stress_;
+  std::vector<md::Mat3> gradients_, stress_, rotation_;
   std::int64_t atom_steps_ = 0;
+  double injected_ev_ = 0.0, shortfall_ev_ = 0.0;
 };
 
 }  // namespace mpmx::material

@@ -10,18 +10,13 @@
 namespace mpmx::material {
 
 double MdClosureModel::wave_speed(int, double density, double) const { return std::sqrt(c11 / density); }
-std::unique_ptr<Material<1>> MdClosureModel::make1() const { return std::make_unique<MdClosure>(md); }
-std::unique_ptr<Material<2>> MdClosureModel::make2() const {
-  throw InputError("material.model = md_closure: this version runs it in 1-D decks only");
-}
-std::unique_ptr<Material<3>> MdClosureModel::make3() const {
-  throw InputError("material.model = md_closure: this version runs it in 1-D decks only");
-}
+std::unique_ptr<Material<1>> MdClosureModel::make1() const { return std::make_unique<MdClosure<1>>(md); }
+std::unique_ptr<Material<2>> MdClosureModel::make2() const { return std::make_unique<MdClosure<2>>(md); }
+std::unique_ptr<Material<3>> MdClosureModel::make3() const { return std::make_unique<MdClosure<3>>(md); }
 
 std::shared_ptr<const Model> read_md_closure(io::Section& m, const Context& ctx) {
   auto r = std::make_shared<MdClosureModel>();
   auto& md = r->md;
-  m.check(ctx.dim == 1, "model", "md_closure runs in 1-D decks in this version (grid.dim = 1)");
   const auto u = units::unit_system(ctx.units);
   if (u) md.units = *u;
   else
@@ -47,6 +42,7 @@ std::shared_ptr<const Model> read_md_closure(io::Section& m, const Context& ctx)
   md.skin = s.number("skin", 1.0);
   s.non_negative("skin", md.skin);
   md.mixed_precision = s.choice("precision", {"double", "mixed"}, "double") == "mixed";
+  if (s.has("energy_consistency")) md.energy_consistency = s.boolean("energy_consistency", true) ? 1 : 0;
   if (md.potential.style != "eam" || !md.potential.file.empty()) {
     try {
       const auto props = md_closure_properties(md.potential, md.units);

@@ -176,11 +176,11 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   RunResultOf<Dim> r;
   const bool md_closure = dynamic_cast<const material::MdClosureModel*>(c.material.spec.get()) != nullptr;
   if (!o.resume && !o.quiet && md_closure)
-    fmt::print(stderr, "{}: building {} MD boxes of {} atoms (section 6.2)...\n", c.id,
-               static_cast<long>(c.cells) * c.per_cell, c.material.md.atoms_per_point());
+    fmt::print(stderr, "{}: building the MD box of every point ({} atoms each, section 6.2)...\n", c.id,
+               c.material.md.atoms_per_point());
   r.state = make_state<Dim>(c, !o.resume, o.threads);
   State<Dim>& s = r.state;
-  const auto* closure = dynamic_cast<const material::MdClosure*>(s.material.get());
+  const auto* closure = dynamic_cast<const material::MdClosure<Dim>*>(s.material.get());
   r.threads = closure ? closure->threads() : 1;
   const auto ref = make_reference(c);  // 2-D, 3-D: a 1-D solution along the profile's normal
   const bool track_front = c.reference.name == "shock_front";
@@ -544,6 +544,8 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     rec.set("md.energy_per_atom_eV", eq.energy_per_atom);
     rec.set("md.c11_GPa", eq.c11_gpa);
     rec.set("md.density", closure->density());
+    rec.set("md.energy_injected_eV", closure->energy_injected_ev());   // eq. 7.11, running total
+    rec.set("md.energy_shortfall_eV", closure->energy_shortfall_ev());
   }
   if (!failure.empty()) rec.set("error", failure);
   rec.set("dim", static_cast<std::int64_t>(Dim));

@@ -117,7 +117,7 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
     }
     if constexpr (Dim > 1) s.material = std::make_unique<material::Composite<Dim>>(std::move(parts));
   }
-  if (auto* closure = dynamic_cast<material::MdClosure*>(s.material.get())) closure->set_threads(threads);
+  if (auto* closure = dynamic_cast<material::MdClosure<Dim>*>(s.material.get())) closure->use_threads(threads);
 
   auto& p = s.particles;
   p.resize(at.size());

@@ -26,24 +26,27 @@ void Batch::for_each(std::size_t n, const std::function<void(std::size_t)>& task
   if (failure) std::rethrow_exception(failure);
 }
 
+void advance_box(md::System& box, const md::Mat3& gradient, int nsteps, double dt, StressSample sample,
+                 md::Mat3& stress_gpa) {
+  if (sample == StressSample::last) {
+    box.advance(nsteps, gradient, dt);
+    stress_gpa = box.stress_gpa();
+    return;
+  }
+  md::Mat3 sum{};
+  for (int s = 0; s < nsteps; ++s) {
+    box.advance(1, gradient, dt);
+    const md::Mat3 now = box.stress_gpa();
+    for (int c = 0; c < 9; ++c) sum[c] += now[c];
+  }
+  for (int c = 0; c < 9; ++c) stress_gpa[c] = sum[c] / nsteps;
+}
+
 void Batch::advance(std::vector<md::System>& boxes, const std::vector<md::Mat3>& gradients, int nsteps,
                     double dt, StressSample sample, std::vector<md::Mat3>& stress_gpa) const {
   stress_gpa.resize(boxes.size());
-  for_each(boxes.size(), [&](std::size_t q) {
-    md::System& box = boxes[q];
-    if (sample == StressSample::last) {
-      box.advance(nsteps, gradients[q], dt);
-      stress_gpa[q] = box.stress_gpa();
-      return;
-    }
-    md::Mat3 sum{};
-    for (int s = 0; s < nsteps; ++s) {
-      box.advance(1, gradients[q], dt);
-      const md::Mat3 now = box.stress_gpa();
-      for (int c = 0; c < 9; ++c) sum[c] += now[c];
-    }
-    for (int c = 0; c < 9; ++c) stress_gpa[q][c] = sum[c] / nsteps;
-  });
+  for_each(boxes.size(),
+           [&](std::size_t q) { advance_box(boxes[q], gradients[q], nsteps, dt, sample, stress_gpa[q]); });
 }
 
 }  // namespace mpmx::multiscale

@@ -17,6 +17,11 @@ enum class StressSample {
   average,  // the mean of eq. 2.25 over the macro step's MD steps (fig. 6.6)
 };
 
+// Advances one box by nsteps MD steps of dt (ps) under the gradient (1/ps) and returns
+// its stress (GPa, Cauchy) sampled as asked.
+void advance_box(md::System& box, const md::Mat3& gradient, int nsteps, double dt, StressSample sample,
+                 md::Mat3& stress_gpa);
+
 class Batch {
  public:
   explicit Batch(int threads = 0);  // 0: OpenMP's default (OMP_NUM_THREADS or all cores)

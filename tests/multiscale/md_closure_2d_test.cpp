@@ -1,0 +1,197 @@
+// md_closure in 2-D (issue 14, dissertation sec. 7.2): zero stress at rest at 0 K, a
+// sheared box against a directly sheared md::System (eq. 5.20 and the rotation it
+// implies), energy consistency (eq. 7.11) to round-off per macro step, thread-count
+// independence and checkpoint/resume bit for bit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "mpmx/io/mpm_deck.hpp"
+#include "mpmx/material/md_closure.hpp"
+#include "mpmx/md/lattice.hpp"
+#include "mpmx/mpm/points.hpp"
+#include "mpmx/mpm/run.hpp"
+#include "ms_test_util.hpp"
+
+namespace {
+
+using namespace mpmx;
+
+// A copper flyer (x < 1.1 nm) moving at `up` km/s into copper at rest: 4 x 2 cells, one
+// point per cell, each point a box of 4 x 3^3 = 108 atoms; steps of 0.1 ps.
+mpm::MpmConfig impact_2d(double temperature, int steps, bool consistent = true) {
+  const std::string text = fmt::format(R"(
+[case]
+id = "md_closure_2d"
+units = "nm_ps_GPa"
+[grid]
+dim = 2
+lower = [0.0, 0.0]
+upper = [4.4, 2.2]
+cells = [4, 2]
+[particles]
+per_cell = [1, 1]
+[[body]]
+shape = "box"
+lower = [0.0, 0.0]
+upper = [1.1, 2.2]
+velocity = [0.5, 0.0]
+[[body]]
+shape = "box"
+lower = [1.1, 0.0]
+upper = [4.4, 2.2]
+[scheme]
+name = "cpdi"
+[material]
+model = "md_closure"
+[material.potential]
+style = "eam"
+file = "Cu_mishin1.eam.alloy"
+elements = ["Cu"]
+[material.md]
+cells = 3
+temperature = {}
+relax_steps = {}
+energy_consistency = {}
+[boundary]
+y_lower = {{ type = "roller" }}
+y_upper = {{ type = "roller" }}
+[time]
+dt = 0.1
+end = {}
+[output]
+times = []
+)",
+                                       temperature, temperature > 0 ? 20 : 0, consistent ? "true" : "false",
+                                       0.1 * steps);
+  return io::read_mpm_deck_text(text, "md_closure_2d");
+}
+
+md::Mat3 gradient(double gxy, double gyx) {
+  md::Mat3 g{};
+  g[1] = gxy, g[3] = gyx;
+  return g;
+}
+
+void expect_same(const mpm::Particles<2>& a, const mpm::Particles<2>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (int d = 0; d < 2; ++d) {
+    EXPECT_EQ(a.x[d], b.x[d]);
+    EXPECT_EQ(a.v[d], b.v[d]);
+  }
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(a.stress[k], b.stress[k]);
+}
+
+}  // namespace
+
+TEST(MdClosure2d, RestingCrystalAtZeroKelvinHasNoStress) {
+  auto c = impact_2d(0.0, 1);
+  c.material.md.threads = 1;
+  material::MdClosure<2> m(c.material.md);
+  mpm::Particles<2> p;
+  p.resize(2);
+  p.mass = {1.0, 1.0};
+  p.volume = p.volume0 = {1.0, 1.0};
+  m.initialize(mpm::points(p));
+  m.update_stress(mpm::points(p), 0.1);
+  for (int k = 0; k < 4; ++k)
+    for (std::size_t q = 0; q < 2; ++q) EXPECT_LT(std::abs(p.stress[k][q]), 1e-9) << k;
+  EXPECT_EQ(m.atom_steps(), 2 * 108 * 100);
+}
+
+// An upper-triangular shear is what the box does itself; a lower-triangular one becomes
+// the upper one (eq. 5.20) with the rotation carried by the point: the same box stress,
+// turned by R.
+TEST(MdClosure2d, ShearedBoxMatchesADirectlyShearedSystem) {
+  auto c = impact_2d(0.0, 1, false);
+  c.material.md.threads = 1;
+  const double rate = 0.02;  // 1/ps
+  md::System direct(md::fcc(3, 3, 3, material::MdClosure<2>(c.material.md).equilibrium().lattice_constant),
+                    md::Potential(c.material.md.potential));
+  direct.advance(100, gradient(rate, 0.0), 0.001);
+  for (const bool lower : {false, true}) {
+    material::MdClosure<2> m(c.material.md);
+    mpm::Particles<2> p;
+    p.resize(1);
+    p.mass = {1.0};
+    p.volume = p.volume0 = {1.0};
+    m.initialize(mpm::points(p));
+    (lower ? p.grad_v[2] : p.grad_v[1]) = {rate};
+    m.update_stress(mpm::points(p), 0.1);
+    ASSERT_EQ(m.boxes()[0].atoms().size(), 108u);
+    const md::Mat3 s = direct.stress_gpa();
+    ASSERT_GT(std::abs(s[1]), 0.1);  // a real shear stress, GPa
+    if (!lower) {
+      EXPECT_EQ(p.stress[1][0], s[1]);  // bit for bit: the same box
+      EXPECT_EQ(p.stress[0][0], s[0]);
+      continue;
+    }
+    // The spin difference W - W' = [[0, -rate], [rate, 0]] over 0.1 ps: R turns by
+    // 0.1 rate about z; sigma = R s R^T.
+    const double th = rate * 0.1, cs = std::cos(th), sn = std::sin(th);
+    const double sxx = cs * cs * s[0] - 2 * sn * cs * s[1] + sn * sn * s[4];
+    const double sxy = sn * cs * (s[0] - s[4]) + (cs * cs - sn * sn) * s[1];
+    EXPECT_NEAR(p.stress[0][0], sxx, 1e-9 * std::abs(s[1]));
+    EXPECT_NEAR(p.stress[1][0], sxy, 1e-9 * std::abs(s[1]));
+    EXPECT_EQ(p.stress[1][0], p.stress[2][0]);
+  }
+}
+
+// Eq. 7.11: after each macro step the box's energy (potential plus thermal kinetic)
+// has changed by exactly the continuum's work V sigma : D dt.
+TEST(MdClosure2d, EnergyConsistencyHoldsToRoundOffEachMacroStep) {
+  auto c = impact_2d(100.0, 1, true);
+  c.material.md.threads = 1;
+  material::MdClosure<2> m(c.material.md);
+  mpm::Particles<2> p;
+  p.resize(1);
+  p.mass = {1.0};
+  p.volume = p.volume0 = {1.0};
+  m.initialize(mpm::points(p));
+  p.grad_v[0] = {-0.05};  // compression with shear (upper triangular: the point's frame is the box's)
+  p.grad_v[1] = {0.03};
+  for (int step = 0; step < 3; ++step) {
+    const md::System before = m.boxes()[0];
+    // The stress the continuum saw (GPa in these units) on the rate of deformation.
+    const double power = p.stress[0][0] * -0.05 + (p.stress[1][0] + p.stress[2][0]) * 0.5 * 0.03;
+    m.update_stress(mpm::points(p), 0.1);
+    const md::System& after = m.boxes()[0];
+    const double work = 0.5 * (before.box().volume() + after.box().volume()) * power * 0.1 / 160.21766208;
+    const double change = after.potential_energy() + after.thermal_kinetic_energy() - before.potential_energy() -
+                          before.thermal_kinetic_energy();
+    EXPECT_NEAR(change, work, 1e-9 * (std::abs(after.potential_energy()) + 1.0)) << step;
+    EXPECT_GT(std::abs(work), 1e-3);  // eV: a real exchange
+  }
+  EXPECT_EQ(m.energy_shortfall_ev(), 0.0);
+}
+
+TEST(MdClosure2d, SameParticlesOnOneAndTwoThreadsAndResumedBitForBit) {
+  const auto c = impact_2d(50.0, 4);
+  mpm::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  o.threads = 1;
+  const auto one = mpm::run_mpm_dim<2>(c, o);
+  o.threads = 2;
+  const auto two = mpm::run_mpm_dim<2>(c, o);
+  expect_same(one.state.particles, two.state.particles);
+  EXPECT_EQ(one.md_atom_steps, 8 * 108 * (400 + 20));
+  EXPECT_LT(one.momentum_error(), 1e-12 * one.momentum_scale);
+  // The flyer is pushed back by the target.
+  double v_flyer = 0.0;
+  for (std::size_t q = 0; q < one.state.particles.size(); ++q)
+    if (one.state.particles.x[0][q] < 0.9) v_flyer = std::max(v_flyer, one.state.particles.v[0][q]);
+  EXPECT_LT(v_flyer, 0.5);
+
+  o.out_dir = test::scratch_dir("md_closure_2d_parts");
+  o.stop_after = 2;
+  const auto first = mpm::run_mpm_dim<2>(c, o);
+  EXPECT_TRUE(first.interrupted);
+  o.stop_after = 0;
+  o.resume = true;
+  const auto rest = mpm::run_mpm_dim<2>(c, o);
+  EXPECT_EQ(rest.steps, 4);
+  expect_same(two.state.particles, rest.state.particles);
+}
