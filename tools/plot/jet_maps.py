@@ -115,7 +115,8 @@ def jet_figure(run_dir, out, steps, dt, t, scale, quiet):
     fig, ax = plt.subplots(figsize=(7, 3.8))
     if os.path.exists(dump):
         step, a = last_dump_frame_near(dump, round(t * scale / dt))
-        im = ax.scatter(0.1 * a["x"], 0.1 * a["y"], c=0.1 * a["vx"], s=0.2, cmap="coolwarm", vmin=-3, vmax=3,
+        size = min(4.0, max(0.2, 3e4 / len(a["x"])))  # dots that neither vanish nor merge
+        im = ax.scatter(0.1 * a["x"], 0.1 * a["y"], c=0.1 * a["vx"], s=size, cmap="coolwarm", vmin=-3, vmax=3,
                         linewidths=0)
         ax.set_aspect("equal")
         fig.colorbar(im, ax=ax, label="$v_x$ (km/s)", shrink=0.8)
