@@ -204,4 +204,7 @@ dt = 0.001
   const std::string big = error_of("", "cells = [400, 200, 1000000]\npiston_cells = 40\nnotch_depth_nm = 36.0\n"
                                        "bins = [8, 4]\nduration_ps = 30.0\nrecord_every_ps = 1.0\n");
   EXPECT_TRUE(has(big, "jet.cells") && has(big, "1000000")) << big;
+  const std::string many = error_of("", "cells = [400, 200, 3]\npiston_cells = 40\nnotch_depth_nm = 36.0\n"
+                                        "bins = [100000, 100000]\nduration_ps = 30.0\nrecord_every_ps = 1.0\n");
+  EXPECT_TRUE(has(many, "jet.bins") && has(many, "10^7")) << many;
 }

@@ -183,17 +183,22 @@ MdConfig read_md_config(io::Deck& deck) {
                             j.notch_depth_A(), (j.nx() - j.npiston()) * c.lattice_constant));
     }
     const auto bins = jet.integers("bins", 1, 100000);
-    if (bins.size() == 2) c.jet_bins = {static_cast<int>(bins[0]), static_cast<int>(bins[1])};
-    else jet.check(false, "bins", "expected [nx, ny] (bins over the sample's x and y)");
+    if (bins.size() == 2) {
+      c.jet_bins = {static_cast<int>(bins[0]), static_cast<int>(bins[1])};
+      jet.check(bins[0] * bins[1] <= 10'000'000, "bins",
+                "more than 10^7 bins: each record's tables would not fit (400 x 50 is the seed's)");
+    } else {
+      jet.check(false, "bins", "expected [nx, ny] (bins over the sample's x and y)");
+    }
     const double duration = jet.number("duration_ps");
     jet.positive("duration_ps", duration);
     const double every = jet.number("record_every_ps");
     jet.positive("record_every_ps", every);
     if (duration > 0 && every > 0 && c.dt > 0 && j.scale > 0) {
       const double steps = j.scale * duration / c.dt, per = j.scale * every / c.dt;
-      jet.check(steps < 1e15, "duration_ps", "too many steps");
+      jet.check(steps < 1e15, "duration_ps", fmt::format("times the scale is {:.3g} steps: too many", steps));
       jet.check(per >= 1 && per < INT_MAX, "record_every_ps",
-                fmt::format("times the scale is {} steps of run.dt: needs 1 or more", per));
+                fmt::format("times the scale is {:.6g} steps of run.dt: needs 1 to 2^31 - 1 (rounded)", per));
       if (steps < 1e15 && per >= 1 && per < INT_MAX) {
         c.steps = std::llround(steps);
         c.jet_every = std::llround(per);
