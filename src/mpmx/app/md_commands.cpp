@@ -3,6 +3,7 @@
 // `--check` does every validation the run does (deck, potential file and its elements,
 // memory and work estimates) and writes nothing; the run creates DIR only after them.
 #include <filesystem>
+#include <fstream>
 
 #include <fmt/format.h>
 
@@ -14,7 +15,9 @@
 #include "mpmx/md/bar.hpp"
 #include "mpmx/md/budget.hpp"
 #include "mpmx/md/config.hpp"
+#include "mpmx/md/jet_run.hpp"
 #include "mpmx/md/lammps_bar.hpp"
+#include "mpmx/md/lammps_jet.hpp"
 #include "mpmx/md/run.hpp"
 
 namespace mpmx::app {
@@ -27,7 +30,7 @@ void run_bar_lammps(const std::string& deck, const md::MdConfig& c, const std::s
                     int ranks) {
   namespace fs = std::filesystem;
   if (!c.bar)
-    throw InputError(fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] table", deck));
+    throw InputError(fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", deck));
   const fs::path dir = fs::path(out) / "lammps";
   const md::Bar bar(c.bar_config, md::Potential(c.potential), c.options);
   md::write_lammps_bar(bar, c.potential, c.dt, c.steps, c.bar_every, dir.string());
@@ -48,6 +51,41 @@ void run_bar_lammps(const std::string& deck, const md::MdConfig& c, const std::s
              r.command, dir.string(), csv.string());
 }
 
+// The jet of a deck through LAMMPS: inputs in OUT/lammps/, then (unless write_only) lmp,
+// and its bins' stress as OUT/jet_stress_lammps.csv (long table, one row per bin and record).
+void run_jet_lammps(const md::MdConfig& c, const std::string& out, bool write_only, int ranks) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(out) / "lammps";
+  md::JetGeometry geo;
+  const md::System sys = md::build_jet(c.jet_config, md::Potential(c.potential), c.options, &geo);
+  const md::BinGrid grid = md::jet_grid(geo, c.jet_bins[0], c.jet_bins[1]);
+  md::write_lammps_jet(sys, geo, grid, c.potential, c.dt, c.steps, c.jet_every, c.dump_every, dir.string());
+  if (write_only) {
+    fmt::print("{} atoms, {} steps: wrote {} and {}; run `lmp -in {}` there (or under mpirun); the bins' stress "
+               "(GPa) lands in {}\n",
+               sys.atoms().size(), c.steps, (dir / md::kLammpsJetData).string(), (dir / md::kLammpsJetInput).string(),
+               md::kLammpsJetInput, (dir / md::kLammpsJetStress).string());
+    return;
+  }
+  const md::LammpsRun r = md::run_lammps(dir.string(), ranks, md::kLammpsJetInput, md::kLammpsJetStress);
+  if (r.ranks < ranks) fmt::print(stderr, "md: mpirun not on PATH, LAMMPS ran on 1 rank instead of {}\n", ranks);
+  const auto samples = md::read_lammps_bar_stress((dir / md::kLammpsJetStress).string(), c.dt, grid.nx * grid.ny);
+  const fs::path csv = fs::path(out) / "jet_stress_lammps.csv";
+  std::ofstream f(csv);
+  if (!f) throw RunError(fmt::format("cannot write {}", csv.string()));
+  f << "step,time_ps,ix,iy,x_A,y_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n";
+  for (const auto& s : samples)
+    for (int k = 0; k < grid.nx * grid.ny; ++k) {
+      const md::Mat3& m = s.stress_gpa[k];
+      const int ix = k % grid.nx, iy = k / grid.nx;
+      f << fmt::format("{},{:.6f},{},{},{:.6g},{:.6g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", s.step, s.time_ps,
+                       ix, iy, grid.x_centre(ix), grid.y_centre(iy), m[0], m[4], m[8], m[1], m[2], m[5]);
+    }
+  if (!f) throw RunError(fmt::format("error writing {}", csv.string()));
+  fmt::print("{} atoms, {} steps through LAMMPS (`{}` in {}) -> {}\n", sys.atoms().size(), c.steps, r.command,
+             dir.string(), csv.string());
+}
+
 }  // namespace
 
 void add_md_commands(CLI::App& app) {
@@ -65,10 +103,11 @@ void add_md_commands(CLI::App& app) {
   md->add_flag("--quiet", args->quiet, "no progress line");
   md->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   auto* lammps = md->add_flag("--lammps", args->lammps,
-                              "bar decks: run the bar through LAMMPS (lmp) instead of mpmx's MD; inputs in "
-                              "OUT/lammps/, slab stress in OUT/bar_stress_lammps.csv");
+                              "bar and jet decks: run the sample through LAMMPS (lmp) instead of mpmx's MD; "
+                              "inputs in OUT/lammps/, binned stress in OUT/bar_stress_lammps.csv or "
+                              "OUT/jet_stress_lammps.csv");
   md->add_flag("--lammps-write-only", args->lammps_write_only,
-               "bar decks: only write the LAMMPS inputs to OUT/lammps/ (to run on a cluster)")
+               "bar and jet decks: only write the LAMMPS inputs to OUT/lammps/ (to run on a cluster)")
       ->excludes(lammps);
   md->add_option("--ranks", args->ranks, "MPI ranks for --lammps (mpirun -np N when N > 1)")
       ->check(whole_number(1, 1 << 20))
@@ -81,14 +120,21 @@ void add_md_commands(CLI::App& app) {
     // Memory always; work unless --force, or when only LAMMPS inputs are written.
     md::check_md_budget(budget, physical_memory_bytes(), args->force || args->lammps_write_only);
     if (args->check) {
-      fmt::print("{}: ok ({:.4g} atoms, {} steps, about {} of memory, {:.3g} atom-steps)\n", args->deck,
-                 budget.atoms, config.steps, format_bytes(budget.bytes), budget.atom_steps);
+      const double hours = budget.atom_steps / md::kMdAtomStepsPerSecond / 3600.0;
+      fmt::print("{}: ok ({:.4g} atoms, {} steps, about {} of memory, {:.3g} atom-steps, about {:.3g} h on one "
+                 "core at {:.2g} atom-steps/s)\n",
+                 args->deck, budget.atoms, config.steps, format_bytes(budget.bytes), budget.atom_steps, hours,
+                 md::kMdAtomStepsPerSecond);
       return;
     }
     std::string out = args->out;
     if (out.empty()) out = "run-" + std::filesystem::path(args->deck).stem().string();
     if (std::error_code ec; std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
       throw InputError(fmt::format("--out {}: exists and is not a directory", out));
+    if ((args->lammps || args->lammps_write_only) && config.jet) {
+      run_jet_lammps(config, out, args->lammps_write_only, args->ranks);
+      return;
+    }
     if (args->lammps || args->lammps_write_only) {
       run_bar_lammps(args->deck, config, out, args->lammps_write_only, args->ranks);
       return;

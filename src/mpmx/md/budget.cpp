@@ -29,14 +29,20 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
   MdBudget b;
   const double a = c.lattice_constant, reach = cutoff + c.options.skin;
   double n[3];
+  double filled = 1.0;  // the part of the cells that holds atoms
   if (c.bar) {
     n[0] = c.bar_config.cells_x, n[1] = n[2] = c.bar_config.cells_yz;
     b.size_key = "bar.cells_x and bar.cells_yz";
+  } else if (c.jet) {
+    const JetConfig& j = c.jet_config;
+    n[0] = j.nx(), n[1] = j.ny(), n[2] = j.nz();
+    filled = 1.0 - j.notch_depth_A() / (2.0 * n[0] * a);  // the V notch: half its depth's share
+    b.size_key = "jet.cells and jet.scale";
   } else {
     for (int d = 0; d < 3; ++d) n[d] = c.cells[d];
     b.size_key = "lattice.cells";
   }
-  b.atoms = 4.0 * n[0] * n[1] * n[2];
+  b.atoms = std::round(4.0 * n[0] * n[1] * n[2] * filled);
   // Locals plus ghosts: the box grown by the reach on every side (an upper bound: the
   // bar's x has vacuum instead of images).
   const double density = 4.0 / (a * a * a);
@@ -45,10 +51,11 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
   entries = std::max(entries, b.atoms);
   const double pairs = b.atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density;
   b.bytes = kBytesFixed + kBytesPerLocal * b.atoms + kBytesPerEntry * entries + kBytesPerPair * pairs +
-            (c.bar ? kBytesPerEntryPerAtom * entries : 0.0);
+            (c.bar || c.jet ? kBytesPerEntryPerAtom * entries : 0.0);
   const double steps = static_cast<double>(c.relax_steps) + static_cast<double>(c.steps);
   b.atom_steps = b.atoms * (steps + c.scan_points);
   b.work_key = c.relax_steps > 0 ? "thermal.relax_steps + run.steps" : "run.steps";
+  if (c.jet) b.work_key = "jet.duration_ps and jet.scale";
   return b;
 }
 

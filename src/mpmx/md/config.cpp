@@ -1,6 +1,7 @@
 #include "mpmx/md/config.hpp"
 
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <limits>
@@ -98,11 +99,11 @@ MdConfig read_md_config(io::Deck& deck) {
   c.dt = run.number("dt");
   run.positive("dt", c.dt);
   run.check(c.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
-  c.steps = run.integer("steps", 0, kMax64);
+  if (!root.has("jet")) c.steps = run.integer("steps", 0, kMax64);  // a jet's follow from its duration
   c.thermo = run.integer("thermo", 100, 1, INT_MAX);
   run.choice("ensemble", {"nve"}, "nve");
   c.dump_every = run.integer("dump_every", 0, 0, INT_MAX);
-  run.check(c.dump_every == 0 || c.dump_every % c.thermo == 0, "dump_every",
+  run.check(c.dump_every == 0 || c.dump_every % c.thermo == 0 || root.has("jet"), "dump_every",
             "must be 0 (no dump) or a multiple of thermo");
   c.options.skin = run.number("skin", 1.0);
   run.non_negative("skin", c.options.skin);
@@ -146,6 +147,68 @@ MdConfig read_md_config(io::Deck& deck) {
     b.lattice_constant = c.lattice_constant;
     b.temperature = c.temperature;
     b.seed = c.seed;
+  }
+  auto jet = root.optional_table("jet");
+  if (jet.present()) {
+    run.check(!run.has("steps"), "steps",
+              "a [jet] deck sets its length by jet.duration_ps (times jet.scale); drop run.steps");
+    run.check(!run.has("thermo"), "thermo", "a [jet] deck records every jet.record_every_ps; drop run.thermo");
+    if (bar.present()) jet.error("a deck holds [bar] or [jet], not both");
+    c.jet = true;
+    JetConfig& j = c.jet_config;
+    j.scale = jet.number("scale", 1.0);
+    jet.check(j.scale > 0 && j.scale <= 10, "scale", "must lie in (0, 10]");
+    const auto cells = jet.integers("cells", 1, 100000);  // at scale 1: x (piston included), y, z
+    if (cells.size() == 3) {
+      for (int d = 0; d < 3; ++d) j.cells[d] = static_cast<int>(cells[d]);
+    } else {
+      jet.check(false, "cells", "expected [nx, ny, nz] (fcc cells at scale 1; z is not scaled)");
+    }
+    j.piston_cells = jet.integer_int("piston_cells", 1, 100000);
+    j.notch_depth_nm = jet.number("notch_depth_nm");
+    jet.non_negative("notch_depth_nm", j.notch_depth_nm);
+    j.velocity_km_s = jet.number("velocity_km_s", 2.5);
+    jet.check(j.velocity_km_s > 0 && j.velocity_km_s <= 20, "velocity_km_s", "must lie in (0, 20] km/s");
+    j.lattice_constant = c.lattice_constant;
+    j.temperature = c.temperature;
+    j.seed = c.seed;
+    if (cells.size() == 3 && j.scale > 0 && j.scale <= 10) {
+      jet.check(j.nx() >= 2 && j.ny() >= 1, "cells",
+                fmt::format("at scale {} the sample is {} x {} cells: needs at least 2 x 1", j.scale, j.nx(), j.ny()));
+      jet.check(j.npiston() >= 1 && j.npiston() < j.nx(), "piston_cells",
+                fmt::format("at scale {} the piston is {} of {} cells: needs at least 1 and fewer than the sample",
+                            j.scale, j.npiston(), j.nx()));
+      jet.check(j.notch_depth_A() < (j.nx() - j.npiston()) * c.lattice_constant, "notch_depth_nm",
+                fmt::format("at scale {} the notch ({} A) is not shallower than the block ({} A)", j.scale,
+                            j.notch_depth_A(), (j.nx() - j.npiston()) * c.lattice_constant));
+    }
+    const auto bins = jet.integers("bins", 1, 100000);
+    if (bins.size() == 2) {
+      c.jet_bins = {static_cast<int>(bins[0]), static_cast<int>(bins[1])};
+      jet.check(bins[0] * bins[1] <= 10'000'000, "bins",
+                "more than 10^7 bins: each record's tables would not fit (400 x 50 is the seed's)");
+    } else {
+      jet.check(false, "bins", "expected [nx, ny] (bins over the sample's x and y)");
+    }
+    const double duration = jet.number("duration_ps");
+    jet.positive("duration_ps", duration);
+    const double every = jet.number("record_every_ps");
+    jet.positive("record_every_ps", every);
+    if (duration > 0 && every > 0 && c.dt > 0 && j.scale > 0) {
+      const double steps = j.scale * duration / c.dt, per = j.scale * every / c.dt;
+      jet.check(steps < 1e15, "duration_ps", fmt::format("times the scale is {:.3g} steps: too many", steps));
+      jet.check(per >= 1 && per < INT_MAX, "record_every_ps",
+                fmt::format("times the scale is {:.6g} steps of run.dt: needs 1 to 2^31 - 1 (rounded)", per));
+      if (steps < 1e15 && per >= 1 && per < INT_MAX) {
+        c.steps = std::llround(steps);
+        c.jet_every = std::llround(per);
+        jet.check(c.steps % c.jet_every == 0, "record_every_ps",
+                  fmt::format("{} steps per record does not divide the run's {} steps", c.jet_every, c.steps));
+        c.thermo = c.jet_every;
+        run.check(c.dump_every % c.jet_every == 0, "dump_every",
+                  fmt::format("must be 0 (no dump) or a multiple of the {} steps per record", c.jet_every));
+      }
+    }
   }
   deck.finish();
   return c;

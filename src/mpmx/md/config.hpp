@@ -9,6 +9,7 @@
 #include "mpmx/io/deck.hpp"
 #include "mpmx/md/bar.hpp"
 #include "mpmx/md/box.hpp"
+#include "mpmx/md/jet.hpp"
 #include "mpmx/md/potential/potential.hpp"
 #include "mpmx/md/system.hpp"
 
@@ -36,6 +37,12 @@ struct MdConfig {
   bool bar = false;
   BarConfig bar_config;
   std::int64_t bar_every = 100;
+  // Optional direct-MD copper jet ([jet], sec. 7.1): run.steps and the record interval
+  // follow from jet.duration_ps and jet.record_every_ps times the scale.
+  bool jet = false;
+  JetConfig jet_config;
+  std::array<int, 2> jet_bins{400, 50};
+  std::int64_t jet_every = 1000;  // steps between records (bins, front)
   std::string deck_file;
 };
 

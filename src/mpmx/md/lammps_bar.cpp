@@ -31,8 +31,9 @@ std::string lammps_path(const std::string& file) {
   return p;
 }
 
-// pair_style and pair_coeff lines for the potential mpmx uses.
-std::string pair_lines(const PotentialSpec& spec, const Potential& pot) {
+}  // namespace
+
+std::string lammps_pair_lines(const PotentialSpec& spec, const Potential& pot) {
   if (spec.style == "eam") {
     const Eam* eam = pot.eam();
     const std::string file = lammps_path(spec.file);
@@ -51,21 +52,21 @@ std::string pair_lines(const PotentialSpec& spec, const Potential& pot) {
   if (spec.style == "lj")
     return fmt::format("pair_style lj/cut {:.17g}\npair_coeff * * {:.17g} {:.17g}\n{}", spec.cutoff, spec.epsilon,
                        spec.sigma, spec.shift ? "pair_modify shift yes\n" : "");
-  throw InputError(fmt::format("potential style '{}': the LAMMPS bar route supports eam (setfl, fs, funcfl) and "
+  throw InputError(fmt::format("potential style '{}': the LAMMPS route supports eam (setfl, fs, funcfl) and "
                                "lj only",
                                spec.style));
 }
 
-void write_data(const System& sys, const std::string& path) {
+void write_lammps_data(const System& sys, const std::string& path, const std::string& title) {
   const Box& b = sys.box();
   if (b.xy != 0 || b.xz != 0 || b.yz != 0)
-    throw InputError(fmt::format("bar box tilt ({}, {}, {}): the LAMMPS bar route needs an orthogonal box", b.xy,
+    throw InputError(fmt::format("box tilt ({}, {}, {}): the LAMMPS route needs an orthogonal box", b.xy,
                                  b.xz, b.yz));
   const Atoms a = sys.snapshot();  // positions in the box, on-step velocities
   const auto& mass = sys.type_mass();
   std::ofstream d(path);
   if (!d) throw RunError(fmt::format("cannot write {}", path));
-  d << fmt::format("mpmx {} direct-MD bar, step {} (atom_style atomic, metal units)\n\n", MPMX_VERSION, sys.step());
+  d << fmt::format("mpmx {} {}, step {} (atom_style atomic, metal units)\n\n", MPMX_VERSION, title, sys.step());
   d << fmt::format("{} atoms\n{} atom types\n\n", a.size(), mass.size());
   d << fmt::format("0 {:.17g} xlo xhi\n0 {:.17g} ylo yhi\n0 {:.17g} zlo zhi\n\nMasses\n\n", b.lx, b.ly, b.lz);
   for (std::size_t t = 0; t < mass.size(); ++t) d << fmt::format("{} {:.17g}\n", t + 1, mass[t]);
@@ -77,6 +78,8 @@ void write_data(const System& sys, const std::string& path) {
     d << fmt::format("{} {:.17g} {:.17g} {:.17g}\n", a.id[i], a.vx[i], a.vy[i], a.vz[i]);
   if (!d) throw RunError(fmt::format("error writing {}", path));
 }
+
+namespace {
 
 std::string shell_quote(const std::string& s) {
   std::string q = "'";
@@ -121,9 +124,9 @@ void write_lammps_bar(const Bar& bar, const PotentialSpec& spec, double dt, std:
     throw InputError(fmt::format("[bar] piston_velocity = {}: the LAMMPS route needs fixed walls (LAMMPS's "
                                  "wall/reflect mirrors v_x -> -v_x, a moving piston 2 v_w - v_x)",
                                  w.v_lo));
-  const std::string pair = pair_lines(spec, sys.potential());
+  const std::string pair = lammps_pair_lines(spec, sys.potential());
   fs::create_directories(dir);
-  write_data(sys, (fs::path(dir) / kLammpsBarData).string());
+  write_lammps_data(sys, (fs::path(dir) / kLammpsBarData).string(), "direct-MD bar");
 
   // Slab stress exactly as slab_stress(x0, x1) defines it: bin = floor((x - lo) / width)
   // in the same double arithmetic (an atom-style variable, not bin/1d, whose bound
@@ -185,7 +188,7 @@ void write_lammps_bar(const Bar& bar, const PotentialSpec& spec, double dt, std:
   if (!in) throw RunError(fmt::format("error writing {}", (fs::path(dir) / kLammpsBarInput).string()));
 }
 
-LammpsRun run_lammps(const std::string& dir, int ranks) {
+LammpsRun run_lammps(const std::string& dir, int ranks, const std::string& input, const std::string& output) {
   if (ranks < 1) throw InputError(fmt::format("--ranks {}: must be >= 1", ranks));
   if (!on_path("lmp"))
     throw RunError("lmp (LAMMPS) is not on PATH: install it (Debian: apt-get install lammps) or run the inputs "
@@ -198,9 +201,9 @@ LammpsRun run_lammps(const std::string& dir, int ranks) {
     if (geteuid() == 0) launcher = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ";
     launcher += fmt::format("mpirun -np {} ", r.ranks);
   }
-  r.command = fmt::format("{}lmp -in {} -log {} -screen none", launcher, kLammpsBarInput, kLammpsBarLog);
+  r.command = fmt::format("{}lmp -in {} -log {} -screen none", launcher, input, kLammpsBarLog);
   std::error_code ec;
-  fs::remove(fs::path(dir) / kLammpsBarStress, ec);  // no stale output read back after a failure
+  fs::remove(fs::path(dir) / output, ec);  // no stale output read back after a failure
   const std::string full = fmt::format("cd {} && {} > lmp.out 2>&1", shell_quote(dir), r.command);
   const int status = std::system(full.c_str());
   const int code = status == -1 ? -1 : WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

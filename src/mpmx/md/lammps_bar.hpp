@@ -31,15 +31,23 @@ inline constexpr const char* kLammpsBarLog = "log.lammps";
 void write_lammps_bar(const Bar& bar, const PotentialSpec& spec, double dt, std::int64_t steps,
                       std::int64_t every, const std::string& dir);
 
+// Shared with the jet route (lammps_jet.hpp). pair_style and pair_coeff lines for the
+// potential mpmx uses (eam setfl, fs, funcfl; lj); InputError for other styles.
+std::string lammps_pair_lines(const PotentialSpec& spec, const Potential& pot);
+// The system's atoms (positions in the box, on-step velocities), box and masses as a
+// LAMMPS data file (atom_style atomic); `title` goes into its first line.
+void write_lammps_data(const System& sys, const std::string& path, const std::string& title);
+
 struct LammpsRun {
   std::string command;  // as run, in `dir`
   int ranks = 1;        // 1 when mpirun was asked for but is not installed
 };
 
-// Runs `lmp -in in.bar` in `dir` (under `mpirun -np ranks` when ranks > 1 and mpirun is
+// Runs `lmp -in INPUT` (in.bar unless told) in `dir` (under `mpirun -np ranks` when ranks > 1 and mpirun is
 // on PATH). Throws RunError naming the command, its exit status and the end of
 // log.lammps when lmp is missing or fails.
-LammpsRun run_lammps(const std::string& dir, int ranks = 1);
+LammpsRun run_lammps(const std::string& dir, int ranks = 1, const std::string& input = kLammpsBarInput,
+                     const std::string& output = kLammpsBarStress);
 
 // One output step of the slab stress: `bins` tensors (GPa, Cauchy sign, row-major).
 struct BarStressSample {

@@ -15,6 +15,7 @@
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/md/bar.hpp"
 #include "mpmx/md/dump.hpp"
+#include "mpmx/md/jet_run.hpp"
 #include "mpmx/md/lattice.hpp"
 #include "mpmx/md/system.hpp"
 
@@ -141,10 +142,10 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   namespace fs = std::filesystem;
   const auto t0 = std::chrono::steady_clock::now();
   const Potential pot(c.potential);
-  if (c.bar) {
+  if (c.bar || c.jet) {
     MdRunSummary r;
     toml::table rec;
-    const std::string stopped = run_bar(c, pot, out_dir, r, rec);
+    const std::string stopped = c.bar ? run_bar(c, pot, out_dir, r, rec) : run_jet(c, pot, out_dir, r, rec, quiet);
     r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     write_record(c, pot, deck_echo, r, std::move(rec), out_dir, stopped);
     return r;

@@ -130,6 +130,7 @@ void System::advance(int nsteps, const Mat3& grad, double dt) {
   const bool affine = opt_.deformation == Deformation::affine;
   const bool deforming = std::any_of(g.begin(), g.end(), [](double v) { return v != 0.0; });
   kick(atoms_, mass_, dt, 0.5);  // eq. 5.4
+  hold_frozen();
   for (int s = 0; s < nsteps; ++s) {
     drift(atoms_, dt, g, affine && deforming);  // eq. 5.5
     if (walls_.enabled) reflect(dt);
@@ -140,7 +141,19 @@ void System::advance(int nsteps, const Mat3& grad, double dt) {
     ++step_;
     time_ += dt;
     kick(atoms_, mass_, dt, s + 1 < nsteps ? 1.0 : 0.5);  // eq. 5.3; last: eq. 5.6
+    hold_frozen();
   }
+}
+
+void System::set_frozen_ids(std::int64_t max_id) {
+  frozen_ids_ = max_id;
+  hold_frozen();
+}
+
+void System::hold_frozen() {
+  if (frozen_ids_ <= 0) return;
+  for (std::size_t i = 0; i < atoms_.size(); ++i)
+    if (atoms_.id[i] <= frozen_ids_) atoms_.vx[i] = atoms_.vy[i] = atoms_.vz[i] = 0.0;
 }
 
 void System::reflect(double dt) {

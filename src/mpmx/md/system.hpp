@@ -101,6 +101,11 @@ class System {
   std::int64_t neighbor_builds() const { return nb_.builds; }
   const Mat3& gradient() const { return g_; }
   void set_walls(const Walls& w) { walls_ = w; }
+  // Atoms with id <= max_id are held at rest (a rigid piston, sec. 7.1): their
+  // velocities are zeroed after every kick, so they never move; their forces still
+  // count in the virial. 0: none.
+  void set_frozen_ids(std::int64_t max_id);
+  std::int64_t frozen_ids() const { return frozen_ids_; }
   const Walls& walls() const { return walls_; }
   // Forces for the current state (recomputed if atoms or box were edited).
   void refresh();
@@ -117,6 +122,7 @@ class System {
   void compute_forces(bool tally = true);
   void check_finite() const;
   void reflect(double dt);
+  void hold_frozen();
 
   Atoms atoms_;
   Box box_;
@@ -129,6 +135,7 @@ class System {
   RngStream rng_;
   Mat3 g_{};
   Walls walls_;
+  std::int64_t frozen_ids_ = 0;
   std::int64_t step_ = 0;
   double time_ = 0;
   bool valid_ = false;
