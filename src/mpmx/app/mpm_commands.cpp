@@ -1,6 +1,8 @@
 // `mpmx run DECK --out DIR` and `mpmx check DECK`.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -9,7 +11,9 @@
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/io/mpm_deck.hpp"
+#include "mpmx/md/budget.hpp"
 #include "mpmx/mpm/run.hpp"
+#include "mpmx/mpm/setup.hpp"
 
 namespace mpmx::app {
 
@@ -77,6 +81,18 @@ void add_mpm_commands(CLI::App& app) {
       fmt::print("{}: ok (case {}, {}-D, {} cells, {} points per cell, {} bodies, {} steps, scheme {}, material {})\n",
                  args->deck, cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), cfg.bodies.size(),
                  cfg.steps(), mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
+    }
+    // A multiscale deck's work: every point's box for every MD step, before it runs.
+    if (cfg.material.model == "md_closure") {
+      const auto& md = cfg.material.md;
+      const double points = static_cast<double>(mpm::count_points(cfg));
+      const double atom_steps =
+          points * md.atoms_per_point() * (static_cast<double>(md.relax_steps) + cfg.steps() * md.md_steps(cfg.dt));
+      const double per_core = md::kMdAtomStepsPerSecond, cores = std::thread::hardware_concurrency();
+      fmt::print("  {:.0f} points x {} atoms: {:.3g} atom-steps, about {:.3g} hours on this machine's {} cores at "
+                 "{:.0e} atom-steps/s per core ({:.3g} core-hours)\n",
+                 points, md.atoms_per_point(), atom_steps, atom_steps / (per_core * std::max(1.0, cores)) / 3600.0,
+                 cores, per_core, atom_steps / per_core / 3600.0);
     }
   });
 }

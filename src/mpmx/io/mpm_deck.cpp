@@ -348,7 +348,7 @@ MpmConfig read(Deck& deck) {
   Section r = root.optional_table("reference");
   // 2-D and 3-D decks compare with a 1-D exact solution along the initial profile's
   // normal (riemann_isothermal) or with the manufactured solution.
-  const std::vector<std::string> nd_references{"riemann_isothermal", "manufactured"};
+  const std::vector<std::string> nd_references{"riemann_isothermal", "manufactured", "direct_md"};
   if (r.present()) {
     c.reference.name = r.choice("name", dim == 1 ? kReferences : nd_references);
     if (c.reference.name == "manufactured" && !c.manufactured.on)
@@ -370,7 +370,10 @@ MpmConfig read(Deck& deck) {
       r.check(units::unit_system(c.units).has_value(), "name",
               fmt::format("direct_md needs case.units to be one of {} (the MD side is in Angstrom, ps, GPa)",
                           units::unit_system_names()));
-      if (c.reference.fields.empty()) c.reference.fields = {"stress"};
+      if (c.reference.fields.empty() && dim == 1) c.reference.fields = {"stress"};
+      if (dim > 1 && !c.reference.fields.empty())
+        r.check(false, "fields", "a 2-D or 3-D direct_md comparison is eq. 7.12 on sigma_xx; it takes no fields");
+      if (dim > 1) r.check(!c.reference.times.empty(), "times", "direct_md compares at the times listed here");
     } else if (r.has("file")) {
       r.check(false, "file", "only reference direct_md reads a file");
     }

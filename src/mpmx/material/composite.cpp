@@ -13,6 +13,8 @@ Points<Dim> block(const Points<Dim>& p, std::size_t begin, std::size_t n) {
   for (auto& a : b.stress) a += begin;
   for (auto& a : b.strain) a += begin;
   for (auto& a : b.length) a += begin;
+  for (auto& a : b.viscous)
+    if (a) a += begin;
   b.mass += begin;
   b.volume += begin;
   b.volume0 += begin;

@@ -135,14 +135,18 @@ void MdClosure<Dim>::update_stress(const Points<Dim>& p, double dt) {
     // Eq. 7.11 per box, on the box's thread: the work of the stress the continuum used
     // this step (the box's at the start, in its frame) over the rate of deformation.
     constexpr double GPa_A3_in_eV = 1.0 / 160.21766208;  // 1 GPa x 1 A^3 in eV
+    // The continuum's stress on the point this step, in the point's frame: the box's turned
+    // by R, plus the artificial viscous stress where it is on (GPa).
     batch_.for_each(n, [&](std::size_t q) {
       md::System& box = boxes_[q];
-      const md::Mat3 sigma0 = stress_[q];
+      Mat3d sigma = as_matrix(rotation_[q]) * as_matrix(stress_[q]) * as_matrix(rotation_[q]).transpose();
+      for (int a = 0; a < Dim; ++a)
+        for (int b = 0; b < Dim; ++b)
+          if (p.viscous[a * Dim + b]) sigma(a, b) += p.viscous[a * Dim + b][q] * cfg_.units.stress_GPa;
       const double e0 = box.potential_energy() + box.thermal_kinetic_energy();
       const md::Mat3 g = md::upper_triangular(gradients_[q]);  // the box's gradient (eq. 5.20)
-      double power = 0.0;                                        // sigma : D, GPa/ps
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) power += sigma0[3 * a + b] * 0.5 * (g[3 * a + b] + g[3 * b + a]);
+      const Mat3d L = as_matrix(gradients_[q]);
+      const double power = (sigma.array() * (0.5 * (L + L.transpose())).array()).sum();  // sigma : D, GPa/ps
       const double v0 = box.box().volume();
       multiscale::advance_box(box, g, steps, cfg_.dt, cfg_.sample, stress_[q]);
       const double v1 = box.box().volume();

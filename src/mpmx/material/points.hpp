@@ -20,6 +20,9 @@ struct Points {
   const double* volume = nullptr;              // current volume (after this step's update)
   const double* volume0 = nullptr;             // initial volume
   std::array<const double*, Dim> length{};     // domain edge per axis (viscosity's length)
+  // The tensor artificial viscous stress the forces used this step (eqs. 7.8-7.10),
+  // null when off: a law that keeps an energy account sees the continuum's whole work.
+  std::array<const double*, tensor> viscous{};
 
   std::size_t size() const { return n; }
   double density(std::size_t q) const { return mass[q] / volume[q]; }

@@ -13,6 +13,7 @@ material::Points<Dim> points(Particles<Dim>& p) {
     v.grad_v[c] = p.grad_v[c].data();
     v.stress[c] = p.stress[c].data();
     v.strain[c] = p.strain[c].data();
+    if (!p.viscous[c].empty()) v.viscous[c] = p.viscous[c].data();
   }
   v.mass = p.mass.data();
   v.volume = p.volume.data();

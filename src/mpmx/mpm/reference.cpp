@@ -137,6 +137,7 @@ std::unique_ptr<Reference> make_reference(const MpmConfig& c) {
   auto need = [&](bool ok, const char* what) {
     if (!ok) throw InputError("reference '" + name + "': " + what);
   };
+  if (name == "direct_md" && c.dim > 1) return nullptr;  // the jet's maps (mpm/run.cpp)
   if (name == "direct_md") {
     const auto u = units::unit_system(c.units);
     need(u.has_value(), "needs case.units to name a unit system");

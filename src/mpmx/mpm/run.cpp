@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <typeinfo>
@@ -27,6 +28,7 @@
 #include "mpmx/mpm/output.hpp"
 #include "mpmx/mpm/points.hpp"
 #include "mpmx/mpm/vtk_output.hpp"
+#include "mpmx/reference/jet_history.hpp"
 #include "mpmx/material/linear_elastic.hpp"
 #include "mpmx/material/md_closure_model.hpp"
 #include "mpmx/mpm/reference.hpp"
@@ -183,6 +185,17 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   const auto* closure = dynamic_cast<const material::MdClosure<Dim>*>(s.material.get());
   r.threads = closure ? closure->threads() : 1;
   const auto ref = make_reference(c);  // 2-D, 3-D: a 1-D solution along the profile's normal
+  // 2-D and 3-D direct MD: the binned maps of a jet run, each point against its bin.
+  std::optional<reference::JetHistory> jet;
+  std::optional<units::UnitSystem> jet_units;
+  if (Dim > 1 && c.reference.name == "direct_md") {
+    jet = reference::JetHistory::read(c.reference.file);
+    jet_units = units::unit_system(c.units);
+    for (double t : c.reference.times)
+      if (!jet->has(t * jet_units->time_ps))
+        throw InputError(fmt::format("{} has no record at t = {} ({} ps); its last is at {} ps", c.reference.file, t,
+                                     t * jet_units->time_ps, jet->last_time_ps()));
+  }
   const bool track_front = c.reference.name == "shock_front";
   const std::int64_t steps = c.steps();
   const double dt = c.dt;
@@ -326,6 +339,21 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     if constexpr (Dim > 1) {
       if (s.manufactured) {
         for (const auto& f : c.reference.fields) record_error(f, s.manufactured->displacement_error(p, s.time), 0.0);
+        return;
+      }
+      if (jet) {  // eq. 7.12 on sigma_xx; the continuum's x = 0 is the piston's face
+        reference::Eq712 now;
+        const double t_ps = s.time * jet_units->time_ps, L = jet_units->length_A;
+        for (std::size_t q = 0; q < p.size(); ++q) {
+          const double md = jet->sxx(t_ps, jet->piston_face_A() + L * p.x[0][q], L * p.x[1][q]);
+          if (!std::isfinite(md)) continue;  // outside the bins, or an empty bin
+          now.add(p.stress[0][q], md / jet_units->stress_GPa);
+          eq712.add(p.stress[0][q], md / jet_units->stress_GPa);
+        }
+        toml::table at;
+        at.insert("time", s.time);
+        at.insert("error", now.value());
+        rec.append("errors_by_time.stress_vs_direct_md", std::move(at));
         return;
       }
       if (!ref || !ref->valid(s.time)) return;

@@ -37,6 +37,47 @@ bool Body::contains(const std::array<double, 3>& x, int dim) const {
   return false;
 }
 
+// Points per axis over the whole grid; a point is kept when the deck has no bodies or
+// its centre lies in a body and in no removing region. keep(x, body) for each, in grid
+// order (body -1: no bodies).
+template <typename Keep>
+void place_points(const MpmConfig& c, Keep&& keep) {
+  const int dim = c.dim;
+  std::array<double, 3> l{};
+  std::array<std::int64_t, 3> count{1, 1, 1};
+  std::int64_t total = 1;
+  for (int d = 0; d < dim; ++d) {
+    l[d] = (c.upper_all[d] - c.lower_all[d]) / c.cells_all[d] / c.per_cell_all[d];
+    count[d] = static_cast<std::int64_t>(c.cells_all[d]) * c.per_cell_all[d];
+    total *= count[d];
+  }
+  for (std::int64_t k = 0; k < total; ++k) {
+    std::array<double, 3> x{};
+    std::int64_t r = k;
+    for (int d = 0; d < dim; ++d) {
+      x[d] = c.lower_all[d] + (static_cast<double>(r % count[d]) + 0.5) * l[d];
+      r /= count[d];
+    }
+    int body = -1;
+    for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+      if (!c.bodies[b].contains(x, dim)) continue;
+      if (c.bodies[b].remove) {
+        body = -2;
+        break;
+      }
+      if (body == -1) body = static_cast<int>(b);
+    }
+    if (!c.bodies.empty() && body < 0) continue;
+    keep(x, body);
+  }
+}
+
+std::int64_t count_points(const MpmConfig& c) {
+  std::int64_t n = 0;
+  place_points(c, [&](const std::array<double, 3>&, int) { ++n; });
+  return n;
+}
+
 template <int Dim>
 State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads) {
   State<Dim> s;
@@ -51,38 +92,14 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
   s.viscosity = c.viscosity;
   s.boundary = c.boundary;
 
-  // Points per axis over the whole grid; a point is kept when the deck has no bodies or
-  // its centre lies in a body and in no removing region.
-  std::array<double, Dim> l;
-  std::array<std::int64_t, Dim> count;
-  std::int64_t total = 1;
-  for (int d = 0; d < Dim; ++d) {
-    l[d] = s.grid.dx[d] / c.per_cell_all[d];
-    count[d] = static_cast<std::int64_t>(n[d]) * c.per_cell_all[d];
-    total *= count[d];
-  }
   std::vector<std::array<double, 3>> at;
   std::vector<int> owner;
-  for (std::int64_t k = 0; k < total; ++k) {
-    std::array<double, 3> x{};
-    std::int64_t r = k;
-    for (int d = 0; d < Dim; ++d) {
-      x[d] = lo[d] + (static_cast<double>(r % count[d]) + 0.5) * l[d];
-      r /= count[d];
-    }
-    int body = -1;
-    for (std::size_t b = 0; b < c.bodies.size(); ++b) {
-      if (!c.bodies[b].contains(x, Dim)) continue;
-      if (c.bodies[b].remove) {
-        body = -2;
-        break;
-      }
-      if (body == -1) body = static_cast<int>(b);
-    }
-    if (!c.bodies.empty() && body < 0) continue;
+  std::array<double, Dim> l;
+  for (int d = 0; d < Dim; ++d) l[d] = s.grid.dx[d] / c.per_cell_all[d];
+  place_points(c, [&](const std::array<double, 3>& x, int body) {
     at.push_back(x);
     owner.push_back(body);
-  }
+  });
   if (at.empty()) throw InputError("no material points: no [[body]] region holds a point centre of the grid");
 
   // The laws in play: the deck's [material] first, then each body's own. Points are
