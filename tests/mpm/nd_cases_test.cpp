@@ -59,19 +59,21 @@ TEST(N3, TwoDisksKeepMomentumRoundOffAndRebound) {
   }
 }
 
+// N5 at the catalog's 20^3 cells (MUSL): mpm within 0.8% of E0 at t = 3.5 (measured
+// -0.54%); ddmp -1.54%, held as a bound (docs/validation.md).
 TEST(N5, TwoSpheresKeepMomentumRoundOffAndRebound) {
-  const auto c = test::deck_with(test::example("N5_two_spheres_mpm.toml"), [](toml::table& t) {
-    t["grid"].as_table()->insert_or_assign("cells", toml::array{12, 12, 12});
-    t["time"].as_table()->insert_or_assign("dt", 0.02);
-  });
-  const auto r = test::run_dim<3>(c);
-  EXPECT_LT(r.momentum_error(), 1e-12 * r.momentum_scale);
-  std::vector<bool> first(r.state.particles.size());
-  const auto s0 = mpm::make_state<3>(c);
-  for (std::size_t q = 0; q < first.size(); ++q) first[q] = s0.particles.x[0][q] + s0.particles.x[1][q] < 0.0;
-  EXPECT_LT(approach_speed(r.state.particles, first), -0.05);
-  const double e0 = r.kinetic_initial;
-  EXPECT_LT(std::abs(total_energy(r) - e0) / e0, 0.08);
+  for (const auto& [scheme, bound] : {std::pair{"mpm", 0.008}, {"ddmp", 0.02}}) {
+    const auto c = test::deck(test::example(std::string("N5_two_spheres_") + scheme + ".toml"));
+    ASSERT_EQ(c.cells_all[0], 20);
+    const auto r = test::run_dim<3>(c);
+    EXPECT_LT(r.momentum_error(), 1e-12 * r.momentum_scale) << scheme;
+    std::vector<bool> first(r.state.particles.size());
+    const auto s0 = mpm::make_state<3>(c);
+    for (std::size_t q = 0; q < first.size(); ++q) first[q] = s0.particles.x[0][q] + s0.particles.x[1][q] < 0.0;
+    EXPECT_LT(approach_speed(r.state.particles, first), -0.05) << scheme;
+    const double e0 = r.kinetic_initial;
+    EXPECT_LT(std::abs(total_energy(r) - e0) / e0, bound) << scheme;
+  }
 }
 
 // N6: shock speed from the front's positions at the two records, stress on the plateau
