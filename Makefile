@@ -17,25 +17,25 @@ build: deps
 	@cmake --build $(BUILD) -j $(JOBS)
 
 # Release build with every label, then the sanitizer build (long validation runs are
-# labelled slow and stay in the Release pass only). The sanitizer build is tuned for the
-# machine (-march=native), so that it checks the MD kernels written for it (AVX2); the 1-D
-# kernels hold every vector path in both builds (CMakeLists.txt), and both passes run
-# their tests on each path this machine has.
+# labelled slow and stay in the Release pass only). Both are portable builds: the 1-D and
+# MD vector kernels hold every vector path in any build (CMakeLists.txt), and both passes
+# run their tests on each path this machine has (fused_path_test, md_eam_isa_test).
 test: test-release test-sanitize
 
 test-release: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 
 test-sanitize: deps
-	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMPMX_SANITIZE=ON -DMPMX_NATIVE=ON -DMPMX_BUILD_BENCH=OFF >/dev/null
+	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMPMX_SANITIZE=ON -DMPMX_NATIVE=OFF -DMPMX_BUILD_BENCH=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS) -LE 'slow|crosscheck' $(CTEST_ARGS)
 
 demo: build
 	@scripts/demo $(BUILD)/mpmx
 
-# -march=native for the MD kernels; the 1-D kernels pick their path at run time, and the
-# continuum bench times each path this machine has.
+# -march=native for the code outside the vector kernels; the 1-D and MD kernels pick
+# their path at run time whatever the build, and their benches time each path this
+# machine has.
 bench: deps
 	@cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DMPMX_NATIVE=ON >/dev/null
 	@cmake --build $(BENCH_BUILD) -j $(JOBS)

@@ -13,6 +13,7 @@
 #include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/md/potential/eam_one_type.hpp"
 #include "mpmx/mpm/fused1d/isa.hpp"
 #include "mpmx/core/exit_codes.hpp"
 
@@ -50,9 +51,11 @@ const char* unknown_command(CLI::App& app, int argc, char** argv) {
 int main(int argc, char** argv) {
   namespace code = mpmx::exit_code;
   CLI::App app{"mpmx " MPMX_VERSION ": material point method + molecular dynamics multiscale solver"};
-  // With the vector paths of the 1-D kernels: those built in, those this machine runs, the one taken.
+  // With the vector paths of the 1-D and MD kernels: those built in, those this machine
+  // runs, the one taken.
   app.set_version_flag("--version", [] {
-    return std::string("mpmx ") + MPMX_VERSION + "\n" + mpmx::mpm::shape::isa_summary();
+    return std::string("mpmx ") + MPMX_VERSION + "\n" + mpmx::mpm::shape::isa_summary() + "\n" +
+           mpmx::md::eam_isa_summary();
   });
   app.require_subcommand(1);
   app.footer("Exit status: 0 done, 1 internal error, 2 bad input, 3 run stopped by the physics (partial "

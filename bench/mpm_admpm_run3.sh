@@ -14,8 +14,8 @@ ADMPM_SECONDS=${ADMPM_SECONDS:-25.7}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 version=$("$MPMX" --version)
-chosen=$(sed -n 's/.*; chosen: \([a-z0-9_]*\).*/\1/p' <<<"$version")
-ISAS=${ISAS:-$(sed -n 's/.*; this machine: \([^;]*\);.*/\1/p' <<<"$version")}
+chosen=$(sed -n 's/^1-D kernels: .*; chosen: \([a-z0-9_]*\).*/\1/p' <<<"$version")
+ISAS=${ISAS:-$(sed -n 's/^1-D kernels: .*; this machine: \([^;]*\);.*/\1/p' <<<"$version")}
 wall() {  # wall time of one run from run.json
   MPMX_ISA=$2 OMP_NUM_THREADS=1 "$MPMX" run "$1" --out "$tmp/r" --quiet --no-plot >/dev/null
   /usr/bin/python3 -c "import json;print(json.load(open('$tmp/r/run.json'))['wall_seconds'])"

@@ -46,14 +46,10 @@ class Eam {
   // Per type pair (ti * ntypes + tj): spline offsets (in doubles) of the density that
   // j gives i, and of z2r; per type: F offset.
   std::vector<int> rho_off_, z2r_off_, frho_off_;
-  // One-type fast path: per knot, the density-pass record (rho c3..c6) and the
-  // force-pass record (rho c0..c2, z2r c0..c6).
+  // One-type fast path (eam_one_type.hpp): per knot, the density-pass record (rho
+  // c3..c6) and the force-pass record (rho c0..c2, z2r c0..c6).
   std::vector<double> rho1_, pair1_;
   std::vector<float> rho1f_, pair1f_;
-  template <class Real, bool PerAtom, bool Tally>
-  ForceSums compute_one_type(const Neighbors& nb, ForceWork& w, const Real* rho_tab, const Real* pair_tab) const;
-  template <class Real>
-  ForceSums dispatch_one_type(const Neighbors& nb, ForceWork& w, const Real* rho_tab, const Real* pair_tab) const;
 };
 
 // LAMMPS's interpolate(): 7 coefficients per knot for values f[1..n] on spacing delta.

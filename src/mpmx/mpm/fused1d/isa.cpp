@@ -98,6 +98,10 @@ namespace fused {
 void isa_prepare() { from_environment(); }
 }  // namespace fused
 
+void isa_prepare() { from_environment(); }
+
+std::string isa_name(int64_t target) { return name_of(target); }
+
 std::vector<std::string> isa_compiled() {
   std::vector<std::string> out;
   for (const int64_t t : targets_in(HWY_TARGETS)) out.push_back(name_of(t));

@@ -1,9 +1,11 @@
 #pragma once
-// Which vector path the fused 1-D kernels take. One build holds a path per instruction set
+// Which vector path the fused 1-D kernels (and the MD kernels, md/potential/eam_one_type)
+// take. One build holds a path per instruction set
 // (Google Highway's dynamic dispatch) and runs the best this machine has, or the one
 // named by the environment variable MPMX_ISA (read once, at the first kernel call): a
 // Highway target in lower case, "avx512" for AVX3. Paths are named widest first:
 // "avx512", "avx2", "sse4", "scalar" on x86.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,11 @@ std::string isa_chosen();
 void isa_use(const std::string& name);
 // The path the kernels' dispatch takes now, as the kernels themselves report it (tests).
 std::string isa_dispatched();
+// Applies MPMX_ISA (once, InputError as above at every call): each kernel entry point
+// that dispatches calls it first, so that its first dispatch already takes that path.
+void isa_prepare();
+// A Highway target's name as MPMX_ISA spells it.
+std::string isa_name(int64_t target);
 // "paths avx512 avx2 sse4 scalar; this machine: ...; chosen: avx512 (MPMX_ISA=...)",
 // for `mpmx --version`.
 std::string isa_summary();
