@@ -1,9 +1,13 @@
 #include "mpmx/material/md_closure.hpp"
 
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <istream>
+#include <limits>
 #include <optional>
 #include <ostream>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -29,6 +33,16 @@ MdClosureProperties properties(const md::FccEquilibrium& eq, const units::UnitSy
   return r;
 }
 
+// The record a point's box returns to every rank: its stress (GPa) and its box.
+constexpr int kRecord = 15;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// "rank r: " before a message where there are several ranks.
+std::string where() { return ranks::size() > 1 ? fmt::format("rank {}: ", ranks::rank()) : ""; }
+
 }  // namespace
 
 MdClosureProperties md_closure_properties(const md::PotentialSpec& spec, const units::UnitSystem& u) {
@@ -53,43 +67,85 @@ md::SystemOptions MdClosure::box_options() const {
 }
 
 void MdClosure::initialize(const Points<1>& p) {
-  const std::size_t n = p.size();
+  spread_ = multiscale::Spread(p.size());
+  const std::size_t first = spread_.begin(), m = spread_.count();
+  if (const char* v = std::getenv("MPMX_TEST_NAN_POINT")) nan_point_ = std::strtoull(v, nullptr, 10);
   const double a0 = props_.equilibrium.lattice_constant;
+  const auto t0 = std::chrono::steady_clock::now();
   // Each point's box built on the threads (section 6.2), then kept in point order.
-  std::vector<std::optional<md::System>> built(n);
-  batch_.for_each(n, [&](std::size_t q) {
-    md::System box(md::fcc(cfg_.cells, cfg_.cells, cfg_.cells, a0, p.strain[0][q]), pot_, box_options());
-    if (cfg_.temperature > 0) box.thermalize(cfg_.temperature, cfg_.seed, q);
-    box.advance(static_cast<int>(cfg_.relax_steps), cfg_.dt);  // zero strain rate
-    built[q].emplace(std::move(box));
-  });
-  boxes_.clear();
-  boxes_.reserve(n);
-  for (auto& b : built) boxes_.push_back(std::move(*b));
-  gradients_.assign(n, md::Mat3{});
-  stress_.resize(n);
-  for (std::size_t q = 0; q < n; ++q) {
-    stress_[q] = boxes_[q].stress_gpa();
-    p.stress[0][q] = stress_[q][0] / cfg_.units.stress_GPa;
+  std::vector<std::optional<md::System>> built(m);
+  std::optional<ranks::Failure> failed;
+  try {
+    batch_.for_each(m, [&](std::size_t k) {
+      const std::size_t q = first + k;
+      md::System box(md::fcc(cfg_.cells, cfg_.cells, cfg_.cells, a0, p.strain[0][q]), pot_, box_options());
+      if (cfg_.temperature > 0) box.thermalize(cfg_.temperature, cfg_.seed, q);
+      box.advance(static_cast<int>(cfg_.relax_steps), cfg_.dt);  // zero strain rate
+      built[k].emplace(std::move(box));
+    });
+  } catch (const std::exception& e) {
+    failed = ranks::Failure{ranks::Failure::run, fmt::format("{}building the MD boxes: {}", where(), e.what())};
   }
-  atom_steps_ = static_cast<std::int64_t>(n) * atoms_per_point() * cfg_.relax_steps;
+  boxes_.clear();
+  boxes_.reserve(m);
+  stress_.assign(m, md::Mat3{});
+  if (!failed)
+    for (std::size_t k = 0; k < m; ++k) {
+      boxes_.push_back(std::move(*built[k]));
+      stress_[k] = boxes_[k].stress_gpa();
+    }
+  gradients_.assign(m, md::Mat3{});
+  md_seconds_ += seconds_since(t0);
+  publish(p, failed, false);
+  atom_steps_ = static_cast<std::int64_t>(p.size()) * atoms_per_point() * cfg_.relax_steps;
 }
 
 void MdClosure::update_stress(const Points<1>& p, double dt) {
-  const std::size_t n = p.size();
+  const std::size_t n = p.size(), first = spread_.begin(), m = spread_.count();
   const int steps = cfg_.md_steps(dt);
   if (steps == 0)
     throw InputError(fmt::format("md_closure: the continuum step ({} ps) is not a whole number of MD "
                                  "steps of {} ps",
                                  dt * cfg_.units.time_ps, cfg_.dt));
-  for (std::size_t q = 0; q < n; ++q) gradients_[q][0] = p.grad_v[0][q] / cfg_.units.time_ps;  // 1/ps
-  batch_.advance(boxes_, gradients_, steps, cfg_.dt, cfg_.sample, stress_);
-  const double l0 = cfg_.cells * props_.equilibrium.lattice_constant;
-  for (std::size_t q = 0; q < n; ++q) {
-    p.stress[0][q] = stress_[q][0] / cfg_.units.stress_GPa;
-    p.strain[0][q] = boxes_[q].box().lx / l0 - 1.0;  // the box's engineering strain
+  for (std::size_t k = 0; k < m; ++k) gradients_[k][0] = p.grad_v[0][first + k] / cfg_.units.time_ps;  // 1/ps
+  std::optional<ranks::Failure> failed;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    batch_.advance(boxes_, gradients_, steps, cfg_.dt, cfg_.sample, stress_, first);
+  } catch (const std::exception& e) {
+    failed = ranks::Failure{ranks::Failure::run, where() + e.what()};
   }
+  md_seconds_ += seconds_since(t0);
+  if (nan_point_ && spread_.owns(*nan_point_)) stress_[*nan_point_ - first][0] = std::nan("");
+  publish(p, failed, true);
   atom_steps_ += static_cast<std::int64_t>(n) * atoms_per_point() * steps;
+}
+
+void MdClosure::publish(const Points<1>& p, std::optional<ranks::Failure> failed, bool strain) {
+  const std::size_t first = spread_.begin(), m = spread_.count();
+  std::vector<double> mine(m * kRecord, std::nan(""));
+  for (std::size_t k = 0; k < m && !failed; ++k) {
+    double* r = &mine[k * kRecord];
+    for (int c = 0; c < 9; ++c) r[c] = stress_[k][c];
+    const md::Box& b = boxes_[k].box();
+    int c = 9;
+    for (const double v : {b.lx, b.ly, b.lz, b.xy, b.xz, b.yz}) r[c++] = v;
+    for (int c = 0; c < 9; ++c)
+      if (!std::isfinite(stress_[k][c]))
+        failed = ranks::Failure{ranks::Failure::run,
+                                fmt::format("{}the MD box of material point {} gave a non-finite stress ({} GPa)",
+                                            where(), first + k, stress_[k][c])};
+  }
+  const std::vector<double> all = spread_.all(mine, kRecord);
+  if (const auto f = ranks::first_failure(failed)) {
+    ranks::mark_agreed();
+    ranks::raise(*f);
+  }
+  const double l0 = cfg_.cells * props_.equilibrium.lattice_constant;
+  for (std::size_t q = 0; q < p.size(); ++q) {
+    p.stress[0][q] = all[q * kRecord] / cfg_.units.stress_GPa;
+    if (strain) p.strain[0][q] = all[q * kRecord + 9] / l0 - 1.0;  // the box's engineering strain
+  }
 }
 
 double MdClosure::sound_speed(const Points<1>& p, std::size_t q) const {
@@ -97,10 +153,14 @@ double MdClosure::sound_speed(const Points<1>& p, std::size_t q) const {
 }
 
 void MdClosure::save(std::ostream& out) const {
-  const std::uint64_t n = boxes_.size();
+  std::ostringstream mine(std::ios::binary);
+  for (const auto& b : boxes_) b.save(mine);
+  const std::string all = ranks::gather_to_root(mine.str());  // System::save delimits each box
+  if (!ranks::root()) return;
+  const std::uint64_t n = spread_.points();
   out.write(reinterpret_cast<const char*>(&n), sizeof n);
   out.write(reinterpret_cast<const char*>(&atom_steps_), sizeof atom_steps_);
-  for (const auto& b : boxes_) b.save(out);
+  out.write(all.data(), static_cast<std::streamsize>(all.size()));
 }
 
 void MdClosure::load(std::istream& in) {
@@ -108,11 +168,17 @@ void MdClosure::load(std::istream& in) {
   in.read(reinterpret_cast<char*>(&n), sizeof n);
   in.read(reinterpret_cast<char*>(&atom_steps_), sizeof atom_steps_);
   if (!in) throw InputError("checkpoint: the MD boxes are truncated");
+  spread_ = multiscale::Spread(n);
   boxes_.clear();
-  boxes_.reserve(n);
-  for (std::uint64_t q = 0; q < n; ++q) boxes_.push_back(md::System::load(in, pot_, box_options()));
-  gradients_.assign(n, md::Mat3{});
-  stress_.assign(n, md::Mat3{});
+  boxes_.reserve(spread_.count());
+  // Every box is read (the run's own figures follow them); this rank keeps its block.
+  for (std::uint64_t q = 0; q < n; ++q) {
+    md::System box = md::System::load(in, pot_, box_options());
+    if (spread_.owns(q)) boxes_.push_back(std::move(box));
+  }
+  gradients_.assign(spread_.count(), md::Mat3{});
+  stress_.assign(spread_.count(), md::Mat3{});
+  if (const char* v = std::getenv("MPMX_TEST_NAN_POINT")) nan_point_ = std::strtoull(v, nullptr, 10);
 }
 
 }  // namespace mpmx::material

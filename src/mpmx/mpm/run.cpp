@@ -17,6 +17,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
+#include "mpmx/core/ranks.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/material/md_closure.hpp"
@@ -126,28 +127,33 @@ void check_volumes(const State<Dim>& s) {
                                  q, p.volume[q], s.step, s.time));
 }
 
-// Ctrl-C asks the step loop to write a checkpoint and stop; a second one kills.
+// Ctrl-C asks the step loop to write a checkpoint and stop; a second one kills. Under
+// MPI, SIGTERM does the same: mpirun turns a Ctrl-C into SIGTERM to every rank, and
+// a batch system's time limit sends it too.
 volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void on_interrupt(int) {
+extern "C" void on_interrupt(int sig) {
   g_interrupted = 1;
-  std::signal(SIGINT, SIG_DFL);
+  std::signal(sig, SIG_DFL);
 }
 class InterruptGuard {
  public:
-  explicit InterruptGuard(bool active) : active_(active) {
+  explicit InterruptGuard(bool active) : active_(active), term_(active && ranks::active()) {
     if (!active_) return;
     g_interrupted = 0;
     previous_ = std::signal(SIGINT, on_interrupt);
+    if (term_) previous_term_ = std::signal(SIGTERM, on_interrupt);
   }
   ~InterruptGuard() {
     if (active_) std::signal(SIGINT, previous_);
+    if (term_) std::signal(SIGTERM, previous_term_);
   }
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
 
  private:
-  bool active_;
+  bool active_, term_;
   void (*previous_)(int) = SIG_DFL;
+  void (*previous_term_)(int) = SIG_DFL;
 };
 
 std::string deck_text(const MpmConfig& c) {
@@ -173,7 +179,7 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(o.out_dir)));
   RunResultOf<Dim> r;
   const bool md_closure = dynamic_cast<const material::MdClosureModel*>(c.material.spec.get()) != nullptr;
-  if (!o.resume && !o.quiet && md_closure)
+  if (!o.resume && !o.quiet && md_closure && ranks::root())
     fmt::print(stderr, "{}: building {} MD boxes of {} atoms (section 6.2)...\n", c.id,
                static_cast<long>(c.cells) * c.per_cell, c.material.md.atoms_per_point());
   r.state = make_state<Dim>(c, !o.resume, o.threads);
@@ -218,10 +224,15 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
                                    &r.max_kinetic, &eq712.squared_difference, &eq712.squared_reference,
                                    &wall_before, &r.stored_initial};
   };
+  // Collective under MPI (the material gathers its per-point state); rank 0 writes.
   auto save_checkpoint = [&](Output* out, double wall_now) {
     const std::string path = checkpoint_path(o.out_dir), tmp = path + ".tmp";
+    const bool writer = ranks::root();
     {
-      std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+      std::ofstream file;
+      std::ostream nowhere(nullptr);  // the other ranks' copy of the fields goes nowhere
+      if (writer) file.open(tmp, std::ios::binary | std::ios::trunc);
+      std::ostream& f = writer ? static_cast<std::ostream&>(file) : nowhere;
       CheckpointOut w(f);
       w.text(deck_text(c));
       save_state(w, s);
@@ -246,12 +257,13 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
         w.integer(bytes);
       }
       f.flush();
-      if (!f) throw RunError(fmt::format("cannot write the checkpoint {}", tmp));
+      if (writer && !f) throw RunError(fmt::format("cannot write the checkpoint {}", tmp));
     }
-    std::filesystem::rename(tmp, path);
+    if (writer) std::filesystem::rename(tmp, path);
   };
   Output::Marks resume_marks;
-  if (o.resume) {
+  // Every rank reads the checkpoint (and keeps its block of the material's state).
+  if (o.resume) ranks::together([&] {
     const std::string path = checkpoint_path(o.out_dir);
     std::ifstream f(path, std::ios::binary);
     CheckpointIn in(f, path);
@@ -278,11 +290,12 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
       const std::string name = in.text();
       resume_marks[name] = in.integer();
     }
-  }
+  });
   rec.set("threads", r.threads);
+  rec.set("ranks", static_cast<std::int64_t>(ranks::size()));
   std::unique_ptr<Output> out;
   std::unique_ptr<VtkOutput<Dim>> vtk;
-  if (!o.out_dir.empty()) {
+  if (!o.out_dir.empty() && ranks::root()) {  // output from rank 0 only
     std::filesystem::create_directories(o.out_dir);
     out = std::make_unique<Output>(o.out_dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles,
                                    resume_marks);
@@ -376,7 +389,8 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     }
   };
 
-  Progress progress(fmt::format("{} {}", c.id, scheme_name(c.scheme.scheme)), steps, o.quiet, s.step);
+  Progress progress(fmt::format("{} {}", c.id, scheme_name(c.scheme.scheme)), steps, o.quiet || !ranks::root(),
+                    s.step);
   const auto t0 = std::chrono::steady_clock::now();
   auto wall = [&] { return wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   double last_checkpoint = 0.0;
@@ -420,14 +434,18 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
       }
       progress.update(c.cfl_dt ? std::min<std::int64_t>(steps - 1, std::llround(s.time / c.end * steps)) : n);
       if (checkpoints && !last) {
-        const bool stop = g_interrupted || n == o.stop_after;
+        bool stop = g_interrupted || n == o.stop_after;
         // Long runs of small steps read the clock every 64 steps: reading it costs a
         // good part of such a step.
         const bool by_count = o.checkpoint_every > 0 && n % o.checkpoint_every == 0;
-        const bool by_time = o.checkpoint_seconds > 0 && n % clock_every == 0 &&
-                             wall() - wall_before - last_checkpoint >= o.checkpoint_seconds;
+        bool by_time = o.checkpoint_seconds > 0 && n % clock_every == 0 &&
+                       wall() - wall_before - last_checkpoint >= o.checkpoint_seconds;
+        if (ranks::size() > 1) {  // the ranks act together: any rank's signal, rank 0's clock
+          const auto agreed = ranks::max({stop ? 1.0 : 0.0, by_time && ranks::root() ? 1.0 : 0.0});
+          stop = agreed[0] > 0, by_time = agreed[1] > 0;
+        }
         if (stop || by_count || by_time) {
-          save_checkpoint(out.get(), wall());
+          ranks::together([&] { save_checkpoint(out.get(), wall()); });
           last_checkpoint = wall() - wall_before;
         }
         if (stop) {
@@ -438,11 +456,19 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     }
     if (!r.interrupted) progress.finish();
   } catch (const RunError& e) {
+    // The same on every rank: the continuum checks read the replicated state, and the
+    // closure and the checkpoint agree on theirs (core/ranks).
+    ranks::mark_agreed();
     failure = e.what();
   }
   r.wall_seconds = wall();
   r.steps = s.step;
   if (closure) r.md_atom_steps = closure->atom_steps();
+  // The slowest rank's MD time over the mean (1 on one rank).
+  const double md_mine = closure ? closure->md_seconds() : 0.0;
+  const double md_slowest = ranks::max({md_mine})[0], md_mean = ranks::sum(md_mine) / ranks::size();
+  r.rank_imbalance = md_mean > 0 ? md_slowest / md_mean : 1.0;
+  r.ranks = ranks::size();
   if (direct_md && eq712.squared_reference > 0) r.stress_vs_direct_md = eq712.value();
 
   const Sums s1 = sums(s);
@@ -494,6 +520,7 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     rec.set("md.c11_GPa", eq.c11_gpa);
     rec.set("md.density", closure->density());
   }
+  rec.set("rank_imbalance", r.rank_imbalance);
   if (!failure.empty()) rec.set("error", failure);
   rec.set("dim", static_cast<std::int64_t>(Dim));
   rec.set("steps", static_cast<std::int64_t>(r.steps));
@@ -541,7 +568,7 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   rec.set("conservation.energy.error", r.energy_error());
   rec.set("conservation.energy.relative_error", r.max_kinetic > 0 ? r.energy_error() / r.max_kinetic : 0.0);
 
-  if (!o.out_dir.empty()) {
+  if (!o.out_dir.empty() && ranks::root()) {
     out.reset();  // close the tables before plotting
     rec.write(o.out_dir + "/run.json");
     if (failure.empty() && !r.interrupted) std::filesystem::remove(checkpoint_path(o.out_dir));
@@ -579,6 +606,8 @@ RunSummary run_any(const MpmConfig& c, const RunOptions& o) {
     s.errors = r.errors;
     s.md_atom_steps = r.md_atom_steps;
     s.threads = r.threads;
+    s.ranks = r.ranks;
+    s.rank_imbalance = r.rank_imbalance;
     s.stress_vs_direct_md = r.stress_vs_direct_md;
     return s;
   };

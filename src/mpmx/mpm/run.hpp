@@ -49,7 +49,9 @@ struct RunResultOf {
   double max_kinetic = 0.0;
   double stress_vs_direct_md = std::nan("");  // eq. 7.12 over the compared times (direct_md)
   std::int64_t md_atom_steps = 0;             // md_closure: atoms x MD steps, relaxation included
-  int threads = 1;
+  int threads = 1;                            // per rank
+  int ranks = 1;                              // MPI ranks
+  double rank_imbalance = 1.0;                // the slowest rank's MD time over the mean
   bool interrupted = false;                   // stopped by Ctrl-C (or stop_after): checkpoint written
   State<Dim> state;                           // the final state
   double energy_error() const { return std::abs(kinetic_final - kinetic_initial + stress_work - boundary_work); }
@@ -78,7 +80,8 @@ struct RunSummary {
   bool interrupted = false;
   std::map<std::string, FieldError> errors;
   std::int64_t md_atom_steps = 0;
-  int threads = 1;
+  int threads = 1, ranks = 1;
+  double rank_imbalance = 1.0;
   double stress_vs_direct_md = std::nan("");
 };
 RunSummary run_any(const MpmConfig& c, const RunOptions& o);

@@ -1,9 +1,14 @@
 #include "mpmx/multiscale/batch.hpp"
 
 #include <exception>
+#include <limits>
 #include <mutex>
+#include <string>
 
+#include <fmt/format.h>
 #include <omp.h>
+
+#include "mpmx/core/error.hpp"
 
 namespace mpmx::multiscale {
 
@@ -27,23 +32,38 @@ void Batch::for_each(std::size_t n, const std::function<void(std::size_t)>& task
 }
 
 void Batch::advance(std::vector<md::System>& boxes, const std::vector<md::Mat3>& gradients, int nsteps,
-                    double dt, StressSample sample, std::vector<md::Mat3>& stress_gpa) const {
+                    double dt, StressSample sample, std::vector<md::Mat3>& stress_gpa,
+                    std::size_t first_point) const {
   stress_gpa.resize(boxes.size());
+  std::mutex m;
+  std::size_t failed = std::numeric_limits<std::size_t>::max();
+  std::string why;
   for_each(boxes.size(), [&](std::size_t q) {
-    md::System& box = boxes[q];
-    if (sample == StressSample::last) {
-      box.advance(nsteps, gradients[q], dt);
-      stress_gpa[q] = box.stress_gpa();
-      return;
+    try {
+      advance_one(boxes[q], gradients[q], nsteps, dt, sample, stress_gpa[q]);
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(m);
+      if (q < failed) failed = q, why = e.what();
     }
-    md::Mat3 sum{};
-    for (int s = 0; s < nsteps; ++s) {
-      box.advance(1, gradients[q], dt);
-      const md::Mat3 now = box.stress_gpa();
-      for (int c = 0; c < 9; ++c) sum[c] += now[c];
-    }
-    for (int c = 0; c < 9; ++c) stress_gpa[q][c] = sum[c] / nsteps;
   });
+  if (failed != std::numeric_limits<std::size_t>::max())
+    throw RunError(fmt::format("the MD box of material point {} failed: {}", first_point + failed, why));
+}
+
+void Batch::advance_one(md::System& box, const md::Mat3& gradient, int nsteps, double dt, StressSample sample,
+                        md::Mat3& stress_gpa) {
+  if (sample == StressSample::last) {
+    box.advance(nsteps, gradient, dt);
+    stress_gpa = box.stress_gpa();
+    return;
+  }
+  md::Mat3 sum{};
+  for (int s = 0; s < nsteps; ++s) {
+    box.advance(1, gradient, dt);
+    const md::Mat3 now = box.stress_gpa();
+    for (int c = 0; c < 9; ++c) sum[c] += now[c];
+  }
+  for (int c = 0; c < 9; ++c) stress_gpa[c] = sum[c] / nsteps;
 }
 
 }  // namespace mpmx::multiscale
