@@ -48,7 +48,8 @@ std::string physics(const std::string& dir) {
   std::string line, kept;
   while (std::getline(in, line)) {
     bool drop = false;
-    for (const char* key : {"\"wall_seconds\"", "_per_second\"", "\"threads\"", "\"ranks\"", "\"rank_imbalance\""})
+    for (const char* key :
+       {"\"wall_seconds\"", "_per_second\"", "\"threads\"", "\"ranks\"", "\"rank_imbalance\"", "\"rebalances\""})
       drop = drop || line.find(key) != std::string::npos;
     if (!drop) kept += line + "\n";
   }
@@ -103,6 +104,18 @@ TEST(MpiRanks, CheckpointResumesUnderAnotherRankCount) {
   EXPECT_EQ(run(3, deck, cut1, "--threads 1 --stop-after 5"), 130) << test::read_file(cut1 + ".log");
   ASSERT_EQ(run(0, deck, cut1, "--threads 2 --resume"), 0) << test::read_file(cut1 + ".log");
   expect_same_outputs(whole, cut1);
+}
+
+// A rebalance at every checkpoint (threshold 0) moves boxes between the ranks by their
+// measured cost; the results stay those of the single-process run.
+TEST(MpiRanks, RebalanceKeepsTheBytes) {
+  const std::string deck = deck_file("mpi_rebalance", 8);
+  const std::string single = test::scratch_dir("mpi_rebalance_single"), out = test::scratch_dir("mpi_rebalance_3");
+  ASSERT_EQ(run(0, deck, single, "--threads 1"), 0);
+  ASSERT_EQ(run(3, deck, out, "--threads 1 --checkpoint-every 2 --rebalance-above 0"), 0)
+      << test::read_file(out + ".log");
+  expect_same_outputs(single, out);
+  EXPECT_NE(test::read_file(out + "/run.json").find("\"rebalances\""), std::string::npos);
 }
 
 TEST(MpiRanks, CtrlCToMpirunWritesACheckpointOnEveryRank) {

@@ -20,7 +20,7 @@ void add_mpm_commands(CLI::App& app) {
     bool quiet = false, no_plot = false, resume = false;
     int threads = 0;
     std::int64_t checkpoint_every = 0, stop_after = 0;
-    double checkpoint_minutes = 10.0;
+    double checkpoint_minutes = 10.0, rebalance_above = 1.2;
   };
   auto args = std::make_shared<Args>();
 
@@ -36,6 +36,10 @@ void add_mpm_commands(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   run->add_option("--checkpoint-minutes", args->checkpoint_minutes,
                   "write OUT/checkpoint.bin every so many minutes of wall time (0: only on Ctrl-C; default 10)")
+      ->check(CLI::NonNegativeNumber);
+  run->add_option("--rebalance-above", args->rebalance_above,
+                  "under MPI, move MD boxes between ranks at a checkpoint when the slowest rank's MD time "
+                  "exceeds this many times the mean (default 1.2; 0: at every checkpoint)")
       ->check(CLI::NonNegativeNumber);
   // For tests: stop as if interrupted after step N (a checkpoint at a known step).
   run->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
@@ -53,6 +57,7 @@ void add_mpm_commands(CLI::App& app) {
     o.resume = args->resume;
     o.checkpoint_every = args->checkpoint_every;
     o.stop_after = args->stop_after;
+    o.rebalance_above = args->rebalance_above;
     o.checkpoint_seconds = 60.0 * args->checkpoint_minutes;
     const auto r = mpm::run_any(cfg, o);
     if (r.interrupted) {

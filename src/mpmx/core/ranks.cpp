@@ -192,4 +192,28 @@ std::string gather_to_root(const std::string& mine) {
 #endif
 }
 
+std::string exchange(const std::vector<std::string>& to_rank) {
+  if (g_size == 1) return to_rank.at(0);
+#ifdef MPMX_HAVE_MPI
+  const auto n = static_cast<std::size_t>(g_size);
+  std::vector<int> send_counts(n), send_offsets(n), recv_counts(n), recv_offsets(n);
+  std::string out;
+  for (std::size_t r = 0; r < n; ++r) {
+    send_counts[r] = checked_count(to_rank[r].size());
+    send_offsets[r] = checked_count(out.size());
+    out += to_rank[r];
+  }
+  check(MPI_Alltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "Alltoall");
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < n; ++r) recv_offsets[r] = checked_count(total), total += recv_counts[r];
+  std::string in(total, '\0');
+  check(MPI_Alltoallv(out.data(), send_counts.data(), send_offsets.data(), MPI_CHAR, in.data(), recv_counts.data(),
+                      recv_offsets.data(), MPI_CHAR, MPI_COMM_WORLD),
+        "Alltoallv");
+  return in;
+#else
+  return to_rank.at(0);
+#endif
+}
+
 }  // namespace mpmx::ranks

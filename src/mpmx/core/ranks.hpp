@@ -60,5 +60,8 @@ double sum(double v);
 std::vector<double> all_gather(const std::vector<double>& mine, const std::vector<int>& counts);
 // Collective: every rank's bytes concatenated in rank order, on rank 0 ("" elsewhere).
 std::string gather_to_root(const std::string& mine);
+// Collective: sends to_rank[r] to rank r; returns what every rank sent this one,
+// concatenated in rank order.
+std::string exchange(const std::vector<std::string>& to_rank);
 
 }  // namespace mpmx::ranks

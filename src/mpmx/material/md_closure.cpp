@@ -95,6 +95,7 @@ void MdClosure::initialize(const Points<1>& p) {
       stress_[k] = boxes_[k].stress_gpa();
     }
   gradients_.assign(m, md::Mat3{});
+  box_seconds_.assign(m, 0.0);
   md_seconds_ += seconds_since(t0);
   publish(p, failed, false);
   atom_steps_ = static_cast<std::int64_t>(p.size()) * atoms_per_point() * cfg_.relax_steps;
@@ -111,7 +112,7 @@ void MdClosure::update_stress(const Points<1>& p, double dt) {
   std::optional<ranks::Failure> failed;
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    batch_.advance(boxes_, gradients_, steps, cfg_.dt, cfg_.sample, stress_, first);
+    batch_.advance(boxes_, gradients_, steps, cfg_.dt, cfg_.sample, stress_, first, &box_seconds_);
   } catch (const std::exception& e) {
     failed = ranks::Failure{ranks::Failure::run, where() + e.what()};
   }
@@ -178,7 +179,41 @@ void MdClosure::load(std::istream& in) {
   }
   gradients_.assign(spread_.count(), md::Mat3{});
   stress_.assign(spread_.count(), md::Mat3{});
+  box_seconds_.assign(spread_.count(), 0.0);
   if (const char* v = std::getenv("MPMX_TEST_NAN_POINT")) nan_point_ = std::strtoull(v, nullptr, 10);
+}
+
+bool MdClosure::rebalance(double threshold) {
+  if (ranks::size() == 1) return false;
+  double mine = 0.0;
+  for (double t : box_seconds_) mine += t;
+  const double slowest = ranks::max({mine})[0], mean = ranks::sum(mine) / ranks::size();
+  const std::vector<double> cost = spread_.all(box_seconds_, 1);
+  box_seconds_.assign(box_seconds_.size(), 0.0);  // the next check measures afresh
+  if (!(mean > 0.0) || slowest <= threshold * mean) return false;
+  const multiscale::Spread next = multiscale::Spread::balanced(cost);
+  if (next == spread_) return false;
+  // Each box goes to the rank whose new block holds its point, as the checkpoint
+  // writes it (state, neighbour list, random stream): the run goes on bit for bit.
+  std::vector<std::ostringstream> out(static_cast<std::size_t>(ranks::size()));
+  int to = 0;
+  for (std::size_t k = 0; k < boxes_.size(); ++k) {
+    const std::size_t q = spread_.begin() + k;
+    while (q >= next.start(to + 1)) ++to;
+    boxes_[k].save(out[static_cast<std::size_t>(to)]);
+  }
+  std::vector<std::string> bytes;
+  for (auto& o : out) bytes.push_back(o.str());
+  boxes_.clear();
+  // What arrives is in the senders' rank order, that is in point order.
+  std::istringstream in(ranks::exchange(bytes));
+  spread_ = next;
+  boxes_.reserve(spread_.count());
+  for (std::size_t k = 0; k < spread_.count(); ++k) boxes_.push_back(md::System::load(in, pot_, box_options()));
+  gradients_.assign(spread_.count(), md::Mat3{});
+  stress_.assign(spread_.count(), md::Mat3{});
+  box_seconds_.assign(spread_.count(), 0.0);
+  return true;
 }
 
 }  // namespace mpmx::material

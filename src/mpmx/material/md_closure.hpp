@@ -70,6 +70,8 @@ class MdClosure final : public Material<1> {
   // single-process one. load keeps this rank's block, so any rank count resumes it.
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;
+  // Moves boxes between ranks so that each block's measured cost is about equal.
+  bool rebalance(double threshold) override;
 
   const md::FccEquilibrium& equilibrium() const { return props_.equilibrium; }
   double density() const { return props_.density; }  // unstrained crystal, continuum units
@@ -99,6 +101,7 @@ class MdClosure final : public Material<1> {
   std::vector<md::Mat3> gradients_, stress_;
   std::int64_t atom_steps_ = 0;
   double md_seconds_ = 0.0;
+  std::vector<double> box_seconds_;  // each box's cost since the last rebalance check
   // MPMX_TEST_NAN_POINT: the point whose box reports a NaN stress (tests only).
   std::optional<std::size_t> nan_point_;
 };

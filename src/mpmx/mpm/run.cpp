@@ -447,6 +447,7 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
         if (stop || by_count || by_time) {
           ranks::together([&] { save_checkpoint(out.get(), wall()); });
           last_checkpoint = wall() - wall_before;
+          if (!stop) ranks::together([&] { r.rebalances += s.material->rebalance(o.rebalance_above); });
         }
         if (stop) {
           r.interrupted = true;
@@ -521,6 +522,7 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     rec.set("md.density", closure->density());
   }
   rec.set("rank_imbalance", r.rank_imbalance);
+  if (r.ranks > 1) rec.set("rebalances", static_cast<std::int64_t>(r.rebalances));
   if (!failure.empty()) rec.set("error", failure);
   rec.set("dim", static_cast<std::int64_t>(Dim));
   rec.set("steps", static_cast<std::int64_t>(r.steps));

@@ -24,6 +24,9 @@ struct RunOptions {
   std::int64_t checkpoint_every = 0;
   double checkpoint_seconds = 600.0;
   bool resume = false;
+  // MPI: at each checkpoint, boxes move between ranks when the slowest rank's MD time
+  // since the last checkpoint exceeds this x the mean (0: at every checkpoint).
+  double rebalance_above = 1.2;
   std::int64_t stop_after = 0;  // stop as if interrupted after this step (tests)
 };
 
@@ -52,6 +55,7 @@ struct RunResultOf {
   int threads = 1;                            // per rank
   int ranks = 1;                              // MPI ranks
   double rank_imbalance = 1.0;                // the slowest rank's MD time over the mean
+  int rebalances = 0;                         // checkpoints at which boxes moved between ranks
   bool interrupted = false;                   // stopped by Ctrl-C (or stop_after): checkpoint written
   State<Dim> state;                           // the final state
   double energy_error() const { return std::abs(kinetic_final - kinetic_initial + stress_work - boundary_work); }

@@ -1,5 +1,6 @@
 #include "mpmx/multiscale/batch.hpp"
 
+#include <chrono>
 #include <exception>
 #include <limits>
 #include <mutex>
@@ -33,14 +34,16 @@ void Batch::for_each(std::size_t n, const std::function<void(std::size_t)>& task
 
 void Batch::advance(std::vector<md::System>& boxes, const std::vector<md::Mat3>& gradients, int nsteps,
                     double dt, StressSample sample, std::vector<md::Mat3>& stress_gpa,
-                    std::size_t first_point) const {
+                    std::size_t first_point, std::vector<double>* seconds) const {
   stress_gpa.resize(boxes.size());
   std::mutex m;
   std::size_t failed = std::numeric_limits<std::size_t>::max();
   std::string why;
   for_each(boxes.size(), [&](std::size_t q) {
     try {
+      const auto t0 = std::chrono::steady_clock::now();
       advance_one(boxes[q], gradients[q], nsteps, dt, sample, stress_gpa[q]);
+      if (seconds) (*seconds)[q] += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     } catch (const std::exception& e) {
       std::lock_guard<std::mutex> lock(m);
       if (q < failed) failed = q, why = e.what();

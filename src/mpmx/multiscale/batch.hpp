@@ -29,10 +29,11 @@ class Batch {
   // Advances boxes[q] by nsteps MD steps of dt (ps) under gradients[q] (1/ps) and
   // returns its stress (GPa, Cauchy) in stress_gpa[q]. A box that fails stops the
   // batch with a RunError naming the lowest failing point, first_point + q (the same
-  // on any thread count).
+  // on any thread count). `seconds`, when given, gains each box's wall time (its cost,
+  // for balancing the ranks).
   void advance(std::vector<md::System>& boxes, const std::vector<md::Mat3>& gradients, int nsteps,
                double dt, StressSample sample, std::vector<md::Mat3>& stress_gpa,
-               std::size_t first_point = 0) const;
+               std::size_t first_point = 0, std::vector<double>* seconds = nullptr) const;
 
  private:
   static void advance_one(md::System& box, const md::Mat3& gradient, int nsteps, double dt, StressSample sample,

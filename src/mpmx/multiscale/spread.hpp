@@ -11,7 +11,12 @@ namespace mpmx::multiscale {
 
 class Spread {
  public:
-  explicit Spread(std::size_t points = 0);  // over ranks::size() ranks
+  explicit Spread(std::size_t points = 0);  // equal blocks over this job's ranks
+  Spread(std::size_t points, int ranks, int rank);
+  // Contiguous blocks of about equal total cost (cost[q]: point q's measured cost),
+  // each of at least one point while there are enough; the same on every rank.
+  static Spread balanced(const std::vector<double>& cost);
+  static Spread balanced(const std::vector<double>& cost, int ranks, int rank);
 
   std::size_t points() const { return points_; }
   std::size_t begin() const { return starts_[rank_]; }
@@ -19,6 +24,10 @@ class Spread {
   std::size_t count() const { return end() - begin(); }
   bool owns(std::size_t q) const { return q >= begin() && q < end(); }
   int rank() const { return static_cast<int>(rank_); }
+  // Block r is [start(r), start(r + 1)).
+  std::size_t start(int r) const { return starts_[static_cast<std::size_t>(r)]; }
+  int ranks() const { return static_cast<int>(starts_.size()) - 1; }
+  bool operator==(const Spread& o) const { return starts_ == o.starts_; }
 
   // Collective: every rank's records (`width` doubles per point of its block) in point
   // order, on every rank.
