@@ -55,7 +55,7 @@ int finish(int code, const std::string& message) {
     if (ranks::root()) fmt::print(stderr, "{}", message);
     return code;
   }
-  fmt::print(stderr, "mpmx (rank {} of {}): {}", ranks::rank(), ranks::size(), message);
+  fmt::print(stderr, "[rank {} of {}] {}", ranks::rank(), ranks::size(), message);
   std::fflush(stderr);
   ranks::abort_job(code);
 }
@@ -81,6 +81,18 @@ int run(int argc, char** argv) {
     return finish(code::bad_input, fmt::format("mpmx: unknown command '{}': expected one of {} (mpmx --help)\n",
                                                word, command_names(app)));
   }
+  // Only `mpmx run` spreads its work over MPI ranks; any other command on several
+  // ranks would run N times over into the same files.
+  if (mpmx::ranks::size() > 1)
+    for (int i = 1; i < argc; ++i)
+      if (argv[i][0] != '-') {
+        if (std::strcmp(argv[i], "run") == 0) break;
+        mpmx::ranks::mark_agreed();
+        return finish(code::bad_input,
+                      fmt::format("mpmx: `mpmx {}` runs as one process; under an MPI launcher only `mpmx run` "
+                                  "spreads over ranks (start it with -np 1, or without mpirun)\n",
+                                  argv[i]));
+      }
   try {
     mpmx::mpm::shape::isa_chosen();  // a bad MPMX_ISA stops here, before any command writes
     app.parse(argc, argv);

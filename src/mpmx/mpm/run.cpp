@@ -295,12 +295,13 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   rec.set("ranks", static_cast<std::int64_t>(ranks::size()));
   std::unique_ptr<Output> out;
   std::unique_ptr<VtkOutput<Dim>> vtk;
-  if (!o.out_dir.empty() && ranks::root()) {  // output from rank 0 only
+  ranks::together([&] {  // output from rank 0 only; a folder it cannot make stops all
+    if (o.out_dir.empty() || !ranks::root()) return;
     std::filesystem::create_directories(o.out_dir);
     out = std::make_unique<Output>(o.out_dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles,
                                    resume_marks);
     if (c.write_vtk) vtk = std::make_unique<VtkOutput<Dim>>(o.out_dir, o.resume ? s.time : -1.0);
-  }
+  });
   std::vector<double> u, uref, w;
   // Shock-front plateaus: the strain behind the right-going front is the mean of the
   // two initial states (the step splits into two half-amplitude waves).
