@@ -78,13 +78,20 @@ void MdClosure::initialize(const Points<1>& p) {
   try {
     batch_.for_each(m, [&](std::size_t k) {
       const std::size_t q = first + k;
-      md::System box(md::fcc(cfg_.cells, cfg_.cells, cfg_.cells, a0, p.strain[0][q]), pot_, box_options());
-      if (cfg_.temperature > 0) box.thermalize(cfg_.temperature, cfg_.seed, q);
-      box.advance(static_cast<int>(cfg_.relax_steps), cfg_.dt);  // zero strain rate
-      built[k].emplace(std::move(box));
+      try {
+        md::System box(md::fcc(cfg_.cells, cfg_.cells, cfg_.cells, a0, p.strain[0][q]), pot_, box_options());
+        if (cfg_.temperature > 0) box.thermalize(cfg_.temperature, cfg_.seed, q);
+        box.advance(static_cast<int>(cfg_.relax_steps), cfg_.dt);  // zero strain rate
+        built[k].emplace(std::move(box));
+      } catch (const std::exception& e) {  // the same kind of error, naming the point
+        ranks::Failure f = ranks::failure_of(e);
+        f.message = fmt::format("the MD box of material point {}: {}", q, f.message);
+        ranks::raise(f);
+      }
     });
   } catch (const std::exception& e) {
-    failed = ranks::Failure{ranks::Failure::run, fmt::format("{}building the MD boxes: {}", where(), e.what())};
+    failed = ranks::failure_of(e);
+    failed->message = fmt::format("{}building {}", where(), failed->message);
   }
   boxes_.clear();
   boxes_.reserve(m);
@@ -129,8 +136,8 @@ void MdClosure::publish(const Points<1>& p, std::optional<ranks::Failure> failed
     double* r = &mine[k * kRecord];
     for (int c = 0; c < 9; ++c) r[c] = stress_[k][c];
     const md::Box& b = boxes_[k].box();
-    int c = 9;
-    for (const double v : {b.lx, b.ly, b.lz, b.xy, b.xz, b.yz}) r[c++] = v;
+    int i = 9;
+    for (const double v : {b.lx, b.ly, b.lz, b.xy, b.xz, b.yz}) r[i++] = v;
     for (int c = 0; c < 9; ++c)
       if (!std::isfinite(stress_[k][c]))
         failed = ranks::Failure{ranks::Failure::run,
