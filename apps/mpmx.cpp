@@ -13,6 +13,7 @@
 #include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/ranks.hpp"
 #include "mpmx/md/potential/eam_one_type.hpp"
 #include "mpmx/mpm/fused1d/isa.hpp"
 #include "mpmx/core/exit_codes.hpp"
@@ -46,16 +47,28 @@ const char* unknown_command(CLI::App& app, int argc, char** argv) {
   return nullptr;
 }
 
-}  // namespace
+// Under MPI: an error every rank agreed on is printed once, by rank 0, and every rank
+// exits with its status; an error only this rank saw is printed with the rank's number
+// and ends the whole job (the other ranks would wait for it for ever).
+int finish(int code, const std::string& message) {
+  namespace ranks = mpmx::ranks;
+  if (ranks::size() == 1 || ranks::failure_agreed()) {
+    if (ranks::root()) fmt::print(stderr, "{}", message);
+    return code;
+  }
+  fmt::print(stderr, "[rank {} of {}] {}", ranks::rank(), ranks::size(), message);
+  std::fflush(stderr);
+  ranks::abort_job(code);
+}
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   namespace code = mpmx::exit_code;
   CLI::App app{"mpmx " MPMX_VERSION ": material point method + molecular dynamics multiscale solver"};
-  // With the vector paths of the 1-D and MD kernels: those built in, those this machine
-  // runs, the one taken.
+  // With the vector paths of the 1-D and MD kernels (those built in, those this machine
+  // runs, the one taken) and the MPI library the ranks use.
   app.set_version_flag("--version", [] {
     return std::string("mpmx ") + MPMX_VERSION + "\n" + mpmx::mpm::shape::isa_summary() + "\n" +
-           mpmx::md::eam_isa_summary();
+           mpmx::md::eam_isa_summary() + "\nMPI: " + mpmx::ranks::library();
   });
   app.require_subcommand(1);
   app.footer("Exit status: 0 done, 1 internal error, 2 bad input, 3 run stopped by the physics (partial "
@@ -65,39 +78,54 @@ int main(int argc, char** argv) {
   mpmx::app::add_dpd_commands(app);
   mpmx::app::apply_shared_checks(app);
   if (const char* word = unknown_command(app, argc, argv)) {
-    fmt::print(stderr, "mpmx: unknown command '{}': expected one of {} (mpmx --help)\n", word,
-               command_names(app));
-    return code::bad_input;
+    mpmx::ranks::mark_agreed();  // the same command line on every rank
+    return finish(code::bad_input, fmt::format("mpmx: unknown command '{}': expected one of {} (mpmx --help)\n",
+                                               word, command_names(app)));
   }
+  // Only `mpmx run` spreads its work over MPI ranks; any other command on several
+  // ranks would run N times over into the same files.
+  if (mpmx::ranks::size() > 1)
+    for (int i = 1; i < argc; ++i)
+      if (argv[i][0] != '-') {
+        if (std::strcmp(argv[i], "run") == 0) break;
+        mpmx::ranks::mark_agreed();
+        return finish(code::bad_input,
+                      fmt::format("mpmx: `mpmx {}` runs as one process; under an MPI launcher only `mpmx run` "
+                                  "spreads over ranks (start it with -np 1, or without mpirun)\n",
+                                  argv[i]));
+      }
   try {
     mpmx::mpm::shape::isa_chosen();  // a bad MPMX_ISA stops here, before any command writes
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help and --version: CLI11 prints them and says 0.
-    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success))
+      return mpmx::ranks::root() ? app.exit(e) : code::done;
     std::string where = "mpmx";
     for (const CLI::App* sub : app.get_subcommands()) where += " " + sub->get_name();
+    mpmx::ranks::mark_agreed();  // the same command line on every rank
     if (where == "mpmx" && e.get_name() == "RequiredError")
-      fmt::print(stderr, "mpmx: a command is required: one of {} (mpmx --help)\n", command_names(app));
-    else
-      fmt::print(stderr, "mpmx: {}\n({} --help lists the options)\n", e.what(), where);
-    return code::bad_input;
+      return finish(code::bad_input,
+                    fmt::format("mpmx: a command is required: one of {} (mpmx --help)\n", command_names(app)));
+    return finish(code::bad_input, fmt::format("mpmx: {}\n({} --help lists the options)\n", e.what(), where));
   } catch (const mpmx::InputError& e) {
-    fmt::print(stderr, "mpmx: input error:\n{}\n", e.what());
-    return code::bad_input;
+    return finish(code::bad_input, fmt::format("mpmx: input error:\n{}\n", e.what()));
   } catch (const mpmx::RunError& e) {
-    fmt::print(stderr, "mpmx: run stopped: {}\n", e.what());
-    return code::stopped;
+    return finish(code::stopped, fmt::format("mpmx: run stopped: {}\n", e.what()));
   } catch (const mpmx::Interrupted& e) {
-    fmt::print(stderr, "\nmpmx: interrupted: {}\n", e.what());
-    return code::interrupted;
+    return finish(code::interrupted, fmt::format("\nmpmx: interrupted: {}\n", e.what()));
   } catch (const std::bad_alloc&) {
     // The estimates refuse what cannot fit before anything runs; this is the last resort.
-    fmt::print(stderr, "mpmx: out of memory while running `{}`\n", command_line(argc, argv));
-    return code::internal;
+    return finish(code::internal, fmt::format("mpmx: out of memory while running `{}`\n", command_line(argc, argv)));
   } catch (const std::exception& e) {
-    fmt::print(stderr, "mpmx: {}\n", e.what());
-    return code::internal;
+    return finish(code::internal, fmt::format("mpmx: {}\n", e.what()));
   }
   return code::done;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  mpmx::ranks::Session mpi(argc, argv);  // MPI only when started by an MPI launcher
+  return run(argc, argv);
 }

@@ -80,6 +80,7 @@ TEST(Cli, HelpAndVersionExitZero) {
   const auto v = mpmx_cli("--version");
   EXPECT_EQ(v.status, 0);
   EXPECT_NE(v.output.find("mpmx "), std::string::npos);
+  EXPECT_NE(v.output.find("\nMPI: "), std::string::npos) << v.output;  // the library, or "none"
 }
 
 TEST(Cli, ThreadsAreBoundedByTheMachine) {

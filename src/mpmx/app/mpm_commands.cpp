@@ -10,6 +10,7 @@
 
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/ranks.hpp"
 #include "mpmx/io/mpm_deck.hpp"
 #include "mpmx/md/budget.hpp"
 #include "mpmx/mpm/run.hpp"
@@ -22,8 +23,8 @@ void add_mpm_commands(CLI::App& app) {
     std::string deck, out;
     bool quiet = false, no_plot = false, resume = false;
     int threads = 0;
-    std::int64_t checkpoint_every = 0;
-    double checkpoint_minutes = 10.0;
+    std::int64_t checkpoint_every = 0, stop_after = 0;
+    double checkpoint_minutes = 10.0, rebalance_above = 1.2;
   };
   auto args = std::make_shared<Args>();
 
@@ -40,8 +41,16 @@ void add_mpm_commands(CLI::App& app) {
   run->add_option("--checkpoint-minutes", args->checkpoint_minutes,
                   "write OUT/checkpoint.bin every so many minutes of wall time (0: only on Ctrl-C; default 10)")
       ->check(CLI::NonNegativeNumber);
+  run->add_option("--rebalance-above", args->rebalance_above,
+                  "under MPI, move MD boxes between ranks at a checkpoint when the slowest rank's MD time "
+                  "exceeds this many times the mean (default 1.2; 0: at every checkpoint)")
+      ->check(CLI::NonNegativeNumber);
+  // For tests: stop as if interrupted after step N (a checkpoint at a known step).
+  run->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   run->callback([args] {
-    const auto cfg = io::read_mpm_deck(args->deck);
+    // Every rank reads the deck; under MPI a bad one stops them all with one message.
+    mpm::MpmConfig cfg;
+    ranks::together([&] { cfg = io::read_mpm_deck(args->deck); });
     const std::string out =
         args->out.empty() ? "runs/" + std::filesystem::path(args->deck).stem().string() : args->out;
     mpm::RunOptions o;
@@ -51,19 +60,25 @@ void add_mpm_commands(CLI::App& app) {
     o.threads = args->threads;
     o.resume = args->resume;
     o.checkpoint_every = args->checkpoint_every;
+    o.stop_after = args->stop_after;
+    o.rebalance_above = args->rebalance_above;
     o.checkpoint_seconds = 60.0 * args->checkpoint_minutes;
     const auto r = mpm::run_any(cfg, o);
-    if (r.interrupted)
+    if (r.interrupted) {
+      ranks::mark_agreed();  // every rank stopped at the same step
       throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx run {} --out {} --resume",
                                     r.steps, cfg.steps(), mpm::checkpoint_path(out), args->deck, out));
+    }
+    if (!ranks::root()) return;
     fmt::print("{}: {} steps in {:.3f} s -> {}/run.json\n", cfg.id, r.steps, r.wall_seconds, out);
     for (const auto& [f, e] : r.errors)
       fmt::print("  error {:<12} l1 {:.3e}  l2 {:.3e}  peak {:.3e}\n", f, e.l1, e.l2, e.peak);
     for (const auto& [f, order] : r.convergence_order)
       fmt::print("  observed order {:<12} {:.2f} (L2, over {} grids)\n", f, order, cfg.convergence_levels);
     if (r.md_atom_steps > 0)
-      fmt::print("  MD: {:.4g} atom-steps, {:.4g} atom-steps/s on {} thread(s)\n",
-                 static_cast<double>(r.md_atom_steps), r.md_atom_steps / r.wall_seconds, r.threads);
+      fmt::print("  MD: {:.4g} atom-steps, {:.4g} atom-steps/s on {} thread(s){}\n",
+                 static_cast<double>(r.md_atom_steps), r.md_atom_steps / r.wall_seconds, r.threads,
+                 r.ranks > 1 ? fmt::format(" x {} ranks (imbalance {:.3f})", r.ranks, r.rank_imbalance) : "");
     if (std::isfinite(r.stress_vs_direct_md))
       fmt::print("  stress vs direct MD (eq. 7.12): {:.2f}%\n", 100.0 * r.stress_vs_direct_md);
   });

@@ -32,6 +32,11 @@ class Material {
   virtual void add_viscous_heat(const Points<Dim>&, const std::array<double*, Dim * Dim>&, double) {}
   // Threads a law may spread its points over (results never depend on them).
   virtual void set_threads(int) {}
+  // Under MPI: spread the per-point state anew over the ranks from its measured cost
+  // when the slowest rank's time since the last call exceeds `threshold` x the mean
+  // (collective; called at checkpoints). True when state moved. Results never depend
+  // on it.
+  virtual bool rebalance(double /*threshold*/) { return false; }
   // Per-point state beyond the point arrays, for checkpoints (none by default).
   virtual void save(std::ostream&) const {}
   virtual void load(std::istream&) {}

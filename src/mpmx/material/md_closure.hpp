@@ -6,14 +6,25 @@
 // never re-initialised; each continuum step its velocity gradient (eq. 6.3) deforms
 // the box for dt / dt_md MD steps and the box's virial stress (eq. 2.25) is the point's
 // stress. Units are converted here only (core/units).
+//
+// Under MPI each rank builds and advances the boxes of its block of points
+// (multiscale/spread); every rank then holds every point's result (stress and box) and
+// the continuum step is replicated on all ranks. Replicated rather than run on rank 0:
+// the continuum costs nothing beside the MD, every rank then takes the same decisions
+// from the same state (records, the CFL step, the checks) without a protocol of
+// commands, and the gradients need no scatter. A box's state and random stream depend
+// only on its point's index, so the results do not depend on the ranks or threads.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "mpmx/core/ranks.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/material/material.hpp"
 #include "mpmx/md/equilibrium.hpp"
 #include "mpmx/md/system.hpp"
 #include "mpmx/multiscale/batch.hpp"
+#include "mpmx/multiscale/spread.hpp"
 
 namespace mpmx::material {
 
@@ -59,42 +70,61 @@ class MdClosure final : public Material<Dim> {
   explicit MdClosure(const MdClosureConfig& config);
 
   std::string name() const override { return "md_closure"; }
-  // Builds one box per point from p.strain (engineering, along x); sets the stress.
+  // Builds one box per point of this rank's block from p.strain (engineering, along
+  // x); sets every point's stress. Collective under MPI, as are update_stress, save
+  // and load; a failure on any rank throws the same RunError on every rank.
   void initialize(const Points<Dim>& p) override;
   void update_stress(const Points<Dim>& p, double dt) override;
   // sqrt(C11 / rho): the 0 K uniaxial-strain wave speed, for the viscosity.
   double sound_speed(const Points<Dim>& p, std::size_t q) const override;
+  // The boxes of every rank, in point order, written by rank 0 alone: the file is the
+  // single-process one. load keeps this rank's block, so any rank count resumes it.
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;
+  // Moves boxes between ranks so that each block's measured cost is about equal.
+  bool rebalance(double threshold) override;
 
   const md::FccEquilibrium& equilibrium() const { return props_.equilibrium; }
   double density() const { return props_.density; }  // unstrained crystal, continuum units
   double modulus() const { return props_.modulus; }  // C11, continuum units
   int atoms_per_point() const { return cfg_.atoms_per_point(); }
-  std::int64_t atom_steps() const { return atom_steps_; }
+  std::int64_t atom_steps() const { return atom_steps_; }  // all ranks' boxes
+  double md_seconds() const { return md_seconds_; }        // wall time in this rank's boxes
   int threads() const { return batch_.threads(); }
   // The boxes spread over the run's --threads (0: OpenMP's default), set before
   // initialize(); the continuum's particle threads (set_threads) do not apply to them.
   void use_threads(int threads) { batch_ = multiscale::Batch(threads); }
   void set_threads(int) override {}
+  // This rank's boxes: those of points spread().begin() + k.
   const std::vector<md::System>& boxes() const { return boxes_; }
-  // Eq. 7.11: energy put into (positive) or taken from the boxes so far, eV; and what
-  // could not be taken from a box with too little thermal energy.
+  const multiscale::Spread& spread() const { return spread_; }
+  // Eq. 7.11: energy put into (positive) or taken from the boxes so far, eV, all ranks;
+  // and what could not be taken from a box with too little thermal energy.
   double energy_injected_ev() const { return injected_ev_; }
   double energy_shortfall_ev() const { return shortfall_ev_; }
 
  private:
   md::SystemOptions box_options() const;
+  // Every rank's results into the points (stress; strain when `strain`, and in 2-D/3-D
+  // the strain increment of this step's dt), after the ranks agree on the first
+  // failure, if any.
+  void publish(const Points<Dim>& p, std::optional<ranks::Failure> failed, bool strain, double dt);
   void set_point_stress(const Points<Dim>& p, std::size_t q) const;
 
   MdClosureConfig cfg_;
   md::Potential pot_;
   MdClosureProperties props_;
   multiscale::Batch batch_;
-  std::vector<md::System> boxes_;
-  std::vector<md::Mat3> gradients_, stress_, rotation_;
+  multiscale::Spread spread_;
+  std::vector<md::System> boxes_;                // this rank's block
+  std::vector<md::Mat3> gradients_, stress_;     // this rank's block (stress: box frame, GPa)
+  std::vector<md::Mat3> all_stress_, rotation_;  // every point, on every rank
   std::int64_t atom_steps_ = 0;
+  double md_seconds_ = 0.0;
+  std::vector<double> box_seconds_;  // each box's cost since the last rebalance check
   double injected_ev_ = 0.0, shortfall_ev_ = 0.0;
+  // MPMX_TEST_NAN_POINT: the point whose box reports a NaN stress (tests only).
+  std::optional<std::size_t> nan_point_;
 };
 
 }  // namespace mpmx::material

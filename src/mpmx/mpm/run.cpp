@@ -19,6 +19,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
+#include "mpmx/core/ranks.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/material/md_closure.hpp"
@@ -130,28 +131,33 @@ void check_volumes(const State<Dim>& s) {
                                  q, p.volume[q], s.step, s.time));
 }
 
-// Ctrl-C asks the step loop to write a checkpoint and stop; a second one kills.
+// Ctrl-C asks the step loop to write a checkpoint and stop; a second one kills. Under
+// MPI, SIGTERM does the same: mpirun turns a Ctrl-C into SIGTERM to every rank, and
+// a batch system's time limit sends it too.
 volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void on_interrupt(int) {
+extern "C" void on_interrupt(int sig) {
   g_interrupted = 1;
-  std::signal(SIGINT, SIG_DFL);
+  std::signal(sig, SIG_DFL);
 }
 class InterruptGuard {
  public:
-  explicit InterruptGuard(bool active) : active_(active) {
+  explicit InterruptGuard(bool active) : active_(active), term_(active && ranks::active()) {
     if (!active_) return;
     g_interrupted = 0;
     previous_ = std::signal(SIGINT, on_interrupt);
+    if (term_) previous_term_ = std::signal(SIGTERM, on_interrupt);
   }
   ~InterruptGuard() {
     if (active_) std::signal(SIGINT, previous_);
+    if (term_) std::signal(SIGTERM, previous_term_);
   }
   InterruptGuard(const InterruptGuard&) = delete;
   InterruptGuard& operator=(const InterruptGuard&) = delete;
 
  private:
-  bool active_;
+  bool active_, term_;
   void (*previous_)(int) = SIG_DFL;
+  void (*previous_term_)(int) = SIG_DFL;
 };
 
 std::string deck_text(const MpmConfig& c) {
@@ -177,7 +183,7 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(o.out_dir)));
   RunResultOf<Dim> r;
   const bool md_closure = dynamic_cast<const material::MdClosureModel*>(c.material.spec.get()) != nullptr;
-  if (!o.resume && !o.quiet && md_closure)
+  if (!o.resume && !o.quiet && md_closure && ranks::root())
     fmt::print(stderr, "{}: building the MD box of every point ({} atoms each, section 6.2)...\n", c.id,
                c.material.md.atoms_per_point());
   r.state = make_state<Dim>(c, !o.resume, o.threads);
@@ -233,10 +239,15 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
                                    &r.max_kinetic, &eq712.squared_difference, &eq712.squared_reference,
                                    &wall_before, &r.stored_initial};
   };
+  // Collective under MPI (the material gathers its per-point state); rank 0 writes.
   auto save_checkpoint = [&](Output* out, double wall_now) {
     const std::string path = checkpoint_path(o.out_dir), tmp = path + ".tmp";
+    const bool writer = ranks::root();
     {
-      std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+      std::ofstream file;
+      std::ostream nowhere(nullptr);  // the other ranks' copy of the fields goes nowhere
+      if (writer) file.open(tmp, std::ios::binary | std::ios::trunc);
+      std::ostream& f = writer ? static_cast<std::ostream&>(file) : nowhere;
       CheckpointOut w(f);
       w.text(deck_text(c));
       save_state(w, s);
@@ -261,12 +272,13 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
         w.integer(bytes);
       }
       f.flush();
-      if (!f) throw RunError(fmt::format("cannot write the checkpoint {}", tmp));
+      if (writer && !f) throw RunError(fmt::format("cannot write the checkpoint {}", tmp));
     }
-    std::filesystem::rename(tmp, path);
+    if (writer) std::filesystem::rename(tmp, path);
   };
   Output::Marks resume_marks;
-  if (o.resume) {
+  // Every rank reads the checkpoint (and keeps its block of the material's state).
+  if (o.resume) ranks::together([&] {
     const std::string path = checkpoint_path(o.out_dir);
     std::ifstream f(path, std::ios::binary);
     CheckpointIn in(f, path);
@@ -293,16 +305,18 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
       const std::string name = in.text();
       resume_marks[name] = in.integer();
     }
-  }
+  });
   rec.set("threads", r.threads);
+  rec.set("ranks", static_cast<std::int64_t>(ranks::size()));
   std::unique_ptr<Output> out;
   std::unique_ptr<VtkOutput<Dim>> vtk;
-  if (!o.out_dir.empty()) {
+  ranks::together([&] {  // output from rank 0 only; a folder it cannot make stops all
+    if (o.out_dir.empty() || !ranks::root()) return;
     std::filesystem::create_directories(o.out_dir);
     out = std::make_unique<Output>(o.out_dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles,
                                    resume_marks);
     if (c.write_vtk) vtk = std::make_unique<VtkOutput<Dim>>(o.out_dir, o.resume ? s.time : -1.0);
-  }
+  });
   std::vector<double> u, uref, w;
   // Shock-front plateaus: the strain behind the right-going front is the mean of the
   // two initial states (the step splits into two half-amplitude waves).
@@ -455,7 +469,8 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     }
   };
 
-  Progress progress(fmt::format("{} {}", c.id, scheme_name(c.scheme.scheme)), steps, o.quiet, s.step);
+  Progress progress(fmt::format("{} {}", c.id, scheme_name(c.scheme.scheme)), steps, o.quiet || !ranks::root(),
+                    s.step);
   const auto t0 = std::chrono::steady_clock::now();
   auto wall = [&] { return wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   double last_checkpoint = 0.0;
@@ -499,15 +514,20 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
       }
       progress.update(c.cfl_dt ? std::min<std::int64_t>(steps - 1, std::llround(s.time / c.end * steps)) : n);
       if (checkpoints && !last) {
-        const bool stop = g_interrupted || n == o.stop_after;
+        bool stop = g_interrupted || n == o.stop_after;
         // Long runs of small steps read the clock every 64 steps: reading it costs a
         // good part of such a step.
         const bool by_count = o.checkpoint_every > 0 && n % o.checkpoint_every == 0;
-        const bool by_time = o.checkpoint_seconds > 0 && n % clock_every == 0 &&
-                             wall() - wall_before - last_checkpoint >= o.checkpoint_seconds;
+        bool by_time = o.checkpoint_seconds > 0 && n % clock_every == 0 &&
+                       wall() - wall_before - last_checkpoint >= o.checkpoint_seconds;
+        if (ranks::size() > 1) {  // the ranks act together: any rank's signal, rank 0's clock
+          const auto agreed = ranks::max({stop ? 1.0 : 0.0, by_time && ranks::root() ? 1.0 : 0.0});
+          stop = agreed[0] > 0, by_time = agreed[1] > 0;
+        }
         if (stop || by_count || by_time) {
-          save_checkpoint(out.get(), wall());
+          ranks::together([&] { save_checkpoint(out.get(), wall()); });
           last_checkpoint = wall() - wall_before;
+          if (!stop) ranks::together([&] { r.rebalances += s.material->rebalance(o.rebalance_above); });
         }
         if (stop) {
           r.interrupted = true;
@@ -517,11 +537,19 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     }
     if (!r.interrupted) progress.finish();
   } catch (const RunError& e) {
+    // The same on every rank: the continuum checks read the replicated state, and the
+    // closure and the checkpoint agree on theirs (core/ranks).
+    ranks::mark_agreed();
     failure = e.what();
   }
   r.wall_seconds = wall();
   r.steps = s.step;
   if (closure) r.md_atom_steps = closure->atom_steps();
+  // The slowest rank's MD time over the mean (1 on one rank).
+  const double md_mine = closure ? closure->md_seconds() : 0.0;
+  const double md_slowest = ranks::max({md_mine})[0], md_mean = ranks::sum(md_mine) / ranks::size();
+  r.rank_imbalance = md_mean > 0 ? md_slowest / md_mean : 1.0;
+  r.ranks = ranks::size();
   if (direct_md && eq712.squared_reference > 0) r.stress_vs_direct_md = eq712.value();
 
   const Sums s1 = sums(s);
@@ -575,6 +603,8 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     rec.set("md.energy_injected_eV", closure->energy_injected_ev());   // eq. 7.11, running total
     rec.set("md.energy_shortfall_eV", closure->energy_shortfall_ev());
   }
+  rec.set("rank_imbalance", r.rank_imbalance);
+  if (r.ranks > 1) rec.set("rebalances", static_cast<std::int64_t>(r.rebalances));
   if (!failure.empty()) rec.set("error", failure);
   rec.set("dim", static_cast<std::int64_t>(Dim));
   rec.set("steps", static_cast<std::int64_t>(r.steps));
@@ -622,7 +652,7 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   rec.set("conservation.energy.error", r.energy_error());
   rec.set("conservation.energy.relative_error", r.max_kinetic > 0 ? r.energy_error() / r.max_kinetic : 0.0);
 
-  if (!o.out_dir.empty()) {
+  if (!o.out_dir.empty() && ranks::root()) {
     out.reset();  // close the tables before plotting
     rec.write(o.out_dir + "/run.json");
     if (failure.empty() && !r.interrupted) std::filesystem::remove(checkpoint_path(o.out_dir));
@@ -660,6 +690,8 @@ RunSummary run_any(const MpmConfig& c, const RunOptions& o) {
     s.errors = r.errors;
     s.md_atom_steps = r.md_atom_steps;
     s.threads = r.threads;
+    s.ranks = r.ranks;
+    s.rank_imbalance = r.rank_imbalance;
     s.stress_vs_direct_md = r.stress_vs_direct_md;
     return s;
   };

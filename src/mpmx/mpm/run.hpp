@@ -24,6 +24,9 @@ struct RunOptions {
   std::int64_t checkpoint_every = 0;
   double checkpoint_seconds = 600.0;
   bool resume = false;
+  // MPI: at each checkpoint, boxes move between ranks when the slowest rank's MD time
+  // since the last checkpoint exceeds this x the mean (0: at every checkpoint).
+  double rebalance_above = 1.2;
   std::int64_t stop_after = 0;  // stop as if interrupted after this step (tests)
 };
 
@@ -49,7 +52,10 @@ struct RunResultOf {
   double max_kinetic = 0.0;
   double stress_vs_direct_md = std::nan("");  // eq. 7.12 over the compared times (direct_md)
   std::int64_t md_atom_steps = 0;             // md_closure: atoms x MD steps, relaxation included
-  int threads = 1;
+  int threads = 1;                            // per rank
+  int ranks = 1;                              // MPI ranks
+  double rank_imbalance = 1.0;                // the slowest rank's MD time over the mean
+  int rebalances = 0;                         // checkpoints at which boxes moved between ranks
   bool interrupted = false;                   // stopped by Ctrl-C (or stop_after): checkpoint written
   State<Dim> state;                           // the final state
   double energy_error() const { return std::abs(kinetic_final - kinetic_initial + stress_work - boundary_work); }
@@ -78,7 +84,8 @@ struct RunSummary {
   bool interrupted = false;
   std::map<std::string, FieldError> errors;
   std::int64_t md_atom_steps = 0;
-  int threads = 1;
+  int threads = 1, ranks = 1;
+  double rank_imbalance = 1.0;
   double stress_vs_direct_md = std::nan("");
   std::map<std::string, double> convergence_order;  // a convergence study's L2 order by field
 };

@@ -1,9 +1,15 @@
 #include "mpmx/multiscale/batch.hpp"
 
+#include <chrono>
 #include <exception>
+#include <limits>
 #include <mutex>
+#include <string>
 
+#include <fmt/format.h>
 #include <omp.h>
+
+#include "mpmx/core/error.hpp"
 
 namespace mpmx::multiscale {
 
@@ -43,10 +49,30 @@ void advance_box(md::System& box, const md::Mat3& gradient, int nsteps, double d
 }
 
 void Batch::advance(std::vector<md::System>& boxes, const std::vector<md::Mat3>& gradients, int nsteps,
-                    double dt, StressSample sample, std::vector<md::Mat3>& stress_gpa) const {
+                    double dt, StressSample sample, std::vector<md::Mat3>& stress_gpa,
+                    std::size_t first_point, std::vector<double>* seconds) const {
   stress_gpa.resize(boxes.size());
-  for_each(boxes.size(),
+  each_box(boxes.size(), first_point, seconds,
            [&](std::size_t q) { advance_box(boxes[q], gradients[q], nsteps, dt, sample, stress_gpa[q]); });
+}
+
+void Batch::each_box(std::size_t n, std::size_t first_point, std::vector<double>* seconds,
+                     const std::function<void(std::size_t)>& task) const {
+  std::mutex m;
+  std::size_t failed = std::numeric_limits<std::size_t>::max();
+  std::string why;
+  for_each(n, [&](std::size_t q) {
+    try {
+      const auto t0 = std::chrono::steady_clock::now();
+      task(q);
+      if (seconds) (*seconds)[q] += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(m);
+      if (q < failed) failed = q, why = e.what();
+    }
+  });
+  if (failed != std::numeric_limits<std::size_t>::max())
+    throw RunError(fmt::format("the MD box of material point {} failed: {}", first_point + failed, why));
 }
 
 }  // namespace mpmx::multiscale

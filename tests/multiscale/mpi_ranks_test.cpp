@@ -1,0 +1,179 @@
+// ctest-label: mpi
+// `mpirun -np K mpmx run` on a DDMP-MD bar (VALIDATION.md P1): the material points'
+// boxes spread over K ranks give the single-process run's bytes for every K and thread
+// count; a checkpoint taken under one rank count resumes under another bit-for-bit;
+// Ctrl-C to mpirun leaves a checkpoint; a box failing on one rank stops every rank with
+// its message. The bar is a scaled-down H2 (7 points of 32 atoms at 300 K, so random
+// streams and relaxation are exercised, and 7 points split unevenly over 2 and 3 ranks).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "ms_test_util.hpp"
+
+namespace {
+
+using namespace mpmx;
+
+// One machine, loopback only; root in the test containers. `extra`: mpirun options.
+std::string mpirun(int ranks, const std::string& extra = "") {
+  return fmt::format("'{}' --oversubscribe --allow-run-as-root {} -np {}", MPMX_MPIEXEC, extra, ranks);
+}
+
+std::string deck_file(const std::string& name, int steps) {
+  const auto c = test::tiny_bar(7, 2, steps, 300.0);
+  const std::string deck = test::scratch_dir(name) + "/bar.toml";
+  std::ofstream(deck) << c.deck;
+  return deck;
+}
+
+// `mpmx run DECK --out DIR` with the rest of the command line, under K ranks (0: no
+// mpirun); the exit status.
+int run(int ranks, const std::string& deck, const std::string& out, const std::string& rest = "") {
+  const std::string launch = ranks > 0 ? mpirun(ranks) + " " : "";
+  const std::string cmd = fmt::format("{}'{}' run '{}' --out '{}' --quiet --no-plot {} > '{}.log' 2>&1", launch,
+                                      MPMX_BINARY, deck, out, rest, out);
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// run.json less the lines that say how the run was spread and timed.
+std::string physics(const std::string& dir) {
+  std::istringstream in(test::read_file(dir + "/run.json"));
+  std::string line, kept;
+  while (std::getline(in, line)) {
+    bool drop = false;
+    for (const char* key :
+       {"\"wall_seconds\"", "_per_second\"", "\"threads\"", "\"ranks\"", "\"rank_imbalance\"", "\"rebalances\""})
+      drop = drop || line.find(key) != std::string::npos;
+    if (!drop) kept += line + "\n";
+  }
+  return kept;
+}
+
+void expect_same_outputs(const std::string& a, const std::string& b) {
+  for (const char* f : {"particles.csv", "nodes.csv", "energy.csv"}) {
+    const std::string x = test::read_file(a + "/" + f);
+    EXPECT_FALSE(x.empty()) << a << "/" << f;
+    EXPECT_EQ(x, test::read_file(b + "/" + f)) << b << "/" << f;
+  }
+  EXPECT_EQ(physics(a), physics(b)) << b;
+}
+
+TEST(MpiRanks, SameBytesOnEveryRankAndThreadCount) {
+  const std::string deck = deck_file("mpi_p1", 8);
+  const std::string single = test::scratch_dir("mpi_p1_single");
+  ASSERT_EQ(run(0, deck, single, "--threads 1"), 0) << test::read_file(single + ".log");
+  const std::string record = test::read_file(single + "/run.json");
+  EXPECT_NE(record.find("\"ranks\" : 1,"), std::string::npos);
+  EXPECT_NE(record.find("\"rank_imbalance\" : 1.0,"), std::string::npos);
+  EXPECT_NE(record.find("\"md_atom_steps_per_second\""), std::string::npos);
+  for (int ranks : {1, 2, 3})
+    for (int threads : {1, 2}) {
+      const std::string out = test::scratch_dir(fmt::format("mpi_p1_{}x{}", ranks, threads));
+      ASSERT_EQ(run(ranks, deck, out, fmt::format("--threads {}", threads)), 0) << test::read_file(out + ".log");
+      expect_same_outputs(single, out);
+      const std::string rec = test::read_file(out + "/run.json");
+      EXPECT_NE(rec.find(fmt::format("\"ranks\" : {},", ranks)), std::string::npos) << out;
+      EXPECT_NE(rec.find(fmt::format("\"threads\" : {},", threads)), std::string::npos) << out;
+      EXPECT_NE(rec.find("\"rank_imbalance\""), std::string::npos) << out;
+      // Output from rank 0 alone: one summary line, not one per rank.
+      const std::string log = test::read_file(out + ".log");
+      EXPECT_EQ(log.find("steps in"), log.rfind("steps in")) << log;
+    }
+}
+
+TEST(MpiRanks, CheckpointResumesUnderAnotherRankCount) {
+  const std::string deck = deck_file("mpi_resume", 8);
+  const std::string whole = test::scratch_dir("mpi_resume_whole");
+  ASSERT_EQ(run(0, deck, whole, "--threads 2"), 0);
+  // Two ranks stop after step 3; three ranks finish.
+  const std::string cut = test::scratch_dir("mpi_resume_2to3");
+  EXPECT_EQ(run(2, deck, cut, "--threads 1 --stop-after 3"), 130) << test::read_file(cut + ".log");
+  ASSERT_TRUE(std::filesystem::exists(cut + "/checkpoint.bin"));
+  ASSERT_EQ(run(3, deck, cut, "--threads 1 --resume"), 0) << test::read_file(cut + ".log");
+  expect_same_outputs(whole, cut);
+  EXPECT_FALSE(std::filesystem::exists(cut + "/checkpoint.bin"));
+  // Three ranks stop after step 5; the plain binary finishes.
+  const std::string cut1 = test::scratch_dir("mpi_resume_3to1");
+  EXPECT_EQ(run(3, deck, cut1, "--threads 1 --stop-after 5"), 130) << test::read_file(cut1 + ".log");
+  ASSERT_EQ(run(0, deck, cut1, "--threads 2 --resume"), 0) << test::read_file(cut1 + ".log");
+  expect_same_outputs(whole, cut1);
+}
+
+// A rebalance at every checkpoint (threshold 0) moves boxes between the ranks by their
+// measured cost; the results stay those of the single-process run.
+TEST(MpiRanks, RebalanceKeepsTheBytes) {
+  const std::string deck = deck_file("mpi_rebalance", 8);
+  const std::string single = test::scratch_dir("mpi_rebalance_single"), out = test::scratch_dir("mpi_rebalance_3");
+  ASSERT_EQ(run(0, deck, single, "--threads 1"), 0);
+  ASSERT_EQ(run(3, deck, out, "--threads 1 --checkpoint-every 2 --rebalance-above 0"), 0)
+      << test::read_file(out + ".log");
+  expect_same_outputs(single, out);
+  EXPECT_NE(test::read_file(out + "/run.json").find("\"rebalances\""), std::string::npos);
+}
+
+// (That the checkpoint resumes bit for bit under any rank count is the test above: the
+// file is the same whatever made the run stop.)
+TEST(MpiRanks, CtrlCToMpirunWritesACheckpointOnEveryRank) {
+  const std::string deck = deck_file("mpi_sigint", 500);
+  const std::string cut = test::scratch_dir("mpi_sigint_cut");
+  // SIGINT to mpirun once the step loop runs (energy.csv appears after the handler is
+  // set). mpirun waits odls_base_sigkill_timeout seconds (1 by default), sends the
+  // ranks SIGTERM, waits as long again and kills them: 1 s to finish the step (tens of
+  // milliseconds here) and write the checkpoint.
+  const std::string script = cut + "/../mpi_sigint.sh";
+  std::ofstream(script) << fmt::format(
+      "{} '{}' run '{}' --out '{}' --quiet --no-plot --threads 1 > '{}.log' 2>&1 &\npid=$!\n"
+      "for i in $(seq 600); do [ -s '{}/energy.csv' ] && break; sleep 0.1; done\nkill -INT $pid\nwait $pid\n",
+      mpirun(2), MPMX_BINARY, deck, cut, cut, cut);
+  const int status = std::system(("bash '" + script + "'").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_NE(WEXITSTATUS(status), 0);
+  const std::string log = test::read_file(cut + ".log");
+  ASSERT_TRUE(std::filesystem::exists(cut + "/checkpoint.bin")) << log;
+  EXPECT_NE(log.find("--resume"), std::string::npos) << log;
+  EXPECT_EQ(log.find("mpmx: interrupted"), log.rfind("mpmx: interrupted")) << log;  // printed once
+  const std::string rec = test::read_file(cut + "/run.json");
+  EXPECT_NE(rec.find("\"interrupted\""), std::string::npos);
+  EXPECT_EQ(rec.find("\"steps\" : 500,"), std::string::npos) << "the run ended before the signal came";
+  // Both ranks read it back and go on (two more steps).
+  const auto at = log.find("step ");
+  ASSERT_NE(at, std::string::npos) << log;
+  const int step = std::atoi(log.c_str() + at + 5);
+  ASSERT_GT(step, 0) << log;
+  EXPECT_EQ(run(2, deck, cut, fmt::format("--threads 1 --resume --stop-after {}", step + 2)), 130)
+      << test::read_file(cut + ".log");
+  EXPECT_NE(test::read_file(cut + ".log").find(fmt::format("step {} of 500", step + 2)), std::string::npos);
+}
+
+TEST(MpiRanks, NonFiniteBoxOnOneRankStopsEveryRank) {
+  const std::string deck = deck_file("mpi_nan", 8);
+  // 7 points over 3 ranks: blocks [0, 2), [2, 4), [4, 7); point 5 is rank 2's.
+  for (const auto& [ranks, point, owner] : {std::tuple{3, 5, 2}, std::tuple{2, 1, 0}}) {
+    const std::string out = test::scratch_dir(fmt::format("mpi_nan_{}", ranks));
+    const std::string cmd =
+        fmt::format("MPMX_TEST_NAN_POINT={} {} -x MPMX_TEST_NAN_POINT '{}' run '{}' --out '{}' --quiet --no-plot "
+                    "--threads 1 > '{}.log' 2>&1",
+                    point, mpirun(ranks), MPMX_BINARY, deck, out, out);
+    const int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 3);  // stopped by the physics
+    const std::string log = test::read_file(out + ".log");
+    const std::string message =
+        fmt::format("rank {}: the MD box of material point {} gave a non-finite stress", owner, point);
+    EXPECT_NE(log.find("mpmx: run stopped: " + message), std::string::npos) << log;
+    EXPECT_EQ(log.find("mpmx: run stopped"), log.rfind("mpmx: run stopped")) << log;  // printed once
+    const std::string rec = test::read_file(out + "/run.json");
+    EXPECT_NE(rec.find("\"stopped\""), std::string::npos);
+    EXPECT_NE(rec.find(message), std::string::npos);
+    EXPECT_FALSE(test::read_file(out + "/particles.csv").empty());  // the partial result stays
+  }
+}
+
+}  // namespace
