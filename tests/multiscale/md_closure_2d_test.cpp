@@ -19,54 +19,8 @@ namespace {
 
 using namespace mpmx;
 
-// A copper flyer (x < 1.1 nm) moving at `up` km/s into copper at rest: 4 x 2 cells, one
-// point per cell, each point a box of 4 x 3^3 = 108 atoms; steps of 0.1 ps.
 mpm::MpmConfig impact_2d(double temperature, int steps, bool consistent = true) {
-  const std::string text = fmt::format(R"(
-[case]
-id = "md_closure_2d"
-units = "nm_ps_GPa"
-[grid]
-dim = 2
-lower = [0.0, 0.0]
-upper = [4.4, 2.2]
-cells = [4, 2]
-[particles]
-per_cell = [1, 1]
-[[body]]
-shape = "box"
-lower = [0.0, 0.0]
-upper = [1.1, 2.2]
-velocity = [0.5, 0.0]
-[[body]]
-shape = "box"
-lower = [1.1, 0.0]
-upper = [4.4, 2.2]
-[scheme]
-name = "cpdi"
-[material]
-model = "md_closure"
-[material.potential]
-style = "eam"
-file = "Cu_mishin1.eam.alloy"
-elements = ["Cu"]
-[material.md]
-cells = 3
-temperature = {}
-relax_steps = {}
-energy_consistency = {}
-[boundary]
-y_lower = {{ type = "roller" }}
-y_upper = {{ type = "roller" }}
-[time]
-dt = 0.1
-end = {}
-[output]
-times = []
-)",
-                                       temperature, temperature > 0 ? 20 : 0, consistent ? "true" : "false",
-                                       0.1 * steps);
-  return io::read_mpm_deck_text(text, "md_closure_2d");
+  return io::read_mpm_deck_text(test::flyer_2d_deck(temperature, steps, consistent), "md_closure_2d");
 }
 
 md::Mat3 gradient(double gxy, double gyx) {
