@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/io/checked_file.hpp"
 #include "mpmx/md/lattice.hpp"
 
 namespace mpmx::material {
@@ -104,8 +105,9 @@ void MdClosure::save(std::ostream& out) const {
 }
 
 void MdClosure::load(std::istream& in) {
-  std::uint64_t n = 0;
-  in.read(reinterpret_cast<char*>(&n), sizeof n);
+  // Each box takes far more than 64 bytes: the bound only keeps a damaged count from an
+  // allocation; the box count is checked against the deck's points by the caller.
+  const std::uint64_t n = io::read_count(in, 64, "md_closure boxes");
   in.read(reinterpret_cast<char*>(&atom_steps_), sizeof atom_steps_);
   if (!in) throw InputError("checkpoint: the MD boxes are truncated");
   boxes_.clear();

@@ -55,6 +55,7 @@ class MdClosure final : public Material<1> {
   double sound_speed(const Points<1>& p, std::size_t q) const override;
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;
+  long long state_points() const override { return static_cast<long long>(boxes_.size()); }
 
   const md::FccEquilibrium& equilibrium() const { return props_.equilibrium; }
   double density() const { return props_.density; }  // unstrained crystal, continuum units

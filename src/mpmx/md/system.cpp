@@ -11,6 +11,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
+#include "mpmx/io/checked_file.hpp"
 #include "mpmx/md/integrate.hpp"
 #include "mpmx/md/stress.hpp"
 #include "mpmx/md/thermal.hpp"
@@ -259,10 +260,19 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   char magic[8];
   in.read(magic, 8);
   if (!in || std::memcmp(magic, kMagic, 8) != 0) throw InputError("not an mpmx MD checkpoint");
-  std::uint64_t n;
-  get(in, n);
+  // 6 coordinates, a type and an id per atom at least: a damaged count is refused here.
+  const std::uint64_t n = io::read_count(in, 6 * sizeof(double) + sizeof(int), "MD atoms");
+  if (n == 0) throw InputError("MD checkpoint: a box of no atoms");
   Box box;
   get(in, box);
+  auto box_ok = [](const Box& b) {
+    for (double v : {b.lx, b.ly, b.lz})
+      if (!(std::isfinite(v) && v > 0.0)) return false;
+    for (double v : {b.xy, b.xz, b.yz})
+      if (!std::isfinite(v)) return false;
+    return true;
+  };
+  if (!box_ok(box)) throw InputError("MD checkpoint: a box edge is not a positive finite length");
   std::int64_t step;
   double time;
   Mat3 g;
@@ -277,6 +287,13 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   for (auto* v : {&a.x, &a.y, &a.z, &a.vx, &a.vy, &a.vz}) get_vec(in, *v, n);
   get_vec(in, a.type, n);
   get_vec(in, a.id, n);
+  const int types = potential.types();
+  for (const auto t : a.type)
+    if (t < 0 || t >= types)
+      throw InputError(fmt::format("MD checkpoint: atom type {} outside the potential's 0..{}", t, types - 1));
+  for (const auto* v : {&a.x, &a.y, &a.z, &a.vx, &a.vy, &a.vz})
+    for (double x : *v)
+      if (!std::isfinite(x)) throw InputError("MD checkpoint: a non-finite atom position or velocity");
   a.fx.assign(n, 0.0);
   a.fy.assign(n, 0.0);
   a.fz.assign(n, 0.0);
@@ -301,9 +318,13 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   Atoms at_build = s.atoms_;
   Box box_at_build;
   get(in, box_at_build);
+  if (!box_ok(box_at_build)) throw InputError("MD checkpoint: the neighbour list's box is not valid");
   get_vec(in, at_build.x, n);
   get_vec(in, at_build.y, n);
   get_vec(in, at_build.z, n);
+  for (const auto* v : {&at_build.x, &at_build.y, &at_build.z})
+    for (double x : *v)
+      if (!std::isfinite(x)) throw InputError("MD checkpoint: a non-finite position of the neighbour list");
   s.nb_.build(at_build, box_at_build, s.pot_.cutoff(), s.opt_.skin);
   s.nb_.builds = builds;
   s.nb_.update_positions(s.atoms_, s.box_);

@@ -20,6 +20,7 @@
 #include "mpmx/core/units.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/material/md_closure.hpp"
+#include "mpmx/io/checked_file.hpp"
 #include "mpmx/mpm/checkpoint.hpp"
 #include "mpmx/mpm/nodal_fields.hpp"
 #include "mpmx/mpm/output.hpp"
@@ -219,9 +220,9 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
                                    &wall_before, &r.stored_initial};
   };
   auto save_checkpoint = [&](Output* out, double wall_now) {
-    const std::string path = checkpoint_path(o.out_dir), tmp = path + ".tmp";
+    const std::string path = checkpoint_path(o.out_dir);
     {
-      std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+      std::ostringstream f(std::ios::binary);
       CheckpointOut w(f);
       w.text(deck_text(c));
       save_state(w, s);
@@ -245,39 +246,54 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
         w.text(name);
         w.integer(bytes);
       }
-      f.flush();
-      if (!f) throw RunError(fmt::format("cannot write the checkpoint {}", tmp));
+      if (!f) throw RunError(fmt::format("cannot write the checkpoint {}", path));
+      io::write_checked(path, run_checkpoint_kind(deck_text(c), s.particles.size()), f.view());
     }
-    std::filesystem::rename(tmp, path);
   };
   Output::Marks resume_marks;
   if (o.resume) {
     const std::string path = checkpoint_path(o.out_dir);
-    std::ifstream f(path, std::ios::binary);
-    CheckpointIn in(f, path);
+    std::istringstream f(io::read_checked(path, run_checkpoint_kind(deck_text(c), s.particles.size())),
+                         std::ios::binary);
+    CheckpointIn in(f, path, io::kCheckedHeaderBytes);
     if (in.text() != deck_text(c))
       throw InputError(fmt::format("{} was written for another deck (the deck changed since); run afresh "
                                    "without --resume",
                                    path));
     load_state(in, s);
+    // A checkpoint is written before the last step, never at or past it.
+    if (!c.cfl_dt && s.step >= steps)
+      throw in.refuse(io::kCheckedHeaderBytes, fmt::format("step {} is at or past the deck's last step {}", s.step, steps));
+    if (!(s.time < c.end))
+      throw in.refuse(io::kCheckedHeaderBytes, fmt::format("time {} is at or past the deck's end {}", s.time, c.end));
     for (double* v : carried()) *v = in.number();
     for (std::int64_t k = in.integer(); k > 0; --k) {
+      const long long at = in.offset();
       const std::string name = in.text();
       const auto e = in.numbers();
-      if (e.size() != 3) throw InputError(fmt::format("checkpoint {} is corrupt", path));
+      if (e.size() != 3) throw in.refuse(at, "an error norm of other than 3 numbers");
       r.errors[name] = {e[0], e[1], e[2]};
     }
     const auto fr = in.numbers();
     for (std::size_t k = 0; k + 1 < fr.size(); k += 2) fronts.emplace_back(fr[k], fr[k + 1]);
+    const long long at_rec = in.offset();
     try {
       rec.assign(toml::parse(in.text()));
     } catch (const toml::parse_error& e) {
-      throw InputError(fmt::format("checkpoint {}: its run record does not parse: {}", path, e.what()));
+      throw in.refuse(at_rec, fmt::format("its run record does not parse: {}", e.what()));
     }
     for (std::int64_t k = in.integer(); k > 0; --k) {
+      const long long at_name = in.offset();
       const std::string name = in.text();
-      resume_marks[name] = in.integer();
+      // A table of the run directory itself: never a path that leads out of it.
+      if (name.empty() || name.find_first_of("/\\") != std::string::npos || name.front() == '.')
+        throw in.refuse(at_name, fmt::format("'{}' is not a table name of a run directory", name));
+      const long long at = in.offset();
+      const std::int64_t bytes = in.integer();
+      if (bytes < 0) throw in.refuse(at, fmt::format("a table length of {} bytes", bytes));
+      resume_marks[name] = bytes;
     }
+    if (f.peek() != std::char_traits<char>::eof()) throw in.refuse(in.offset(), "trailing bytes after the state");
   }
   rec.set("threads", r.threads);
   std::unique_ptr<Output> out;
