@@ -8,6 +8,6 @@
 namespace mpmx::io {
 
 // Throws RunError when the file cannot be written (disk full, no permission).
-void write_file_atomically(const std::string& path, std::string_view bytes);
+void write_file_atomic(const std::string& path, std::string_view bytes);
 
 }  // namespace mpmx::io

@@ -110,7 +110,7 @@ std::string_view unframe(std::string_view b, const CheckedKind& k, const std::st
 }
 
 void write_checked(const std::string& path, const CheckedKind& k, std::string_view payload) {
-  write_file_atomically(path, frame(k, payload));
+  write_file_atomic(path, frame(k, payload));
 }
 
 std::string read_checked(const std::string& path, const CheckedKind& k) {

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <typeinfo>
@@ -21,6 +22,7 @@
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/material/md_closure.hpp"
 #include "mpmx/io/checked_file.hpp"
+#include "mpmx/io/staged_dir.hpp"
 #include "mpmx/mpm/checkpoint.hpp"
 #include "mpmx/mpm/nodal_fields.hpp"
 #include "mpmx/mpm/output.hpp"
@@ -170,8 +172,16 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   const MpmConfig& c = config;
   const bool checkpoints = !o.out_dir.empty();
   if (o.resume && !checkpoints) throw InputError("resuming needs the run's output directory");
-  if (o.resume && !std::filesystem::exists(checkpoint_path(o.out_dir)))
+  // Where this process writes (io/staged_dir.hpp): a fresh run in OUT/.staging, moved
+  // into OUT once it ends; a resumed run where its checkpoint lies (OUT, or the staging
+  // folder of a run that was killed before it ended).
+  const bool resume_staged = o.resume && !std::filesystem::exists(checkpoint_path(o.out_dir)) &&
+                             std::filesystem::exists(checkpoint_path(io::StagedDir::staging_of(o.out_dir)));
+  if (o.resume && !resume_staged && !std::filesystem::exists(checkpoint_path(o.out_dir)))
     throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(o.out_dir)));
+  std::optional<io::StagedDir> stage;
+  if (checkpoints && (!o.resume || resume_staged)) stage.emplace(o.out_dir, resume_staged);
+  const std::string dir = stage ? stage->path() : o.out_dir;
   RunResultOf<Dim> r;
   const bool md_closure = dynamic_cast<const material::MdClosureModel*>(c.material.spec.get()) != nullptr;
   if (!o.resume && !o.quiet && md_closure)
@@ -220,7 +230,7 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
                                    &wall_before, &r.stored_initial};
   };
   auto save_checkpoint = [&](Output* out, double wall_now) {
-    const std::string path = checkpoint_path(o.out_dir);
+    const std::string path = checkpoint_path(dir);
     {
       std::ostringstream f(std::ios::binary);
       CheckpointOut w(f);
@@ -252,7 +262,7 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   };
   Output::Marks resume_marks;
   if (o.resume) {
-    const std::string path = checkpoint_path(o.out_dir);
+    const std::string path = checkpoint_path(dir);
     std::istringstream f(io::read_checked(path, run_checkpoint_kind(deck_text(c), s.particles.size())),
                          std::ios::binary);
     CheckpointIn in(f, path, io::kCheckedHeaderBytes);
@@ -299,10 +309,10 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   std::unique_ptr<Output> out;
   std::unique_ptr<VtkOutput<Dim>> vtk;
   if (!o.out_dir.empty()) {
-    std::filesystem::create_directories(o.out_dir);
-    out = std::make_unique<Output>(o.out_dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles,
+    std::filesystem::create_directories(dir);
+    out = std::make_unique<Output>(dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles,
                                    resume_marks);
-    if (c.write_vtk) vtk = std::make_unique<VtkOutput<Dim>>(o.out_dir, o.resume ? s.time : -1.0);
+    if (c.write_vtk) vtk = std::make_unique<VtkOutput<Dim>>(dir, o.resume ? s.time : -1.0);
   }
   std::vector<double> u, uref, w;
   // Shock-front plateaus: the strain behind the right-going front is the mean of the
@@ -559,8 +569,9 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
 
   if (!o.out_dir.empty()) {
     out.reset();  // close the tables before plotting
-    rec.write(o.out_dir + "/run.json");
-    if (failure.empty() && !r.interrupted) std::filesystem::remove(checkpoint_path(o.out_dir));
+    rec.write(dir + "/run.json");
+    if (failure.empty() && !r.interrupted) std::filesystem::remove(checkpoint_path(dir));
+    if (stage) stage->publish();
     if (failure.empty() && !r.interrupted && o.plot && c.plot && (Dim == 1 || (Dim == 2 && vtk)) &&
         matplotlib_present()) {
       const std::string cmd =
