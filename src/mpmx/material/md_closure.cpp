@@ -112,7 +112,13 @@ void MdClosure::load(std::istream& in) {
   if (!in) throw InputError("checkpoint: the MD boxes are truncated");
   boxes_.clear();
   boxes_.reserve(n);
-  for (std::uint64_t q = 0; q < n; ++q) boxes_.push_back(md::System::load(in, pot_, box_options()));
+  for (std::uint64_t q = 0; q < n; ++q) {
+    try {
+      boxes_.push_back(md::System::load(in, pot_, box_options()));
+    } catch (const RunError& e) {  // a box the file describes that no run makes
+      throw InputError(fmt::format("the MD box of point {}: {}", q, e.what()));
+    }
+  }
   gradients_.assign(n, md::Mat3{});
   stress_.assign(n, md::Mat3{});
 }
