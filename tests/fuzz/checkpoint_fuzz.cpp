@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <sstream>
 
 #include "fuzz_util.hpp"
@@ -85,6 +86,9 @@ struct Case {
   std::string text;    // the deck's canonical text
   std::string file;    // a real checkpoint of it, after step 1
   std::string payload;
+  // Made once (its material reads the potential file) and loaded into by every input:
+  // load_state replaces all it reads, and keeps a particle array only once it is whole.
+  std::unique_ptr<mpm::State<1>> state;
 };
 
 std::string canonical(const mpm::MpmConfig& c) {
@@ -111,11 +115,12 @@ Case make_case(const char* deck, const std::string& name) {
   std::ifstream f(mpm::checkpoint_path(o.out_dir), std::ios::binary);
   k.file.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
   k.payload = std::string(io::unframe(k.file, kind_of(k), name));
+  k.state = std::make_unique<mpm::State<1>>(mpm::make_state<1>(k.config, false, 1));
   return k;
 }
 
 void parse(const Case& k, std::string_view payload) {
-  auto s = mpm::make_state<1>(k.config, false, 1);
+  mpm::State<1>& s = *k.state;
   std::istringstream f{std::string(payload), std::ios::binary};
   mpm::CheckpointIn in(f, "fuzz", io::kCheckedHeaderBytes);
   (void)in.text();

@@ -123,11 +123,13 @@ void load_state(CheckpointIn& in, State<Dim>& s) {
     *v = in.number();
   const std::size_t n = s.particles.size();
   each_array(s.particles, [&](std::vector<double>& v) {
+    // Read aside and kept only when whole: a refused checkpoint leaves the state as it was.
     const long long at_v = in.offset();
-    v = in.numbers();
-    if (v.size() != n) throw in.refuse(at_v, fmt::format("{} particles, the deck makes {}", v.size(), n));
-    for (double x : v)
+    std::vector<double> read = in.numbers();
+    if (read.size() != n) throw in.refuse(at_v, fmt::format("{} particles, the deck makes {}", read.size(), n));
+    for (double x : read)
       if (!std::isfinite(x)) throw in.refuse(at_v, "a non-finite particle value");
+    v.swap(read);
   });
   const long long at_m = in.offset();
   const std::string material = in.text();
