@@ -25,7 +25,9 @@ using mpm::Profile;
 const std::vector<std::string> kReferences{"standing_wave", "wave_reflection", "gas_wave",
                                            "riemann_isothermal", "shock_front", "direct_md"};
 
-Profile read_profile(Section s, double fallback) {
+// `lo`, `hi`: the grid along x, where a step or tanh front must lie (outside it the
+// profile is a uniform state, surely not what the deck meant).
+Profile read_profile(Section s, double fallback, double lo, double hi) {
   Profile p;
   p.value = fallback;
   if (!s.present()) return p;
@@ -45,6 +47,9 @@ Profile read_profile(Section s, double fallback) {
     p.left = s.number("left");
     p.right = s.number("right");
     p.at = s.number("at");
+    if (std::isfinite(p.at) && lo < hi)
+      s.check(p.at >= lo && p.at <= hi, "at",
+              fmt::format("must lie on the grid, from {} to {} (outside it the {} is a uniform state)", lo, hi, kind));
     if (kind == "tanh") {
       p.cells = s.number("cells");
       s.positive("cells", p.cells);
@@ -223,15 +228,15 @@ MpmConfig read(Deck& deck) {
   }
 
   Section in = root.optional_table("initial");
-  c.velocity = read_profile(in.optional_table("velocity"), 0.0);
+  c.velocity = read_profile(in.optional_table("velocity"), 0.0, c.lower, c.upper);
   const bool solid = mat.solid();
   if (solid) {
-    c.strain = read_profile(in.optional_table("strain"), 0.0);
+    c.strain = read_profile(in.optional_table("strain"), 0.0, c.lower, c.upper);
     if (in.has("pressure")) in.check(false, "pressure", "a solid takes [initial.strain], not pressure");
   } else {
     const auto* gas = dynamic_cast<const material::IdealGasModel*>(mat.spec.get());
     const double p_default = gas && gas->isothermal ? gas->c * gas->c * gas->rho : 1.0;
-    c.pressure = read_profile(in.optional_table("pressure"), p_default);
+    c.pressure = read_profile(in.optional_table("pressure"), p_default, c.lower, c.upper);
     if (in.has("strain")) in.check(false, "strain", "a gas takes [initial.pressure], not strain");
   }
 
