@@ -6,6 +6,7 @@
 #define MPMX_FUZZ_REPLAY
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
