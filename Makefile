@@ -2,10 +2,12 @@
 BUILD      ?= build
 ASAN_BUILD ?= build-asan
 BENCH_BUILD?= build-bench
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 600
 JOBS       ?= $(shell nproc)
 CTEST_ARGS ?=
 
-.PHONY: all deps build test test-release test-sanitize demo bench clean
+.PHONY: all deps build test test-release test-sanitize demo bench fuzz clean
 
 all: build
 
@@ -28,7 +30,7 @@ test-release: build
 test-sanitize: deps
 	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMPMX_SANITIZE=ON -DMPMX_NATIVE=OFF -DMPMX_BUILD_BENCH=OFF >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
-	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS) -LE 'slow|crosscheck' $(CTEST_ARGS)
+	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS) -LE 'slow|crosscheck|fuzz' $(CTEST_ARGS)
 
 demo: build
 	@scripts/demo $(BUILD)/mpmx
@@ -41,5 +43,12 @@ bench: deps
 	@cmake --build $(BENCH_BUILD) -j $(JOBS)
 	@scripts/bench $(BENCH_BUILD)
 
+# Every libFuzzer target (tests/fuzz) for FUZZ_SECONDS each, from its corpus in
+# tests/fuzz/corpus/; clang-14 builds them in FUZZ_BUILD (MPMX_FUZZ=ON). FUZZ_GROW=1
+# merges what the run found, minimised, back into the corpus.
+fuzz:
+	@scripts/install-deps --fuzz
+	@scripts/fuzz $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD) $(BENCH_BUILD)
+	rm -rf $(BUILD) $(ASAN_BUILD) $(BENCH_BUILD) $(FUZZ_BUILD)

@@ -77,6 +77,15 @@ int run(int argc, char** argv) {
   mpmx::app::add_md_commands(app);
   mpmx::app::add_dpd_commands(app);
   mpmx::app::apply_shared_checks(app);
+  // "mpmx --frob": an option before any command, other than the top level's own.
+  for (int i = 1; i < argc && argv[i][0] == '-'; ++i) {
+    const std::string w = argv[i];
+    if (w != "--help" && w != "-h" && w != "--version") {
+      fmt::print(stderr, "mpmx: unknown option '{}' (the top level takes --help and --version; the commands: {})\n",
+                 w, command_names(app));
+      return code::bad_input;
+    }
+  }
   if (const char* word = unknown_command(app, argc, argv)) {
     mpmx::ranks::mark_agreed();  // the same command line on every rank
     return finish(code::bad_input, fmt::format("mpmx: unknown command '{}': expected one of {} (mpmx --help)\n",

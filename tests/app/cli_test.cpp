@@ -58,6 +58,15 @@ TEST(Cli, UnknownCommandIsNamed) {
   EXPECT_EQ(r.output.find("A subcommand is required"), std::string::npos) << r.output;
 }
 
+TEST(Cli, UnknownTopLevelOptionIsNamed) {
+  for (const std::string args : {"--frob", "--frob run", "-x"}) {
+    const auto r = mpmx_cli(args);
+    EXPECT_EQ(r.status, 2) << r.output;
+    const std::string word = args.substr(0, args.find(' '));
+    EXPECT_NE(r.output.find("unknown option '" + word + "'"), std::string::npos) << r.output;
+  }
+}
+
 TEST(Cli, NoCommandSaysWhichAreThere) {
   const auto r = mpmx_cli("");
   EXPECT_EQ(r.status, 2) << r.output;

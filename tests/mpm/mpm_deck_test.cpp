@@ -124,3 +124,14 @@ TEST(MpmCli, CheckFailsAndRunWritesNothing) {
   EXPECT_EQ(std::system((bin + " check " + deck.string() + " >/dev/null").c_str()), 0);
   fs::remove_all(dir);
 }
+
+TEST(MpmDeck, StepFrontOffTheGrid) {
+  for (const char* profile : {"step", "tanh"}) {
+    const std::string v = std::string("[initial.velocity]\nprofile = \"") + profile +
+                          "\"\nleft = 0.1\nright = 0.0\nat = 5.0\n" + (profile[0] == 't' ? "cells = 2\n" : "");
+    EXPECT_HAS(error_of(replace(kGood, "[time]", v + "[time]")),
+               "key 'initial.velocity.at' = 5: must lie on the grid, from 0 to 1");
+    const std::string on = replace(v, "at = 5.0", "at = 0.5");
+    EXPECT_EQ(error_of(replace(kGood, "[time]", on + "[time]")), "(no error)");
+  }
+}

@@ -25,12 +25,12 @@ TEST(Interrupt, CtrlCLeavesACheckpointThatResumesExactly) {
   const std::string whole = test::scratch_dir("interrupt_whole"), cut = test::scratch_dir("interrupt_cut");
   const std::string run = fmt::format("'{}' run '{}' --quiet --no-plot --threads 2", MPMX_BINARY, deck);
   ASSERT_EQ(std::system(fmt::format("{} --out '{}' > /dev/null", run, whole).c_str()), 0);
-  // SIGINT once the step loop runs (energy.csv appears after the handler is set), then
-  // the exit status of the run.
+  // SIGINT once the step loop runs (energy.csv appears, in the run's staging folder,
+  // after the handler is set), then the exit status of the run.
   const std::string script = test::scratch_dir("interrupt_script") + "/interrupt.sh";
   {
     std::ofstream f(script);
-    f << fmt::format("{} --out '{}' > /dev/null 2> '{}/stderr' &\npid=$!\nfor i in $(seq 300); do [ -s '{}/energy.csv' ] && break; sleep 0.1; done\nkill -INT $pid\nwait $pid\n",
+    f << fmt::format("{} --out '{}' > /dev/null 2> '{}/stderr' &\npid=$!\nfor i in $(seq 300); do [ -s '{}/.staging/energy.csv' ] && break; sleep 0.1; done\nkill -INT $pid\nwait $pid\n",
                      run, cut, cut, cut);
   }
   const int status = std::system(("bash '" + script + "'").c_str());

@@ -124,14 +124,14 @@ TEST(MpiRanks, RebalanceKeepsTheBytes) {
 TEST(MpiRanks, CtrlCToMpirunWritesACheckpointOnEveryRank) {
   const std::string deck = deck_file("mpi_sigint", 500);
   const std::string cut = test::scratch_dir("mpi_sigint_cut");
-  // SIGINT to mpirun once the step loop runs (energy.csv appears after the handler is
-  // set). mpirun waits odls_base_sigkill_timeout seconds (1 by default), sends the
+  // SIGINT to mpirun once the step loop runs (energy.csv appears in the staging folder
+  // after the handler is set). mpirun waits odls_base_sigkill_timeout seconds (1 by default), sends the
   // ranks SIGTERM, waits as long again and kills them: 1 s to finish the step (tens of
   // milliseconds here) and write the checkpoint.
   const std::string script = cut + "/../mpi_sigint.sh";
   std::ofstream(script) << fmt::format(
       "{} '{}' run '{}' --out '{}' --quiet --no-plot --threads 1 > '{}.log' 2>&1 &\npid=$!\n"
-      "for i in $(seq 600); do [ -s '{}/energy.csv' ] && break; sleep 0.1; done\nkill -INT $pid\nwait $pid\n",
+      "for i in $(seq 600); do [ -s '{}/.staging/energy.csv' ] && break; sleep 0.1; done\nkill -INT $pid\nwait $pid\n",
       mpirun(2), MPMX_BINARY, deck, cut, cut, cut);
   const int status = std::system(("bash '" + script + "'").c_str());
   ASSERT_TRUE(WIFEXITED(status));

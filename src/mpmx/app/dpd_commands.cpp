@@ -12,6 +12,7 @@
 #include "mpmx/dpd/fit_run.hpp"
 #include "mpmx/dpd/run.hpp"
 #include "mpmx/io/deck.hpp"
+#include "mpmx/io/staged_dir.hpp"
 
 namespace mpmx::app {
 
@@ -39,7 +40,8 @@ void add_dpd_commands(CLI::App& app) {
     std::string out = args->out;
     if (out.empty()) out = "run-" + std::filesystem::path(args->deck).stem().string();
     const int threads = args->threads > 0 ? args->threads : static_cast<int>(hardware_threads());
-    const auto r = dpd::run_dpd(config, out, deck.table(), threads, args->quiet);
+    const auto r = io::run_staged(
+        out, [&](const std::string& dir) { return dpd::run_dpd(config, dir, deck.table(), threads, args->quiet); });
     fmt::print("{} particles, {} steps, {:.3g} s, {:.4g} particle-steps/s, mean T {:.2f} K -> {}/run.json\n",
                r.particles, r.steps, r.wall_seconds, r.particle_steps_per_second, r.temperature, out);
   });
@@ -60,7 +62,8 @@ void add_dpd_commands(CLI::App& app) {
     std::string out = fargs->out;
     if (out.empty()) out = "run-" + std::filesystem::path(fargs->deck).stem().string();
     const int threads = fargs->threads > 0 ? fargs->threads : static_cast<int>(hardware_threads());
-    const auto r = dpd::run_fit(config, out, deck.table(), threads);
+    const auto r =
+        io::run_staged(out, [&](const std::string& dir) { return dpd::run_fit(config, dir, deck.table(), threads); });
     fmt::print("morse D0 = {:.6g} eV, alpha = {:.6g} 1/A, r0 = {:.6g} A, rc = {} A; max |P_DPDE - P_MD| = {:.3g} of "
                "the MD range; zero-pressure rho/rho0 MD {:.5f} DPDE {:.5f}; {:.3g} s -> {}/{}\n",
                r.potential.d0, r.potential.alpha, r.potential.r0, r.potential.rc, r.max_deviation_over_range,

@@ -12,6 +12,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/io/deck.hpp"
+#include "mpmx/io/staged_dir.hpp"
 #include "mpmx/md/bar.hpp"
 #include "mpmx/md/budget.hpp"
 #include "mpmx/md/config.hpp"
@@ -139,7 +140,8 @@ void add_md_commands(CLI::App& app) {
       run_bar_lammps(args->deck, config, out, args->lammps_write_only, args->ranks);
       return;
     }
-    const auto r = md::run_md(config, out, deck.table(), args->quiet);
+    const auto r = io::run_staged(
+        out, [&](const std::string& dir) { return md::run_md(config, dir, deck.table(), args->quiet); });
     fmt::print("{} atoms, {} steps, {:.3g} s, {:.4g} atom-steps/s, PE {:.6f} eV/atom -> {}/run.json\n", r.atoms,
                r.steps, r.wall_seconds, r.atom_steps_per_second, r.potential_energy_per_atom, out);
   });

@@ -10,9 +10,11 @@
 
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/machine.hpp"
 #include "mpmx/core/ranks.hpp"
 #include "mpmx/io/mpm_deck.hpp"
 #include "mpmx/md/budget.hpp"
+#include "mpmx/mpm/budget.hpp"
 #include "mpmx/mpm/run.hpp"
 #include "mpmx/mpm/setup.hpp"
 
@@ -21,7 +23,7 @@ namespace mpmx::app {
 void add_mpm_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
-    bool quiet = false, no_plot = false, resume = false;
+    bool quiet = false, no_plot = false, resume = false, force = false;
     int threads = 0;
     std::int64_t checkpoint_every = 0, stop_after = 0;
     double checkpoint_minutes = 10.0, rebalance_above = 1.2;
@@ -35,6 +37,7 @@ void add_mpm_commands(CLI::App& app) {
   run->add_flag("--no-plot", args->no_plot, "do not draw figures");
   run->add_option("--threads,-j", args->threads, "threads for the MD boxes of md_closure (default: all cores)")
       ->check(CLI::NonNegativeNumber);
+  run->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   run->add_flag("--resume", args->resume, "continue from OUT/checkpoint.bin (bit-for-bit)");
   run->add_option("--checkpoint-every", args->checkpoint_every, "write OUT/checkpoint.bin every N steps")
       ->check(CLI::NonNegativeNumber);
@@ -48,9 +51,13 @@ void add_mpm_commands(CLI::App& app) {
   // For tests: stop as if interrupted after step N (a checkpoint at a known step).
   run->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   run->callback([args] {
-    // Every rank reads the deck; under MPI a bad one stops them all with one message.
+    // Every rank reads the deck and its estimate; under MPI a bad one stops them all with
+    // one message.
     mpm::MpmConfig cfg;
-    ranks::together([&] { cfg = io::read_mpm_deck(args->deck); });
+    ranks::together([&] {
+      cfg = io::read_mpm_deck(args->deck);
+      mpm::check_mpm_budget(mpm::estimate_mpm(cfg), physical_memory_bytes(), args->force);
+    });
     const std::string out =
         args->out.empty() ? "runs/" + std::filesystem::path(args->deck).stem().string() : args->out;
     mpm::RunOptions o;
@@ -85,8 +92,11 @@ void add_mpm_commands(CLI::App& app) {
 
   CLI::App* check = app.add_subcommand("check", "validate a continuum deck without running it");
   check->add_option("deck", args->deck, "TOML deck")->required()->check(CLI::ExistingFile);
+  check->add_flag("--force", args->force, "accept a work estimate over about a day (never the memory one)");
   check->callback([args] {
     const auto cfg = io::read_mpm_deck(args->deck);
+    const auto budget = mpm::estimate_mpm(cfg);
+    mpm::check_mpm_budget(budget, physical_memory_bytes(), args->force);
     if (cfg.dim == 1) {
       fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", args->deck, cfg.id, cfg.cells,
                  cfg.per_cell, cfg.steps(), mpm::scheme_name(cfg.scheme.scheme));
@@ -97,6 +107,9 @@ void add_mpm_commands(CLI::App& app) {
                  args->deck, cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), cfg.bodies.size(),
                  cfg.steps(), mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
     }
+    fmt::print("  estimate: about {} of memory, {:.3g} hours of work on one core{}\n", format_bytes(budget.bytes),
+               budget.seconds / 3600.0,
+               budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string());
     // A multiscale deck's work: every point's box for every MD step, before it runs.
     if (cfg.material.model == "md_closure") {
       const auto& md = cfg.material.md;

@@ -27,7 +27,10 @@ using mpm::Profile;
 const std::vector<std::string> kReferences{"standing_wave", "wave_reflection", "gas_wave",
                                            "riemann_isothermal", "shock_front", "direct_md"};
 
-Profile read_profile(Section s, double fallback, int dim) {
+// A step or tanh front must lie on the grid, along the profile's normal (outside it the
+// profile is a uniform state, surely not what the deck meant).
+Profile read_profile(Section s, double fallback, const mpm::MpmConfig& c) {
+  const int dim = c.dim;
   Profile p;
   p.value = fallback;
   if (!s.present()) return p;
@@ -63,6 +66,16 @@ Profile read_profile(Section s, double fallback, int dim) {
       p.normal = {0.0, 0.0, 0.0};
       for (int d = 0; d < dim; ++d) p.normal[d] = n[d] / len;
     }
+  }
+  if ((kind == "step" || kind == "tanh") && std::isfinite(p.at)) {
+    double lo = 0.0, hi = 0.0;  // n . x over the grid's box
+    for (int d = 0; d < dim; ++d) {
+      const double a = p.normal[d] * c.lower_all[d], b = p.normal[d] * c.upper_all[d];
+      lo += std::min(a, b), hi += std::max(a, b);
+    }
+    if (lo < hi)
+      s.check(p.at >= lo && p.at <= hi, "at",
+              fmt::format("must lie on the grid, from {} to {} (outside it the {} is a uniform state)", lo, hi, kind));
   }
   return p;
 }
@@ -265,15 +278,15 @@ MpmConfig read(Deck& deck) {
   }
 
   Section in = root.optional_table("initial");
-  c.velocity = read_profile(in.optional_table("velocity"), 0.0, dim);
+  c.velocity = read_profile(in.optional_table("velocity"), 0.0, c);
   const bool solid = mat.solid();
   if (solid) {
-    c.strain = read_profile(in.optional_table("strain"), 0.0, dim);
+    c.strain = read_profile(in.optional_table("strain"), 0.0, c);
     if (in.has("pressure")) in.check(false, "pressure", "a solid takes [initial.strain], not pressure");
   } else {
     const auto* gas = dynamic_cast<const material::IdealGasModel*>(mat.spec.get());
     const double p_default = gas && gas->isothermal ? gas->c * gas->c * gas->rho : 1.0;
-    c.pressure = read_profile(in.optional_table("pressure"), p_default, dim);
+    c.pressure = read_profile(in.optional_table("pressure"), p_default, c);
     if (in.has("strain")) in.check(false, "strain", "a gas takes [initial.pressure], not strain");
   }
 

@@ -130,17 +130,4 @@ std::string json_text(const toml::table& table) {
 
 void RunRecord::write(const std::string& path) const { write_file_atomic(path, json()); }
 
-void write_file_atomic(const std::string& path, std::string_view text) {
-  std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw RunError(fmt::format("cannot write {}", tmp));
-    f.write(text.data(), static_cast<std::streamsize>(text.size()));
-    if (!f) throw RunError(fmt::format("cannot write {}", tmp));
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw RunError(fmt::format("cannot move {} to {}: {}", tmp, path, ec.message()));
-}
-
 }  // namespace mpmx::io

@@ -9,6 +9,8 @@
 
 #include <toml++/toml.h>
 
+#include "mpmx/io/atomic_file.hpp"
+
 namespace mpmx::io {
 
 class RunRecord {
@@ -39,8 +41,6 @@ class RunRecord {
   toml::table root_;
 };
 
-// Writes `text` to `path` atomically (temporary file in the same folder, then rename).
-void write_file_atomic(const std::string& path, std::string_view text);
 
 // The JSON text of a table (toml++'s JSON layout), valid JSON whatever it holds: each
 // non-finite number becomes null, and the root gets "non_finite": the dotted keys of

@@ -10,6 +10,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
+#include "mpmx/io/checked_file.hpp"
 #include "mpmx/material/md_closure.hpp"
 #include "mpmx/md/config.hpp"
 
@@ -114,9 +115,8 @@ void CubicElastic<Dim>::save(std::ostream& out) const {
 
 template <int Dim>
 void CubicElastic<Dim>::load(std::istream& in) {
-  std::uint64_t n = 0;
-  in.read(reinterpret_cast<char*>(&n), sizeof n);
-  if (!in || n % (Dim * Dim) != 0 || (Dim == 1 && n != 0))
+  const std::uint64_t n = io::read_count(in, sizeof(double), "cubic_elastic axes");
+  if (n % (Dim * Dim) != 0 || (Dim == 1 && n != 0))
     throw InputError("checkpoint: the cubic_elastic crystal axes are missing or malformed");
   axes_.assign(n, 0.0);
   in.read(reinterpret_cast<char*>(axes_.data()), static_cast<std::streamsize>(n * sizeof(double)));

@@ -78,6 +78,9 @@ class CubicElastic final : public Material<Dim> {
   // The crystal axes of every point (Dim x Dim, row-major), in point order.
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;
+  long long state_points() const override {
+    return axes_.empty() ? -1 : static_cast<long long>(axes_.size() / (Dim * Dim));
+  }
 
   const CubicConstants& constants() const { return c_; }
   // The crystal axes of point q as columns in the grid frame (identity in 1-D).

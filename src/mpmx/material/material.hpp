@@ -40,6 +40,9 @@ class Material {
   // Per-point state beyond the point arrays, for checkpoints (none by default).
   virtual void save(std::ostream&) const {}
   virtual void load(std::istream&) {}
+  // The points the per-point state is for (after load, checked against the deck's), or
+  // -1 when the law keeps none.
+  virtual long long state_points() const { return -1; }
 };
 
 }  // namespace mpmx::material

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/io/checked_file.hpp"
 #include "mpmx/md/lattice.hpp"
 
 namespace mpmx::material {
@@ -286,17 +287,22 @@ void MdClosure<Dim>::save(std::ostream& out) const {
 
 template <int Dim>
 void MdClosure<Dim>::load(std::istream& in) {
-  std::uint64_t n = 0;
-  read_raw(in, n);
+  // Each box takes far more than 64 bytes: the bound only keeps a damaged count from an
+  // allocation; the box count is checked against the deck's points by the caller.
+  const std::uint64_t n = io::read_count(in, 64, "md_closure boxes");
   read_raw(in, atom_steps_);
-  if (!in || n > (std::uint64_t{1} << 40)) throw InputError("checkpoint: the MD boxes are truncated or damaged");
+  if (!in) throw InputError("checkpoint: the MD boxes are truncated");
   spread_ = multiscale::Spread(n);
   boxes_.clear();
   boxes_.reserve(spread_.count());
   // Every box is read (the run's own figures follow them); this rank keeps its block.
   for (std::uint64_t q = 0; q < n; ++q) {
-    md::System box = md::System::load(in, pot_, box_options());
-    if (spread_.owns(q)) boxes_.push_back(std::move(box));
+    try {
+      md::System box = md::System::load(in, pot_, box_options());
+      if (spread_.owns(q)) boxes_.push_back(std::move(box));
+    } catch (const RunError& e) {  // a box the file describes that no run makes
+      throw InputError(fmt::format("the MD box of point {}: {}", q, e.what()));
+    }
   }
   read_raw(in, injected_ev_);
   read_raw(in, shortfall_ev_);

@@ -83,6 +83,8 @@ class MdClosure final : public Material<Dim> {
   void load(std::istream& in) override;
   // Moves boxes between ranks so that each block's measured cost is about equal.
   bool rebalance(double threshold) override;
+  // Every point's box (all ranks'): what a checkpoint holds, checked against the deck.
+  long long state_points() const override { return static_cast<long long>(spread_.points()); }
 
   const md::FccEquilibrium& equilibrium() const { return props_.equilibrium; }
   double density() const { return props_.density; }  // unstrained crystal, continuum units

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/io/checked_file.hpp"
 
 namespace mpmx::material {
 
@@ -143,10 +144,7 @@ void MieGruneisen<Dim>::save(std::ostream& out) const {
 
 template <int Dim>
 void MieGruneisen<Dim>::load(std::istream& in) {
-  std::uint64_t n = 0;
-  in.read(reinterpret_cast<char*>(&n), sizeof n);
-  if (!in || n > (std::uint64_t{1} << 40))
-    throw InputError("checkpoint: the mie_gruneisen state is missing or malformed");
+  const std::uint64_t n = io::read_count(in, 2 * sizeof(double) + sizeof(s_[0]), "mie_gruneisen points");
   e_.assign(n, 0.0);
   v_.assign(n, 0.0);
   s_.assign(n, {});

@@ -102,6 +102,7 @@ class MieGruneisen final : public Material<Dim> {
   // e, v and the six deviator components of every point, in point order.
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;
+  long long state_points() const override { return static_cast<long long>(e_.size()); }
 
   // Adds the work of the viscous stress qv (Dim x Dim, what tensor_viscosity wrote) over
   // the step, dt qv : D / rho, to e, and the pressure it raises to the stress. Call it

@@ -25,6 +25,15 @@ constexpr double kBytesFixed = 16.0 * 1024 * 1024;
 
 }  // namespace
 
+double box_bytes(const double n[3], double a, double reach) {
+  const double atoms = 4.0 * n[0] * n[1] * n[2], density = 4.0 / (a * a * a);
+  double entries = density;
+  for (int d = 0; d < 3; ++d) entries *= n[d] * a + 2.0 * reach;
+  entries = std::max(entries, atoms);
+  const double pairs = atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density;
+  return kBytesPerLocal * atoms + kBytesPerEntry * entries + kBytesPerPair * pairs;
+}
+
 MdBudget estimate_md(const MdConfig& c, double cutoff) {
   MdBudget b;
   const double a = c.lattice_constant, reach = cutoff + c.options.skin;

@@ -23,6 +23,11 @@ struct MdBudget {
   std::string work_key;    // "run.steps" or "thermal.relax_steps + run.steps"
 };
 
+// Bytes of one periodic fcc box of n[0] x n[1] x n[2] cells of lattice constant `a`
+// whose forces reach `reach` (cutoff + skin), without the program's fixed share: the
+// same fit as estimate_md, for the md_closure boxes of a continuum deck.
+double box_bytes(const double n[3], double a, double reach);
+
 // `cutoff`: the potential's (Potential::cutoff()).
 MdBudget estimate_md(const MdConfig& c, double cutoff);
 

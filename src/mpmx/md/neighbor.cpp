@@ -90,8 +90,16 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) 
   for (int d = 0; d < 3; ++d) {
     nb[d] = std::max(1, static_cast<int>(ext[d] / rs));
     nb[d] = std::min(nb[d], 1024);
-    inv[d] = nb[d] / ext[d];
   }
+  // Never many more bins than entries, however large and empty the box (a system that
+  // flew apart, a box read from a checkpoint): fewer, larger bins hold the same pairs.
+  // A bin of edge rs in a solid holds tens of atoms, so this never binds there.
+  const long long max_bins = 8LL * nall + 4096;
+  while (static_cast<long long>(nb[0]) * nb[1] * nb[2] > max_bins) {
+    int& widest = *std::max_element(nb, nb + 3);
+    widest = std::max(1, widest / 2);
+  }
+  for (int d = 0; d < 3; ++d) inv[d] = nb[d] / ext[d];
   auto bin_of = [&](int k, int d) {
     const double p = (d == 0 ? x[k] : d == 1 ? y[k] : z[k]) - lo[d];
     return std::clamp(static_cast<int>(p * inv[d]), 0, nb[d] - 1);

@@ -11,6 +11,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
+#include "mpmx/io/checked_file.hpp"
 #include "mpmx/md/integrate.hpp"
 #include "mpmx/md/stress.hpp"
 #include "mpmx/md/thermal.hpp"
@@ -272,10 +273,27 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   char magic[8];
   in.read(magic, 8);
   if (!in || std::memcmp(magic, kMagic, 8) != 0) throw InputError("not an mpmx MD checkpoint");
-  std::uint64_t n;
-  get(in, n);
+  // 6 coordinates, a type and an id per atom at least: a damaged count is refused here.
+  const std::uint64_t n = io::read_count(in, 6 * sizeof(double) + sizeof(int), "MD atoms");
+  if (n == 0) throw InputError("MD checkpoint: a box of no atoms");
   Box box;
   get(in, box);
+  // Bounds no saved run comes near, which keep the neighbour list's image counts (at most
+  // 127 a side) and its integer arithmetic in range for whatever the file says.
+  const double reach = potential.cutoff() + options.skin;
+  auto box_ok = [&](const Box& b) {
+    for (double v : {b.lx, b.ly, b.lz})
+      if (!(v >= reach / 64 && v <= 1e6 * reach)) return false;
+    return std::abs(b.xy) <= 64 * b.lx && std::abs(b.xz) <= 64 * b.lx && std::abs(b.yz) <= 64 * b.ly;
+  };
+  auto inside = [](const Box& b, double x, double y, double z) {
+    return std::abs(x) <= 2 * (b.lx + std::abs(b.xy) + std::abs(b.xz)) && std::abs(y) <= 2 * (b.ly + std::abs(b.yz)) &&
+           std::abs(z) <= 2 * b.lz;
+  };
+  if (!box_ok(box))
+    throw InputError(fmt::format("MD checkpoint: box {} x {} x {} (tilts {}, {}, {}) is not one a run makes for a "
+                                 "reach of {} A",
+                                 box.lx, box.ly, box.lz, box.xy, box.xz, box.yz, reach));
   std::int64_t step;
   double time;
   Mat3 g;
@@ -290,6 +308,17 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   for (auto* v : {&a.x, &a.y, &a.z, &a.vx, &a.vy, &a.vz}) get_vec(in, *v, n);
   get_vec(in, a.type, n);
   get_vec(in, a.id, n);
+  const int types = potential.types();
+  for (const auto t : a.type)
+    if (t < 0 || t >= types)
+      throw InputError(fmt::format("MD checkpoint: atom type {} outside the potential's 0..{}", t, types - 1));
+  for (const auto* v : {&a.vx, &a.vy, &a.vz})
+    for (double x : *v)
+      if (!std::isfinite(x)) throw InputError("MD checkpoint: a non-finite atom velocity");
+  for (std::size_t i = 0; i < n; ++i)
+    if (!inside(box, a.x[i], a.y[i], a.z[i]))
+      throw InputError(fmt::format("MD checkpoint: atom {} at ({}, {}, {}) lies far outside its box", i, a.x[i],
+                                   a.y[i], a.z[i]));
   a.fx.assign(n, 0.0);
   a.fy.assign(n, 0.0);
   a.fz.assign(n, 0.0);
@@ -314,9 +343,13 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   Atoms at_build = s.atoms_;
   Box box_at_build;
   get(in, box_at_build);
+  if (!box_ok(box_at_build)) throw InputError("MD checkpoint: the neighbour list's box is not valid");
   get_vec(in, at_build.x, n);
   get_vec(in, at_build.y, n);
   get_vec(in, at_build.z, n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (!inside(box_at_build, at_build.x[i], at_build.y[i], at_build.z[i]))
+      throw InputError(fmt::format("MD checkpoint: the neighbour list's atom {} lies far outside its box", i));
   s.nb_.build(at_build, box_at_build, s.pot_.cutoff(), s.opt_.skin);
   s.nb_.builds = builds;
   s.nb_.update_positions(s.atoms_, s.box_);

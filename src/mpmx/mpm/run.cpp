@@ -23,6 +23,8 @@
 #include "mpmx/core/units.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/material/md_closure.hpp"
+#include "mpmx/io/checked_file.hpp"
+#include "mpmx/io/staged_dir.hpp"
 #include "mpmx/mpm/checkpoint.hpp"
 #include "mpmx/mpm/convergence.hpp"
 #include "mpmx/mpm/nodal_fields.hpp"
@@ -179,8 +181,19 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   const MpmConfig& c = config;
   const bool checkpoints = !o.out_dir.empty();
   if (o.resume && !checkpoints) throw InputError("resuming needs the run's output directory");
-  if (o.resume && !std::filesystem::exists(checkpoint_path(o.out_dir)))
+  // Where this process writes (io/staged_dir.hpp): a fresh run in OUT/.staging, moved
+  // into OUT once it ends; a resumed run where its checkpoint lies (OUT, or the staging
+  // folder of a run that was killed before it ended).
+  const bool resume_staged = o.resume && !std::filesystem::exists(checkpoint_path(o.out_dir)) &&
+                             std::filesystem::exists(checkpoint_path(io::StagedDir::staging_of(o.out_dir)));
+  if (o.resume && !resume_staged && !std::filesystem::exists(checkpoint_path(o.out_dir)))
     throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(o.out_dir)));
+  // Under MPI the ranks agree on it after all have looked, before rank 0 (the only writer)
+  // touches the folder.
+  const bool staged = checkpoints && (!o.resume || ranks::max({resume_staged ? 1.0 : 0.0})[0] > 0.0);
+  std::optional<io::StagedDir> stage;
+  if (staged && ranks::root()) stage.emplace(o.out_dir, o.resume);
+  const std::string dir = staged ? io::StagedDir::staging_of(o.out_dir) : o.out_dir;
   RunResultOf<Dim> r;
   const bool md_closure = dynamic_cast<const material::MdClosureModel*>(c.material.spec.get()) != nullptr;
   if (!o.resume && !o.quiet && md_closure && ranks::root())
@@ -241,13 +254,10 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   };
   // Collective under MPI (the material gathers its per-point state); rank 0 writes.
   auto save_checkpoint = [&](Output* out, double wall_now) {
-    const std::string path = checkpoint_path(o.out_dir), tmp = path + ".tmp";
+    const std::string path = checkpoint_path(dir);
     const bool writer = ranks::root();
     {
-      std::ofstream file;
-      std::ostream nowhere(nullptr);  // the other ranks' copy of the fields goes nowhere
-      if (writer) file.open(tmp, std::ios::binary | std::ios::trunc);
-      std::ostream& f = writer ? static_cast<std::ostream&>(file) : nowhere;
+      std::ostringstream f(std::ios::binary);  // every rank fills it; rank 0 writes it
       CheckpointOut w(f);
       w.text(deck_text(c));
       save_state(w, s);
@@ -271,40 +281,55 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
         w.text(name);
         w.integer(bytes);
       }
-      f.flush();
-      if (writer && !f) throw RunError(fmt::format("cannot write the checkpoint {}", tmp));
+      if (!f) throw RunError(fmt::format("cannot write the checkpoint {}", path));
+      if (writer) io::write_checked(path, run_checkpoint_kind(deck_text(c), s.particles.size()), f.view());
     }
-    if (writer) std::filesystem::rename(tmp, path);
   };
   Output::Marks resume_marks;
   // Every rank reads the checkpoint (and keeps its block of the material's state).
   if (o.resume) ranks::together([&] {
-    const std::string path = checkpoint_path(o.out_dir);
-    std::ifstream f(path, std::ios::binary);
-    CheckpointIn in(f, path);
+    const std::string path = checkpoint_path(dir);
+    std::istringstream f(io::read_checked(path, run_checkpoint_kind(deck_text(c), s.particles.size())),
+                         std::ios::binary);
+    CheckpointIn in(f, path, io::kCheckedHeaderBytes);
     if (in.text() != deck_text(c))
       throw InputError(fmt::format("{} was written for another deck (the deck changed since); run afresh "
                                    "without --resume",
                                    path));
     load_state(in, s);
+    // A checkpoint is written before the last step, never at or past it.
+    if (!c.cfl_dt && s.step >= steps)
+      throw in.refuse(io::kCheckedHeaderBytes, fmt::format("step {} is at or past the deck's last step {}", s.step, steps));
+    if (!(s.time < c.end))
+      throw in.refuse(io::kCheckedHeaderBytes, fmt::format("time {} is at or past the deck's end {}", s.time, c.end));
     for (double* v : carried()) *v = in.number();
     for (std::int64_t k = in.integer(); k > 0; --k) {
+      const long long at = in.offset();
       const std::string name = in.text();
       const auto e = in.numbers();
-      if (e.size() != 3) throw InputError(fmt::format("checkpoint {} is corrupt", path));
+      if (e.size() != 3) throw in.refuse(at, "an error norm of other than 3 numbers");
       r.errors[name] = {e[0], e[1], e[2]};
     }
     const auto fr = in.numbers();
     for (std::size_t k = 0; k + 1 < fr.size(); k += 2) fronts.emplace_back(fr[k], fr[k + 1]);
+    const long long at_rec = in.offset();
     try {
       rec.assign(toml::parse(in.text()));
     } catch (const toml::parse_error& e) {
-      throw InputError(fmt::format("checkpoint {}: its run record does not parse: {}", path, e.what()));
+      throw in.refuse(at_rec, fmt::format("its run record does not parse: {}", e.what()));
     }
     for (std::int64_t k = in.integer(); k > 0; --k) {
+      const long long at_name = in.offset();
       const std::string name = in.text();
-      resume_marks[name] = in.integer();
+      // A table of the run directory itself: never a path that leads out of it.
+      if (name.empty() || name.find_first_of("/\\") != std::string::npos || name.front() == '.')
+        throw in.refuse(at_name, fmt::format("'{}' is not a table name of a run directory", name));
+      const long long at = in.offset();
+      const std::int64_t bytes = in.integer();
+      if (bytes < 0) throw in.refuse(at, fmt::format("a table length of {} bytes", bytes));
+      resume_marks[name] = bytes;
     }
+    if (f.peek() != std::char_traits<char>::eof()) throw in.refuse(in.offset(), "trailing bytes after the state");
   });
   rec.set("threads", r.threads);
   rec.set("ranks", static_cast<std::int64_t>(ranks::size()));
@@ -312,10 +337,9 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   std::unique_ptr<VtkOutput<Dim>> vtk;
   ranks::together([&] {  // output from rank 0 only; a folder it cannot make stops all
     if (o.out_dir.empty() || !ranks::root()) return;
-    std::filesystem::create_directories(o.out_dir);
-    out = std::make_unique<Output>(o.out_dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles,
-                                   resume_marks);
-    if (c.write_vtk) vtk = std::make_unique<VtkOutput<Dim>>(o.out_dir, o.resume ? s.time : -1.0);
+    std::filesystem::create_directories(dir);
+    out = std::make_unique<Output>(dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles, resume_marks);
+    if (c.write_vtk) vtk = std::make_unique<VtkOutput<Dim>>(dir, o.resume ? s.time : -1.0);
   });
   std::vector<double> u, uref, w;
   // Shock-front plateaus: the strain behind the right-going front is the mean of the
@@ -654,8 +678,9 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
 
   if (!o.out_dir.empty() && ranks::root()) {
     out.reset();  // close the tables before plotting
-    rec.write(o.out_dir + "/run.json");
-    if (failure.empty() && !r.interrupted) std::filesystem::remove(checkpoint_path(o.out_dir));
+    rec.write(dir + "/run.json");
+    if (failure.empty() && !r.interrupted) std::filesystem::remove(checkpoint_path(dir));
+    if (stage) stage->publish();
     if (failure.empty() && !r.interrupted && o.plot && c.plot && (Dim == 1 || (Dim == 2 && vtk)) &&
         matplotlib_present()) {
       const std::string cmd =

@@ -19,8 +19,10 @@ std::string resolve_potential_file(const std::string& name, const std::string& d
     tried.push_back(deck_dir.empty() ? p : fs::path(deck_dir) / p);
     tried.push_back(fs::path("/usr/share/lammps/potentials") / p);
   }
+  // The error_code form: a name the system cannot even look up (too long, bad bytes) is
+  // a file not found, not an exception from the filesystem.
   for (const auto& t : tried)
-    if (fs::is_regular_file(t)) return t.string();
+    if (std::error_code ec; fs::is_regular_file(t, ec)) return t.string();
   std::vector<std::string> names;
   for (const auto& t : tried) names.push_back(t.string());
   throw InputError(fmt::format("potential file '{}' not found (tried: {})", name, fmt::join(names, ", ")));

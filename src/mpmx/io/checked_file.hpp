@@ -1,0 +1,49 @@
+#pragma once
+// The framing shared by every checkpoint kind: a fixed header (magic, kind, format
+// version, a hash of the deck's canonical text, a count the deck fixes, the payload's
+// size and CRC-32, the header's own CRC-32) before an opaque payload. A reader trusts no
+// byte it has not checked: a damaged, truncated or foreign file is refused with the byte
+// offset and the reason (InputError, exit status 2), before any of the payload is parsed.
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+
+namespace mpmx::io {
+
+// What a reader expects; `kind` is at most 8 characters ("mpm_run").
+struct CheckedKind {
+  std::string_view kind;
+  std::uint32_t version = 1;
+  std::uint64_t deck_hash = 0;  // text_hash of the deck's canonical text
+  std::uint64_t count = 0;      // e.g. the particles the deck makes
+};
+
+inline constexpr std::size_t kCheckedHeaderBytes = 56;
+
+// FNV-1a 64 of a text: the deck identity kept in the header.
+std::uint64_t text_hash(std::string_view text);
+
+// zlib's CRC-32 of a byte range.
+std::uint32_t crc32_of(std::string_view bytes);
+
+// Header + payload, as written.
+std::string frame(const CheckedKind& k, std::string_view payload);
+
+// The payload of `bytes` once every header field and both checksums agree with `k`;
+// `name` (the file) starts each message. Throws InputError otherwise.
+std::string_view unframe(std::string_view bytes, const CheckedKind& k, const std::string& name);
+
+// frame() written atomically to `path` (through path + ".tmp"); read_checked reads
+// `path` whole and unframes it.
+void write_checked(const std::string& path, const CheckedKind& k, std::string_view payload);
+std::string read_checked(const std::string& path, const CheckedKind& k);
+
+// A count read from a payload stream (u64), refused unless the `bytes_each` bytes per
+// item it announces are still there: a damaged count never reaches an allocation.
+std::uint64_t read_count(std::istream& in, std::size_t bytes_each, const char* what);
+
+// The payload byte `in` stands at (for messages), or -1.
+long long payload_offset(std::istream& in);
+
+}  // namespace mpmx::io

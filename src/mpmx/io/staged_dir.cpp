@@ -1,0 +1,43 @@
+#include "mpmx/io/staged_dir.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+
+namespace mpmx::io {
+
+namespace fs = std::filesystem;
+
+std::string StagedDir::staging_of(const std::string& out) { return (fs::path(out) / ".staging").string(); }
+
+StagedDir::StagedDir(std::string out, bool keep) : out_(std::move(out)), staging_(staging_of(out_)), keep_(keep) {
+  std::error_code ec;
+  out_existed_ = fs::exists(out_, ec);
+  if (!keep) fs::remove_all(staging_, ec);
+}
+
+void StagedDir::publish() {
+  std::error_code ec;
+  if (fs::is_directory(staging_, ec)) {
+    for (const auto& e : fs::directory_iterator(staging_)) {
+      const fs::path to = fs::path(out_) / e.path().filename();
+      // A folder (vtk/) replaces the earlier run's whole; a file is renamed over.
+      if (e.is_directory() && fs::exists(to)) fs::remove_all(to);
+      fs::rename(e.path(), to, ec);
+      if (ec) throw RunError(fmt::format("cannot move {} to {}: {}", e.path().string(), to.string(), ec.message()));
+    }
+    fs::remove_all(staging_, ec);
+  }
+  published_ = true;
+}
+
+StagedDir::~StagedDir() {
+  if (published_ || keep_) return;
+  std::error_code ec;
+  fs::remove_all(staging_, ec);
+  if (!out_existed_ && fs::is_empty(out_, ec) && !ec) fs::remove(out_, ec);
+}
+
+}  // namespace mpmx::io

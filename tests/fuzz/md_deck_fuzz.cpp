@@ -1,0 +1,34 @@
+// The MD deck reader and validator (with the potential file it names, parsed as `mpmx md
+// --check` parses it) and the MD memory and work estimate.
+#include <cstdint>
+
+#include "fuzz_util.hpp"
+#include "mpmx/core/error.hpp"
+#include "mpmx/io/deck.hpp"
+#include "mpmx/md/budget.hpp"
+#include "mpmx/md/config.hpp"
+#include "mpmx/md/potential/potential.hpp"
+
+namespace mpmx::fuzz {
+
+inline int md_deck(const std::uint8_t* data, std::size_t size) {
+  using namespace mpmx;
+  const std::string path = fuzz::as_file("md.toml", fuzz::view(data, size));
+  try {
+    auto deck = io::Deck::from_file(path);
+    const md::MdConfig c = md::read_md_config(deck);
+    const md::Potential pot(c.potential);
+    md::check_md_budget(md::estimate_md(c, pot.cutoff()), std::uint64_t{1} << 34, false);
+  } catch (const InputError&) {
+  }
+  return 0;
+}
+
+}  // namespace mpmx::fuzz
+
+// tests/fuzz/fuzz_replay_test.cpp includes every target with MPMX_FUZZ_REPLAY.
+#ifndef MPMX_FUZZ_REPLAY
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return mpmx::fuzz::md_deck(data, size);
+}
+#endif

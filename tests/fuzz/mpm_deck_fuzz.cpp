@@ -1,0 +1,31 @@
+// The continuum deck reader and validator, and the memory and work estimate `mpmx check`
+// makes: any text is either a valid deck or an InputError, never a crash or a hang.
+#include <cstdint>
+
+#include "fuzz_util.hpp"
+#include "mpmx/core/error.hpp"
+#include "mpmx/io/mpm_deck.hpp"
+#include "mpmx/mpm/budget.hpp"
+
+namespace mpmx::fuzz {
+
+inline int mpm_deck(const std::uint8_t* data, std::size_t size) {
+  using namespace mpmx;
+  // A path given in the deck (reference.file, a potential) resolves against this folder.
+  const std::string path = fuzz::as_file("deck.toml", fuzz::view(data, size));
+  try {
+    const auto c = io::read_mpm_deck(path);
+    mpm::check_mpm_budget(mpm::estimate_mpm(c), std::uint64_t{1} << 34, false);
+  } catch (const InputError&) {
+  }
+  return 0;
+}
+
+}  // namespace mpmx::fuzz
+
+// tests/fuzz/fuzz_replay_test.cpp includes every target with MPMX_FUZZ_REPLAY.
+#ifndef MPMX_FUZZ_REPLAY
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return mpmx::fuzz::mpm_deck(data, size);
+}
+#endif
