@@ -83,3 +83,25 @@ TEST(J2Tiny, DdmpMdFollowsTheDirectMdJet) {
   EXPECT_GT(r.stress_vs_direct_md, 0.05);
   EXPECT_LT(r.momentum_error(), 1e-9 * r.momentum_scale + 1e-12);
 }
+
+// The cluster decks pass `mpmx check` for the ranks they are meant for, and one process
+// here is refused with the memory figure (never forced).
+TEST(J2Decks, ClusterDecksPassCheckForTheirRanks) {
+  auto check = [](const std::string& deck, const std::string& extra) {
+    const std::string out = test::scratch_dir("j2_check") + "/log";
+    const std::string cmd = std::string(MPMX_BINARY) + " check " + MPMX_SOURCE_DIR + "/examples/" + deck + " " + extra +
+                            " > " + out + " 2>&1";
+    const int st = std::system(cmd.c_str());
+    return std::pair{WIFEXITED(st) ? WEXITSTATUS(st) : -1, test::read_file(out)};
+  };
+  for (const char* deck : {"J2_ddmp_md_100x50_4ppc_full.toml", "J2_ddmp_md_100x50_4ppc_s0p1.toml"}) {
+    const auto [code, text] = check(deck, "--ranks 64");
+    EXPECT_EQ(code, 0) << text;
+    EXPECT_NE(text.find("atom-steps"), std::string::npos) << text;
+    EXPECT_NE(text.find("(each of 64 ranks)"), std::string::npos) << text;
+    const auto [alone, why] = check(deck, "--ranks 1");
+    if (alone != 0) {
+      EXPECT_NE(why.find("memory"), std::string::npos) << why;
+    }
+  }
+}

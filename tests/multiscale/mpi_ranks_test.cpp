@@ -205,3 +205,36 @@ TEST(MpiRanks, TwoDimensionalClosureGivesTheSameBytes) {
   ASSERT_EQ(run(3, deck, cut, "--threads 1 --resume"), 0) << test::read_file(cut + ".log");
   same_vtk(cut);
 }
+
+// P1 for J2 at its smallest: the CI-size DDMP-MD jet (its first 0.25 ps, against the
+// direct MD of the tiny jet cut to the same time) gives the same VTK files and run.json
+// (eq. 7.12 included) under 1, 2 and 3 ranks.
+TEST(MpiRanks, SmallestJetGivesTheSameBytes) {
+  const std::string base = test::scratch_dir("mpi_j2");
+  const std::string md_deck = base + "/j1.toml", md_out = base + "/j1", deck = base + "/j2.toml";
+  std::string j1 = test::read_file(std::string(MPMX_SOURCE_DIR) + "/examples/J1_direct_md_tiny.toml");
+  j1.replace(j1.find("duration_ps = 30.0"), 18, "duration_ps = 5.0 ");  // 0.25 ps at s = 0.05
+  std::ofstream(md_deck) << j1;
+  const std::string cmd = fmt::format("'{}' md '{}' --out '{}' --quiet > '{}.log' 2>&1", MPMX_BINARY, md_deck,
+                                      md_out, md_out);
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << test::read_file(md_out + ".log");
+  const auto c = test::deck_with(test::example("J2_ddmp_md_20x10_1ppc_tiny.toml"), [&](toml::table& t) {
+    t["time"].as_table()->insert_or_assign("end", 0.25);
+    t["output"].as_table()->insert_or_assign("times", toml::array{0.25});
+    t["reference"].as_table()->insert_or_assign("times", toml::array{0.25});
+    t["reference"].as_table()->insert_or_assign("file", md_out);
+  });
+  std::ofstream(deck) << c.deck;
+  const std::string single = test::scratch_dir("mpi_j2_single");
+  ASSERT_EQ(run(0, deck, single, "--threads 1"), 0) << test::read_file(single + ".log");
+  EXPECT_NE(test::read_file(single + "/run.json").find("stress_vs_direct_md"), std::string::npos);
+  for (int ranks : {2, 3}) {
+    const std::string out = test::scratch_dir(fmt::format("mpi_j2_{}", ranks));
+    ASSERT_EQ(run(ranks, deck, out, "--threads 1"), 0) << test::read_file(out + ".log");
+    for (const auto& f : std::filesystem::recursive_directory_iterator(single + "/vtk")) {
+      const std::string rel = std::filesystem::relative(f.path(), single).string();
+      EXPECT_EQ(test::read_file(single + "/" + rel), test::read_file(out + "/" + rel)) << out << "/" << rel;
+    }
+    EXPECT_EQ(physics(single), physics(out)) << out;
+  }
+}

@@ -1,8 +1,6 @@
 // `mpmx run DECK --out DIR` and `mpmx check DECK`.
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -24,7 +22,7 @@ void add_mpm_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
     bool quiet = false, no_plot = false, resume = false, force = false;
-    int threads = 0;
+    int threads = 0, ranks = 1;
     std::int64_t checkpoint_every = 0, stop_after = 0;
     double checkpoint_minutes = 10.0, rebalance_above = 1.2;
   };
@@ -56,7 +54,7 @@ void add_mpm_commands(CLI::App& app) {
     mpm::MpmConfig cfg;
     ranks::together([&] {
       cfg = io::read_mpm_deck(args->deck);
-      mpm::check_mpm_budget(mpm::estimate_mpm(cfg), physical_memory_bytes(), args->force);
+      mpm::check_mpm_budget(mpm::estimate_mpm(cfg, ranks::size()), physical_memory_bytes(), args->force);
     });
     const std::string out =
         args->out.empty() ? "runs/" + std::filesystem::path(args->deck).stem().string() : args->out;
@@ -93,9 +91,12 @@ void add_mpm_commands(CLI::App& app) {
   CLI::App* check = app.add_subcommand("check", "validate a continuum deck without running it");
   check->add_option("deck", args->deck, "TOML deck")->required()->check(CLI::ExistingFile);
   check->add_flag("--force", args->force, "accept a work estimate over about a day (never the memory one)");
+  check->add_option("--ranks", args->ranks,
+                    "estimate for a run over so many MPI ranks (md_closure boxes spread over them; default 1)")
+      ->check(CLI::Range(1, 1 << 20));
   check->callback([args] {
     const auto cfg = io::read_mpm_deck(args->deck);
-    const auto budget = mpm::estimate_mpm(cfg);
+    const auto budget = mpm::estimate_mpm(cfg, args->ranks);
     mpm::check_mpm_budget(budget, physical_memory_bytes(), args->force);
     if (cfg.dim == 1) {
       fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", args->deck, cfg.id, cfg.cells,
@@ -107,20 +108,20 @@ void add_mpm_commands(CLI::App& app) {
                  args->deck, cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), cfg.bodies.size(),
                  cfg.steps(), mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
     }
-    fmt::print("  estimate: about {} of memory, {:.3g} hours of work on one core{}\n", format_bytes(budget.bytes),
+    fmt::print("  estimate: about {} of memory, {:.3g} hours of work on one core{}{}\n", format_bytes(budget.bytes),
                budget.seconds / 3600.0,
-               budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string());
+               budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string(),
+               budget.ranks > 1 ? fmt::format(" (each of {} ranks)", budget.ranks) : std::string());
     // A multiscale deck's work: every point's box for every MD step, before it runs.
     if (cfg.material.model == "md_closure") {
       const auto& md = cfg.material.md;
       const double points = static_cast<double>(mpm::count_points(cfg));
       const double atom_steps =
           points * md.atoms_per_point() * (static_cast<double>(md.relax_steps) + cfg.steps() * md.md_steps(cfg.dt));
-      const double per_core = md::kMdAtomStepsPerSecond, cores = std::thread::hardware_concurrency();
-      fmt::print("  {:.0f} points x {} atoms: {:.3g} atom-steps, about {:.3g} hours on this machine's {} cores at "
-                 "{:.0e} atom-steps/s per core ({:.3g} core-hours)\n",
-                 points, md.atoms_per_point(), atom_steps, atom_steps / (per_core * std::max(1.0, cores)) / 3600.0,
-                 cores, per_core, atom_steps / per_core / 3600.0);
+      fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.0e} atom-steps/s per "
+                 "core\n",
+                 points, md.atoms_per_point(), atom_steps, atom_steps / md::kMdAtomStepsPerSecond / 3600.0,
+                 md::kMdAtomStepsPerSecond);
     }
   });
 }

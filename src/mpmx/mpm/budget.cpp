@@ -36,8 +36,9 @@ double md_point_bytes(const material::MdClosureConfig& m) {
 
 }  // namespace
 
-MpmBudget estimate_mpm(const MpmConfig& c) {
+MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
   MpmBudget b;
+  b.ranks = ranks > 1 ? ranks : 1;
   const int dim = c.dim;
   b.points = 1, b.nodes = 1;
   for (int d = 0; d < dim; ++d) {
@@ -61,11 +62,12 @@ MpmBudget estimate_mpm(const MpmConfig& c) {
   if (c.material.model == "md_closure") {
     const auto& m = c.material.md;
     b.md_atoms = b.points * m.atoms_per_point();
-    const double mb = md_point_bytes(m) * b.points;
+    const double mb = md_point_bytes(m) * std::ceil(b.points / b.ranks);
     b.bytes += mb;
     if (mb > pb && mb > nb) b.size_key = "material.md.cells and grid.cells";
     const double md_steps = c.dt > 0 && m.dt > 0 ? std::max(1.0, c.dt / m.dt) : 1.0;
-    b.seconds += b.md_atoms * (md_steps * b.steps + static_cast<double>(m.relax_steps)) / md::kMdAtomStepsPerSecond;
+    b.seconds += b.md_atoms * (md_steps * b.steps + static_cast<double>(m.relax_steps)) / md::kMdAtomStepsPerSecond /
+                 b.ranks;
   }
   return b;
 }

@@ -23,13 +23,16 @@ struct MpmBudget {
   double subpoints = 1;    // integration points per point (ddmp_subpoints)
   double nodes = 0;        // grid nodes
   double md_atoms = 0;     // md_closure: atoms of all the points' boxes
+  int ranks = 1;           // the boxes spread over so many ranks: bytes and seconds are one rank's
   double bytes = 0;        // estimated peak memory
   double seconds = 0;      // estimated wall time on one core
   double steps = 0;
   std::string size_key;    // the key the largest memory share comes from
 };
 
-MpmBudget estimate_mpm(const MpmConfig& c);
+// `ranks`: the MPI ranks the md_closure boxes spread over (each holds and advances
+// 1/ranks of them; the continuum is on every rank): the figures are one rank's.
+MpmBudget estimate_mpm(const MpmConfig& c, int ranks = 1);
 
 // Throws InputError when the estimate exceeds `memory_bytes` (always; 0: unknown, not
 // checked) or the work a day unless `force`.
