@@ -14,7 +14,6 @@
 #include "mpmx/md/budget.hpp"
 #include "mpmx/mpm/budget.hpp"
 #include "mpmx/mpm/run.hpp"
-#include "mpmx/mpm/setup.hpp"
 
 namespace mpmx::app {
 
@@ -112,17 +111,10 @@ void add_mpm_commands(CLI::App& app) {
                budget.seconds / 3600.0,
                budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string(),
                budget.ranks > 1 ? fmt::format(" (each of {} ranks)", budget.ranks) : std::string());
-    // A multiscale deck's work: every point's box for every MD step, before it runs.
-    if (cfg.material.model == "md_closure") {
-      const auto& md = cfg.material.md;
-      const double points = static_cast<double>(mpm::count_points(cfg));
-      const double atom_steps =
-          points * md.atoms_per_point() * (static_cast<double>(md.relax_steps) + cfg.steps() * md.md_steps(cfg.dt));
-      fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.0e} atom-steps/s per "
-                 "core\n",
-                 points, md.atoms_per_point(), atom_steps, atom_steps / md::kMdAtomStepsPerSecond / 3600.0,
-                 md::kMdAtomStepsPerSecond);
-    }
+    if (budget.md_atom_steps > 0)
+      fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.0e} atom-steps/s per core\n",
+                 budget.points, cfg.material.md.atoms_per_point(), budget.md_atom_steps,
+                 budget.md_atom_steps / md::kMdAtomStepsPerSecond / 3600.0, md::kMdAtomStepsPerSecond);
   });
 }
 

@@ -7,6 +7,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/md/budget.hpp"
+#include "mpmx/mpm/setup.hpp"
 
 namespace mpmx::mpm {
 
@@ -47,6 +48,8 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
     b.points *= cells * per;
     b.nodes *= cells + 1;
   }
+  // A deck of bodies fills part of the grid: count its points where that is cheap.
+  if (!c.bodies.empty() && b.points <= 1e7) b.points = static_cast<double>(count_points(c));
   if (c.scheme.scheme == Scheme::ddmp_subpoints) {
     if (dim == 1) b.subpoints = c.scheme.subpoints;
     else
@@ -66,8 +69,8 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
     b.bytes += mb;
     if (mb > pb && mb > nb) b.size_key = "material.md.cells and grid.cells";
     const double md_steps = c.dt > 0 && m.dt > 0 ? std::max(1.0, c.dt / m.dt) : 1.0;
-    b.seconds += b.md_atoms * (md_steps * b.steps + static_cast<double>(m.relax_steps)) / md::kMdAtomStepsPerSecond /
-                 b.ranks;
+    b.md_atom_steps = b.md_atoms * (md_steps * b.steps + static_cast<double>(m.relax_steps));
+    b.seconds += b.md_atom_steps / md::kMdAtomStepsPerSecond / b.ranks;
   }
   return b;
 }

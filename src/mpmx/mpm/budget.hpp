@@ -19,10 +19,11 @@ inline constexpr double kPointStepsPerSecond = 5e5;
 inline constexpr double kWorkLimitSeconds = 86400.0;
 
 struct MpmBudget {
-  double points = 0;       // material points (an upper bound: every cell of the grid filled)
+  double points = 0;       // material points: counted through the bodies up to 1e7 lattice sites, else every cell filled
   double subpoints = 1;    // integration points per point (ddmp_subpoints)
   double nodes = 0;        // grid nodes
   double md_atoms = 0;     // md_closure: atoms of all the points' boxes
+  double md_atom_steps = 0;  // md_closure: those atoms x (relaxation + MD steps of the run), all ranks
   int ranks = 1;           // the boxes spread over so many ranks: bytes and seconds are one rank's
   double bytes = 0;        // estimated peak memory
   double seconds = 0;      // estimated wall time on one core
