@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "checkpoint_fuzz.cpp"
+#include "dpd_deck_fuzz.cpp"
 #include "eam_fuzz.cpp"
 #include "lammps_table_fuzz.cpp"
 #include "md_deck_fuzz.cpp"
@@ -48,6 +49,7 @@ TEST(FuzzReplay, MpmDeck) { EXPECT_GT(replay("mpm_deck", mpmx::fuzz::mpm_deck), 
 TEST(FuzzReplay, MdDeck) { EXPECT_GT(replay("md_deck", mpmx::fuzz::md_deck), 5u); }
 TEST(FuzzReplay, Eam) { EXPECT_GT(replay("eam", mpmx::fuzz::eam), 3u); }
 TEST(FuzzReplay, LammpsTable) { EXPECT_GT(replay("lammps_table", mpmx::fuzz::lammps_table), 1u); }
+TEST(FuzzReplay, DpdDeck) { EXPECT_GT(replay("dpd_deck", mpmx::fuzz::dpd_deck), 5u); }
 TEST(FuzzReplay, Checkpoint) { EXPECT_GT(replay("checkpoint", mpmx::fuzz::checkpoint), 7u); }
 
 }  // namespace

@@ -12,7 +12,9 @@
 #include "mpmx/dpd/fit_run.hpp"
 #include "mpmx/dpd/run.hpp"
 #include "mpmx/io/deck.hpp"
+#include "mpmx/io/plot.hpp"
 #include "mpmx/io/staged_dir.hpp"
+#include "mpmx/multiscale/dpd_mpm.hpp"
 
 namespace mpmx::app {
 
@@ -21,7 +23,7 @@ void add_dpd_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
     int threads = 1;
-    bool check = false, quiet = false;
+    bool check = false, quiet = false, no_plot = false;
   };
   auto args = std::make_shared<Args>();
   dpd->add_option("deck", args->deck, "DPD deck (TOML)")->required();
@@ -30,6 +32,7 @@ void add_dpd_commands(CLI::App& app) {
                   "OpenMP threads, 0 for all cores (default 1; results are the same for any count)");
   dpd->add_flag("--check", args->check, "validate the deck and exit");
   dpd->add_flag("--quiet", args->quiet, "no progress line");
+  dpd->add_flag("--no-plot", args->no_plot, "no figures (tools/plot/dpd_study.py) after the run");
   dpd->callback([args] {
     auto deck = io::Deck::from_file(args->deck);
     const dpd::DpdConfig config = dpd::read_dpd_config(deck);
@@ -41,9 +44,14 @@ void add_dpd_commands(CLI::App& app) {
     if (out.empty()) out = "run-" + std::filesystem::path(args->deck).stem().string();
     const int threads = args->threads > 0 ? args->threads : static_cast<int>(hardware_threads());
     const auto r = io::run_staged(
-        out, [&](const std::string& dir) { return dpd::run_dpd(config, dir, deck.table(), threads, args->quiet); });
+        out, [&](const std::string& dir) {
+          return dpd::run_dpd(config, dir, deck.table(), threads, args->quiet,
+                              multiscale::dpd_mpm_mover(config, threads));
+        });
     fmt::print("{} particles, {} steps, {:.3g} s, {:.4g} particle-steps/s, mean T {:.2f} K -> {}/run.json\n",
                r.particles, r.steps, r.wall_seconds, r.particle_steps_per_second, r.temperature, out);
+    if (config.analysis.records() && !args->no_plot && io::matplotlib_present())
+      io::run_plot_script("dpd_study.py", fmt::format("--out '{0}' '{0}' >/dev/null", out));
   });
 
   auto* fit = app.add_subcommand("fit-dpd", "Fit a DPD pair potential to an MD isotherm (D0: MD to DPD)");

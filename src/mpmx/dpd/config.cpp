@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/core/machine.hpp"
 #include "mpmx/core/units.hpp"
 
 namespace mpmx::dpd {
@@ -22,6 +23,119 @@ bool read_vec3(io::Section& s, std::string_view key, md::Vec3& out, bool require
   }
   std::copy(v.begin(), v.end(), out.begin());
   return true;
+}
+
+bool group_names_has(const DpdConfig& c, const std::string& name) {
+  for (const auto& b : c.blocks)
+    if (b.group == name) return true;
+  for (const auto& r : c.regions)
+    if (r.name == name) return true;
+  return false;
+}
+
+// [[track]], [analysis], [tensile], [profile] (analysis.hpp).
+void read_analysis(io::Section& root, DpdConfig& c) {
+  AnalysisSpec& a = c.analysis;
+  std::set<std::string> names;
+  for (auto& t : root.tables("track")) {
+    TrackSpec s;
+    s.name = t.string("name");
+    t.check(!s.name.empty() && names.insert(s.name).second, "name", "must be a new, non-empty track name");
+    const auto x = t.numbers("x");
+    if (x.size() == 2 && x[1] > x[0]) s.lo = x[0], s.hi = x[1];
+    else t.check(false, "x", "expected [lower, upper] with upper > lower (Angstrom)");
+    a.tracks.push_back(s);
+  }
+  auto an = root.optional_table("analysis");
+  a.every = an.integer("every", 5);
+  an.check(a.every >= 1 && a.every <= 1000000, "every", "must be from 1 to 1e6 steps");
+  an.check(c.thermo % std::max<std::int64_t>(a.every, 1) == 0, "every", "must divide run.thermo");
+  a.onset = an.number("onset", 0.3);
+  an.positive("onset", a.onset);
+  a.onset_direction = static_cast<int>(an.integer("onset_direction", 1));
+  an.check(a.onset_direction == 1 || a.onset_direction == -1, "onset_direction",
+           "must be 1 (the wave pushes along +x) or -1 (along -x)");
+  if (an.has("wave_speed")) {
+    const auto w = an.strings("wave_speed", {});
+    if (w.size() == 2 && names.count(w[0]) && names.count(w[1]) && w[0] != w[1]) a.wave_speed = {w[0], w[1]};
+    else an.check(false, "wave_speed", "expected two different names of [[track]] regions");
+  }
+  a.cna_lattice = an.number("cna_lattice", 0.0);
+  an.non_negative("cna_lattice", a.cna_lattice);
+  auto te = root.optional_table("tensile");
+  if (te.present()) {
+    const auto g = te.strings("grips", {});
+    if (g.size() == 2 && g[0] != g[1] && group_names_has(c, g[0]) && group_names_has(c, g[1])) a.grips = {g[0], g[1]};
+    else te.check(false, "grips", "expected the names of two different rigid groups [left, right]");
+    const auto r = te.numbers("slope_strain", {0.0, 0.05});
+    if (r.size() == 2 && r[1] > r[0]) a.slope_strain = {r[0], r[1]};
+    else te.check(false, "slope_strain", "expected [lower, upper] strains with upper > lower");
+  }
+  auto pr = root.optional_table("profile");
+  if (pr.present()) {
+    a.profile_bins = static_cast<int>(pr.integer("bins"));
+    pr.check(a.profile_bins >= 1 && a.profile_bins <= 100000, "bins", "must be from 1 to 1e5");
+    a.profile_every = pr.integer("every");
+    pr.check(a.profile_every >= 1 && a.profile_every % std::max<std::int64_t>(a.every, 1) == 0, "every",
+             "must be a positive multiple of analysis.every");
+  }
+}
+
+// The run's memory, roughly: per particle its fields and its share of the neighbour list
+// and pair-force buffer (about 1.5 KiB at the seed's 12 Angstrom cutoff and density), and
+// the grid's node fields; refused with the figure when it exceeds the machine's memory.
+void check_memory(io::Section& root, const DpdConfig& c) {
+  double particles = 0;
+  for (const auto& b : c.blocks)
+    particles += b.fcc ? 4.0 * b.cells[0] * b.cells[1] * b.cells[2] : static_cast<double>(b.count);
+  double bytes = 1536.0 * particles;
+  if (c.grid.cell > 0) {
+    double nodes = 1;
+    const double size[3] = {c.domain.box.lx, c.domain.box.ly, c.domain.box.lz};
+    for (int d = 0; d < 3; ++d) nodes *= (size[d] + 2 * c.grid.margin) / c.grid.cell + 3;
+    bytes += 16 * 8 * nodes;
+    root.check(nodes <= 4e9, "grid", fmt::format("cell = {} A makes {:.3g} grid nodes (at most 4e9)", c.grid.cell, nodes));
+  }
+  root.check(particles <= 1e8, "block", fmt::format("the blocks hold {:.3g} particles (at most 1e8)", particles));
+  const double have = static_cast<double>(physical_memory_bytes());
+  if (have > 0)
+    root.check(bytes <= 0.8 * have, "block",
+               fmt::format("{:.3g} particles{} need about {}, more than 80% of this machine's {}", particles,
+                           c.grid.cell > 0 ? " and their grid" : "", format_bytes(bytes), format_bytes(have)));
+}
+
+// [grid] and [continuum].
+void read_coupling(io::Section& root, DpdConfig& c) {
+  auto g = root.optional_table("grid");
+  if (g.present()) {
+    c.grid.cell = g.number("cell");
+    g.positive("cell", c.grid.cell);
+    g.check(c.grid.cell < cutoff(c.potential), "cell",
+            fmt::format("must be below the pair potential's cutoff {} A (seed 004 sec. 3: the DPD cutoff exceeds "
+                        "the cell edge)", cutoff(c.potential)));
+    c.grid.margin = g.number("margin", 30.0);
+    g.non_negative("margin", c.grid.margin);
+    for (int d = 0; d < 3; ++d)
+      g.check(!c.domain.periodic[d], "cell", "the DPD/MPM grid needs open boundaries (box.boundary = [\"f\", \"f\", \"f\"])");
+  }
+  auto m = root.optional_table("continuum");
+  if (m.present()) {
+    ContinuumSpec& s = c.continuum;
+    s.on = true;
+    root.check(c.grid.cell > 0, "continuum", "a concurrent DPD/MPM run needs [grid] cell");
+    const auto x = m.numbers("x");
+    if (x.size() == 2 && x[1] > x[0]) s.lo = x[0], s.hi = x[1];
+    else m.check(false, "x", "expected [lower, upper] with upper > lower (Angstrom)");
+    s.lattice_constant = m.number("lattice_constant");
+    m.positive("lattice_constant", s.lattice_constant);
+    s.from_potential = m.choice("constants_from", {"pair_potential", "given"}, "pair_potential") == "pair_potential";
+    s.pair_reaction = m.choice("interface", {"pair_reaction", "seed"}, "pair_reaction") == "pair_reaction";
+    if (!s.from_potential) {
+      s.c11 = m.number("c11"), s.c12 = m.number("c12"), s.c44 = m.number("c44");
+      m.positive("c11", s.c11), m.positive("c44", s.c44);
+      m.check(s.c11 > std::abs(s.c12) && s.c11 + 2 * s.c12 > 0, "c12", "C11 > |C12| and C11 + 2 C12 > 0 (Born stability)");
+    }
+  }
 }
 
 }  // namespace
@@ -76,6 +190,8 @@ DpdConfig read_dpd_config(io::Deck& deck) {
     if (!s.group.empty()) {
       b.check(group_names.insert(s.group).second, "group", "names a rigid group already defined");
     }
+    s.free = b.boolean("free", false);
+    b.check(!s.free || !s.group.empty(), "free", "only a rigid group (group = \"name\") moves as a free body");
     for (int d = 0; d < 3; ++d) {
       const double top = s.origin[d] + (s.fcc ? s.cells[d] * s.constant : s.size[d]);
       extent[d] = std::max(extent[d], top);
@@ -174,6 +290,9 @@ DpdConfig read_dpd_config(io::Deck& deck) {
             "must be 0 (no dump) or a multiple of thermo");
   c.skin = run.number("skin", 1.0);
   run.non_negative("skin", c.skin);
+  read_analysis(root, c);
+  read_coupling(root, c);
+  check_memory(root, c);
   deck.finish();
   return c;
 }

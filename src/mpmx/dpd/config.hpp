@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mpmx/dpd/analysis.hpp"
 #include "mpmx/dpd/domain.hpp"
 #include "mpmx/dpd/potential/registry.hpp"
 #include "mpmx/dpd/system.hpp"
@@ -27,6 +28,7 @@ struct BlockSpec {
   double mass = 0;                    // amu
   md::Vec3 velocity{};                // Angstrom/ps, added to the thermal velocities
   std::string group;                  // rigid group name ("" mobile)
+  bool free = false;                  // the group is a free rigid body from `velocity` (the run only)
 };
 
 // A rigid group by region (the tensile grips): particles with lo <= x < hi on each axis.
@@ -37,6 +39,24 @@ struct RegionGroupSpec {
   std::array<double, 3> hi{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                            std::numeric_limits<double>::infinity()};
   md::Vec3 velocity{};
+};
+
+// [grid]: the DPD/MPM-grid model (seed 004 sec. 3.2) when cell > 0; DPD-only otherwise.
+struct GridSpec {
+  double cell = 0;     // Angstrom
+  double margin = 30;  // Angstrom around the particles' extent at the run's start
+};
+
+// [continuum]: the concurrent DPD/MPM model (sec. 4.2, eq. 3.1). The mobile particles
+// whose x at the run's start lies in [lo, hi) become material points of a cubic elastic
+// continuum with the DPD model's constants (Born sums at lattice_constant) or given ones.
+struct ContinuumSpec {
+  bool on = false;
+  double lo = 0, hi = 0;          // Angstrom
+  double lattice_constant = 0;    // Angstrom: volume per point a^3/4, and the Born sums
+  bool from_potential = true;     // constants_from = "pair_potential"
+  double c11 = 0, c12 = 0, c44 = 0;  // GPa, when given
+  bool pair_reaction = true;      // interface = "pair_reaction" (default) or "seed" (eq. 3.1 as written)
 };
 
 struct DpdConfig {
@@ -55,6 +75,9 @@ struct DpdConfig {
   std::int64_t thermo = 100;
   std::int64_t dump_every = 0;
   double skin = 1.0;
+  AnalysisSpec analysis;
+  GridSpec grid;
+  ContinuumSpec continuum;
   std::string deck_file;
 };
 

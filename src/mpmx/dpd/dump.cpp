@@ -6,7 +6,8 @@
 
 namespace mpmx::dpd {
 
-void write_lammps_dump(std::ostream& out, std::int64_t step, const Particles& p, const Domain& d) {
+void write_lammps_dump(std::ostream& out, std::int64_t step, const Particles& p, const Domain& d,
+                       const std::vector<std::uint8_t>* structure) {
   out << fmt::format("ITEM: TIMESTEP\n{}\nITEM: NUMBER OF ATOMS\n{}\n", step, p.size());
   out << fmt::format("ITEM: BOX BOUNDS {} {} {}\n", d.periodic[0] ? "pp" : "ss", d.periodic[1] ? "pp" : "ss",
                      d.periodic[2] ? "pp" : "ss");
@@ -20,11 +21,14 @@ void write_lammps_dump(std::ostream& out, std::int64_t step, const Particles& p,
     }
     out << fmt::format("{:.16g} {:.16g}\n", lo, hi);
   }
-  out << "ITEM: ATOMS id type mass x y z vx vy vz u\n";
-  for (std::size_t i = 0; i < p.size(); ++i)
-    out << fmt::format("{} {} {:.10g} {:.10g} {:.10g} {:.10g} {:.8g} {:.8g} {:.8g} {:.10g}\n", p.id[i], p.type[i] + 1,
+  out << (structure ? "ITEM: ATOMS id type mass x y z vx vy vz u structure\n" : "ITEM: ATOMS id type mass x y z vx vy vz u\n");
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    out << fmt::format("{} {} {:.10g} {:.10g} {:.10g} {:.10g} {:.8g} {:.8g} {:.8g} {:.10g}", p.id[i], p.type[i] + 1,
                        p.mass[i], d.wrap(0, p.x[i]), d.wrap(1, p.y[i]), d.wrap(2, p.z[i]), p.vx[i], p.vy[i], p.vz[i],
                        p.u[i]);
+    if (structure) out << ' ' << static_cast<int>((*structure)[i]);
+    out << '\n';
+  }
 }
 
 }  // namespace mpmx::dpd

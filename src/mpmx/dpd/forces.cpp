@@ -20,7 +20,7 @@ constexpr double kMinR2 = 1e-20;
 // particle when Tally.
 template <class Pot, bool Stochastic, bool Tally>
 void pair_pass(const Pot& pot, const PairList& list, Particles& p, const StochasticForces& st, ForceBuffers& buf,
-               int threads) {
+               int threads, const std::uint8_t* no_pair) {
   const md::Neighbors& nb = list.nb;
   const int n = nb.nlocal;
   const double* __restrict q = nb.xyz.data();
@@ -45,12 +45,13 @@ void pair_pass(const Pot& pot, const PairList& list, Particles& p, const Stochas
     const double xi = q[4 * i], yi = q[4 * i + 1], zi = q[4 * i + 2];
     double e_i = 0, wxx = 0, wyy = 0, wzz = 0, wxy = 0, wxz = 0, wyz = 0;
     double sx = 0, sy = 0, sz = 0;
+    const bool masked = no_pair && no_pair[i];
     for (int s = first[i]; s < first[i + 1]; ++s) {
       const int k = entries[s];
       const double dx = xi - q[4 * k], dy = yi - q[4 * k + 1], dz = zi - q[4 * k + 2];
       const double r2 = dx * dx + dy * dy + dz * dz;
       double fr = 0.0;
-      if (r2 < rmax2 && r2 >= kMinR2) {
+      if (r2 < rmax2 && r2 >= kMinR2 && !(masked && no_pair[owner[k]])) {
         if (r2 < rcc2) {
           double e;
           pot.eval(r2, e, fr);
@@ -87,7 +88,8 @@ void pair_pass(const Pot& pot, const PairList& list, Particles& p, const Stochas
 }  // namespace
 
 md::ForceSums compute_pair_forces(const PairPotential& pot, const PairList& list, Particles& p,
-                                  const StochasticForces* stochastic, ForceBuffers& buf, int threads, bool tally) {
+                                  const StochasticForces* stochastic, ForceBuffers& buf, int threads, bool tally,
+                                  const std::uint8_t* no_pair) {
   const int n = list.nb.nlocal;
   buf.pair_force.resize(3 * static_cast<std::size_t>(list.slots()));
   buf.energy.resize(n);
@@ -97,10 +99,10 @@ md::ForceSums compute_pair_forces(const PairPotential& pot, const PairList& list
       [&](const auto& pp) {
         using P = std::decay_t<decltype(pp)>;
         const bool st = stochastic && stochastic->gamma > 0;
-        if (st && tally) pair_pass<P, true, true>(pp, list, p, *stochastic, buf, threads);
-        else if (st) pair_pass<P, true, false>(pp, list, p, *stochastic, buf, threads);
-        else if (tally) pair_pass<P, false, true>(pp, list, p, none, buf, threads);
-        else pair_pass<P, false, false>(pp, list, p, none, buf, threads);
+        if (st && tally) pair_pass<P, true, true>(pp, list, p, *stochastic, buf, threads, no_pair);
+        else if (st) pair_pass<P, true, false>(pp, list, p, *stochastic, buf, threads, no_pair);
+        else if (tally) pair_pass<P, false, true>(pp, list, p, none, buf, threads, no_pair);
+        else pair_pass<P, false, false>(pp, list, p, none, buf, threads, no_pair);
       },
       pot);
 

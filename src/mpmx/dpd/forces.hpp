@@ -42,8 +42,10 @@ struct ForceBuffers {
 // the conservative energy (eV) and the virial W_ab = sum over pairs of r_a F_b (eV) of
 // the forces computed (zeros without). `stochastic` null: conservative forces only. The
 // list's positions must be current (PairList::update_positions).
+// `no_pair` (null: none): particles flagged there do not interact with each other (the
+// continuum points of a concurrent run); their pairs with the others count as usual.
 md::ForceSums compute_pair_forces(const PairPotential& pot, const PairList& list, Particles& p,
                                   const StochasticForces* stochastic, ForceBuffers& buf, int threads,
-                                  bool tally = true);
+                                  bool tally = true, const std::uint8_t* no_pair = nullptr);
 
 }  // namespace mpmx::dpd

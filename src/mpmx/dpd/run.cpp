@@ -14,6 +14,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/io/run_record.hpp"
+#include "mpmx/dpd/cna.hpp"
 #include "mpmx/dpd/dump.hpp"
 #include "mpmx/dpd/setup.hpp"
 
@@ -60,6 +61,7 @@ System build_system(const DpdConfig& c, int threads) {
   }
   if (c.params.energy_conserving)
     for (auto& u : all.u) u = c.params.heat_capacity * c.initial_temperature;
+  if (c.continuum.on) groups.push_back({kContinuumGroup, {0, 0, 0}, true});
   std::vector<RigidGroup> at_rest = groups;
   for (auto& g : at_rest) g.velocity = {0, 0, 0};
   SystemOptions opt;
@@ -103,7 +105,7 @@ toml::array vec(const md::Vec3& v) { return toml::array{v[0], v[1], v[2]}; }
 }  // namespace
 
 DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads,
-                      bool quiet) {
+                      bool quiet, const MoverFactory& make_mover) {
   namespace fs = std::filesystem;
   fs::create_directories(out_dir);
   const auto t0 = std::chrono::steady_clock::now();
@@ -119,14 +121,27 @@ DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml
   auto last = std::chrono::steady_clock::now();
 
   // One phase of `steps` steps with thermo rows and progress.
+  std::unique_ptr<Recorder> recorder;  // the run's analysis records
+  std::vector<std::uint8_t> structure;
+  auto write_frame = [&] {
+    if (c.analysis.cna_lattice > 0) {
+      structure = common_neighbour_analysis(sys.particles(), sys.domain(), c.analysis.cna_lattice);
+      write_lammps_dump(dump, sys.step(), sys.particles(), sys.domain(), &structure);
+    } else {
+      write_lammps_dump(dump, sys.step(), sys.particles(), sys.domain());
+    }
+  };
   auto phase = [&](const char* name, std::int64_t steps, const Berendsen* b, bool dumps) {
     thermo.row(name, sys);
-    if (dumps && c.dump_every > 0) write_lammps_dump(dump, sys.step(), sys.particles(), sys.domain());
+    if (dumps && c.dump_every > 0) write_frame();
     const auto start = std::chrono::steady_clock::now();
+    const std::int64_t stride = dumps && recorder ? c.analysis.every : c.thermo;
     for (std::int64_t done = 0; done < steps;) {
-      const std::int64_t chunk = std::min<std::int64_t>(c.thermo, steps - done);
+      const std::int64_t chunk = std::min<std::int64_t>(stride, steps - done);
       sys.advance(static_cast<int>(chunk), c.dt, b);
       done += chunk;
+      if (dumps && recorder) recorder->record(sys);
+      if (done % c.thermo != 0 && done != steps) continue;
       thermo.row(name, sys);
       if (dumps) {
         tsum += sys.temperature(), ++tcount;
@@ -134,8 +149,7 @@ DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml
         row_energy.push_back(sys.total_energy());
         row_kinetic.push_back(sys.kinetic_energy());
       }
-      if (dumps && c.dump_every > 0 && done % c.dump_every == 0)
-        write_lammps_dump(dump, sys.step(), sys.particles(), sys.domain());
+      if (dumps && c.dump_every > 0 && done % c.dump_every == 0) write_frame();
       const auto now = std::chrono::steady_clock::now();
       if (!quiet && std::chrono::duration<double>(now - last).count() > 2.0) {
         last = now;
@@ -156,6 +170,54 @@ DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml
     if (!s.group.empty()) set_v.push_back(s.velocity);
   for (const RegionGroupSpec& s : c.regions) set_v.push_back(s.velocity);
   for (std::size_t g = 0; g < set_v.size(); ++g) sys.set_group_velocity(static_cast<int>(g), set_v[g]);
+  {
+    int g = 0;
+    for (const BlockSpec& s : c.blocks) {
+      if (s.group.empty()) continue;
+      if (s.free) sys.release_group(g);
+      ++g;
+    }
+  }
+  if (c.continuum.on) {
+    // The concurrent model's continuum: the equilibrated particles of the region.
+    std::vector<std::int64_t> ids;
+    const Particles& p = sys.particles();
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (!p.rigid(i) && p.x[i] >= c.continuum.lo && p.x[i] < c.continuum.hi) ids.push_back(p.id[i]);
+    if (ids.empty())
+      throw InputError(fmt::format("continuum.x = [{}, {}]: no mobile particle lies there at the run's start",
+                                   c.continuum.lo, c.continuum.hi));
+    sys.make_external(static_cast<int>(set_v.size()), ids);
+  }
+  std::unique_ptr<Mover> mover;
+  if (make_mover) {
+    mover = make_mover(sys);
+    sys.set_mover(mover.get());
+  }
+  double fcc_start = -1;
+  // CNA's fcc fraction over the mobile particles at least one lattice constant inside
+  // their bounding box (a free surface is never fcc by CNA).
+  auto fcc_now = [&] {
+    const Particles& p = sys.particles();
+    const double a = c.analysis.cna_lattice;
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.rigid(i)) continue;
+      const double x[3] = {p.x[i], p.y[i], p.z[i]};
+      for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
+    }
+    std::vector<std::uint8_t> interior(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const double x[3] = {p.x[i], p.y[i], p.z[i]};
+      bool in = !p.rigid(i);
+      for (int d = 0; d < 3; ++d)
+        in = in && (sys.domain().periodic[d] || (x[d] >= lo[d] + a && x[d] <= hi[d] - a));
+      interior[i] = in ? 1 : 0;
+    }
+    return fcc_fraction(common_neighbour_analysis(p, sys.domain(), a), interior);
+  };
+  if (c.analysis.cna_lattice > 0) fcc_start = fcc_now();
+  if (c.analysis.records()) recorder = std::make_unique<Recorder>(c.analysis, sys);
   const double e0 = sys.total_energy(), k0 = sys.kinetic_energy();
   const md::Vec3 p0 = sys.momentum();
   row_step.push_back(static_cast<double>(sys.step()));
@@ -221,6 +283,23 @@ DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml
                                {"momentum_start", vec(p0)},
                                {"momentum_end", vec(p1)},
                                {"from_step", step0}}}};
+  toml::table model{{"name", c.continuum.on ? "dpd_mpm_concurrent" : mover ? "dpd_mpm_grid" : "dpd_only"}};
+  if (mover) mover->report(model);
+  rec.insert("model", model);
+  if (recorder) {
+    recorder->write(out_dir);
+    rec.insert("analysis", recorder->summary());
+    r.wave_speed = recorder->wave_speed();
+    r.initial_slope = recorder->initial_slope();
+    r.peak_stress = recorder->peak_stress();
+  }
+  if (c.analysis.cna_lattice > 0) {
+    r.fcc_start = fcc_start;
+    r.fcc_end = fcc_now();
+    rec.insert("cna", toml::table{{"lattice_constant_A", c.analysis.cna_lattice},
+                                  {"interior_fcc_fraction_start", r.fcc_start},
+                                  {"interior_fcc_fraction_end", r.fcc_end}});
+  }
   std::ostringstream os;
   os << toml::json_formatter{rec} << '\n';
   io::write_file_atomic((fs::path(out_dir) / "run.json").string(), os.str());

@@ -1,12 +1,17 @@
 #pragma once
 // Runs a DPD deck: builds the particles, an optional Berendsen equilibration (rigid
-// groups held at rest), then the run (rigid groups at their velocities); writes
-// DIR/thermo.csv, DIR/dump.lammpstrj (when asked) and DIR/run.json.
+// groups held at rest, every particle DPD), then the run (rigid groups at their
+// velocities, a concurrent run's continuum points marked, the mover in place); writes
+// DIR/thermo.csv, DIR/dump.lammpstrj (when asked), the analysis tables and DIR/run.json.
+#include <cmath>
+#include <functional>
+#include <memory>
 #include <string>
 
 #include <toml++/toml.h>
 
 #include "mpmx/dpd/config.hpp"
+#include "mpmx/dpd/mover.hpp"
 #include "mpmx/dpd/system.hpp"
 
 namespace mpmx::dpd {
@@ -22,9 +27,20 @@ struct DpdRunSummary {
   double particle_steps_per_second = 0;
   double energy_drift = 0;  // DPDE: least-squares dE/dstep x 1000 / mean K over the run's rows, else 0
   double temperature = 0;   // K, mean kinetic temperature over the run's thermo rows
+  // The analysis (NaN where not asked): wave speed (Angstrom/ps), tensile initial slope
+  // and peak stress (GPa), CNA's interior fcc fraction at the run's start and end.
+  double wave_speed = std::nan(""), initial_slope = std::nan(""), peak_stress = std::nan("");
+  double fcc_start = std::nan(""), fcc_end = std::nan("");
 };
 
+// Makes the mover of the run (the DPD/MPM grid) from the system at the run's start,
+// after the equilibration and the continuum's points are marked; empty: DPD-only.
+using MoverFactory = std::function<std::unique_ptr<Mover>(System&)>;
+
+// The external group of a concurrent run's continuum points (build_system adds it).
+inline constexpr const char* kContinuumGroup = "continuum";
+
 DpdRunSummary run_dpd(const DpdConfig& config, const std::string& out_dir, const toml::table& deck_echo,
-                      int threads = 1, bool quiet = false);
+                      int threads = 1, bool quiet = false, const MoverFactory& mover = {});
 
 }  // namespace mpmx::dpd

@@ -41,7 +41,7 @@ System::System(Particles particles, Domain domain, PairPotential potential, DpdP
     if (g != kMobile && (g < 0 || g >= static_cast<int>(groups_.size())))
       throw InputError(fmt::format("dpd: particle {} is in rigid group {}, there are {}", p_.id[i], g,
                                    groups_.size()));
-    if (g != kMobile) {
+    if (g != kMobile && !groups_[g].external) {
       p_.vx[i] = groups_[g].velocity[0];
       p_.vy[i] = groups_[g].velocity[1];
       p_.vz[i] = groups_[g].velocity[2];
@@ -118,7 +118,15 @@ void System::compute_forces(double dt, bool tally) {
     st.seed = par_.seed;
     st.step = step_;
   }
-  const md::ForceSums s = compute_pair_forces(pot_, list_, p_, stochastic ? &st : nullptr, buf_, opt_.threads, tally);
+  // The points of external groups (a continuum) do not interact with each other.
+  bool any_external = false;
+  for (const auto& g : groups_) any_external = any_external || g.external;
+  if (any_external) {
+    no_pair_.resize(p_.size());
+    for (std::size_t i = 0; i < p_.size(); ++i) no_pair_[i] = p_.group[i] != kMobile && groups_[p_.group[i]].external;
+  }
+  const md::ForceSums s = compute_pair_forces(pot_, list_, p_, stochastic ? &st : nullptr, buf_, opt_.threads, tally,
+                                              any_external ? no_pair_.data() : nullptr);
   if (tally) sums_ = s;
 }
 
@@ -139,6 +147,7 @@ void System::advance(int nsteps, double dt, const Berendsen* thermostat) {
   sp.seed = par_.seed;
   const double half = 0.5 * dt * units::ftm2v;
   auto kick = [&] {
+    kick_free_groups(0.5 * dt);
     for (std::size_t i = 0; i < n; ++i) {
       if (p_.group[i] != kMobile) continue;
       const double h = half / p_.mass[i];
@@ -152,18 +161,23 @@ void System::advance(int nsteps, double dt, const Berendsen* thermostat) {
       sp.step = step_;
       shardlow_sweep(list_, p_, sp, sweep_work_, opt_.threads);
     }
-    kick();
-    for (std::size_t i = 0; i < n; ++i) {
-      p_.x[i] += dt * p_.vx[i];
-      p_.y[i] += dt * p_.vy[i];
-      p_.z[i] += dt * p_.vz[i];
+    if (mover_) {
+      kick_free_groups(dt);  // symplectic Euler from the forces at x^n, as the grid's particles
+      mover_->move(p_, dt);
+    } else {
+      kick();
+      for (std::size_t i = 0; i < n; ++i) {
+        p_.x[i] += dt * p_.vx[i];
+        p_.y[i] += dt * p_.vy[i];
+        p_.z[i] += dt * p_.vz[i];
+      }
     }
     ++step_;
     time_ += dt;
     if (list_.needs_rebuild(p_, d_)) rebuild();
     else list_.update_positions(p_, d_);
     compute_forces(dt, s + 1 == nsteps);  // energy and virial on the last step only
-    kick();
+    if (!mover_) kick();
     if (thermostat) berendsen_rescale(p_, *thermostat, dt, par_.energy_conserving ? par_.heat_capacity : 0.0);
   }
   if (!std::isfinite(sums_.energy)) check_finite();
@@ -230,9 +244,45 @@ double System::pressure_gpa() const {
 void System::set_group_velocity(int g, const md::Vec3& v) {
   if (g < 0 || g >= static_cast<int>(groups_.size()))
     throw InputError(fmt::format("dpd: rigid group {}: there are {}", g, groups_.size()));
+  if (groups_[g].external)
+    throw InputError(fmt::format("dpd: group \"{}\" is moved by the mover, not at a set velocity", groups_[g].name));
   groups_[g].velocity = v;
   for (std::size_t i = 0; i < p_.size(); ++i)
     if (p_.group[i] == g) p_.vx[i] = v[0], p_.vy[i] = v[1], p_.vz[i] = v[2];
+}
+
+void System::release_group(int g) {
+  if (g < 0 || g >= static_cast<int>(groups_.size()) || groups_[g].external)
+    throw InputError(fmt::format("dpd: group {} is not a rigid group", g));
+  groups_[g].free = true;
+}
+
+void System::kick_free_groups(double dt) {
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    if (!groups_[g].free) continue;
+    const md::Vec3 f = group_force(static_cast<int>(g));
+    double m = 0;
+    for (std::size_t i = 0; i < p_.size(); ++i)
+      if (p_.group[i] == static_cast<int>(g)) m += p_.mass[i];
+    if (!(m > 0)) continue;
+    md::Vec3 v = groups_[g].velocity;
+    for (int d = 0; d < 3; ++d) v[d] += dt * units::ftm2v * f[d] / m;
+    set_group_velocity(static_cast<int>(g), v);
+  }
+}
+
+void System::make_external(int g, const std::vector<std::int64_t>& ids) {
+  if (g < 0 || g >= static_cast<int>(groups_.size()) || !groups_[g].external)
+    throw InputError(fmt::format("dpd: group {} is not an external group", g));
+  std::vector<std::int64_t> sorted = ids;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (p_.group[i] != kMobile || !std::binary_search(sorted.begin(), sorted.end(), p_.id[i])) continue;
+    p_.group[i] = g;
+    p_.type[i] = 1;  // type 2 in the dump
+    p_.vx[i] = p_.vy[i] = p_.vz[i] = 0.0;  // the continuum's thermal motion is in its law
+  }
+  valid_ = false;
 }
 
 md::Vec3 System::group_force(int g) const {

@@ -24,6 +24,7 @@
 
 #include "mpmx/dpd/domain.hpp"
 #include "mpmx/dpd/forces.hpp"
+#include "mpmx/dpd/mover.hpp"
 #include "mpmx/dpd/pair_list.hpp"
 #include "mpmx/dpd/particles.hpp"
 #include "mpmx/dpd/potential/registry.hpp"
@@ -54,6 +55,13 @@ struct SystemOptions {
 struct RigidGroup {
   std::string name;
   md::Vec3 velocity{};  // Angstrom/ps
+  // Moved by the mover (the MPM points of a concurrent run), not at a set velocity; they
+  // take part in the pair forces with the other particles (not among themselves) and,
+  // as particles of infinite mass, in the sweep.
+  bool external = false;
+  // A rigid body with an initial velocity (the seed's flyer): its velocity follows the
+  // total pair force on it over its mass; otherwise it moves at the set velocity.
+  bool free = false;
 };
 
 class System {
@@ -63,6 +71,9 @@ class System {
 
   // nsteps steps of dt (ps); with a thermostat, Berendsen after every step.
   void advance(int nsteps, double dt, const Berendsen* thermostat = nullptr);
+  // From now on `mover` (not owned; null: velocity Verlet again) moves the particles
+  // after the sweep, from the forces at the step's start.
+  void set_mover(Mover* mover) { mover_ = mover; }
 
   double potential_energy() const { return sums_.energy; }  // eV, conservative (valid from construction)
   double kinetic_energy() const;                            // eV, every particle
@@ -92,6 +103,10 @@ class System {
   void set_threads(int n) { opt_.threads = n; }
   // Sets a rigid group's velocity (its particles take it at once).
   void set_group_velocity(int group, const md::Vec3& v);
+  // From now on rigid group g moves as a free rigid body (translation) from its velocity.
+  void release_group(int g);
+  // Moves the mobile particles of `ids` into the external group `group` (at rest).
+  void make_external(int group, const std::vector<std::int64_t>& ids);
   std::int64_t step() const { return step_; }
   double time() const { return time_; }
   std::int64_t neighbor_builds() const { return list_.nb.builds; }
@@ -103,6 +118,7 @@ class System {
   void rebuild();
   void compute_forces(double dt, bool tally = true);
   void check_finite() const;
+  void kick_free_groups(double dt);
   double neighbor_cutoff() const;
 
   Particles p_;
@@ -119,6 +135,8 @@ class System {
   double time_ = 0;
   double dt_ = 0;  // the step the stored forces were computed for (random force ~ 1/sqrt(dt))
   bool valid_ = false;
+  Mover* mover_ = nullptr;
+  std::vector<std::uint8_t> no_pair_;  // per particle: in an external group
 };
 
 }  // namespace mpmx::dpd

@@ -21,6 +21,7 @@
 #include "mpmx/core/progress.hpp"
 #include "mpmx/core/ranks.hpp"
 #include "mpmx/core/units.hpp"
+#include "mpmx/io/plot.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/material/md_closure.hpp"
 #include "mpmx/io/checked_file.hpp"
@@ -166,10 +167,6 @@ std::string deck_text(const MpmConfig& c) {
   std::ostringstream ss;
   ss << c.deck;
   return ss.str();
-}
-
-bool matplotlib_present() {
-  return std::system(MPMX_PYTHON " -c 'import matplotlib, numpy' >/dev/null 2>&1") == 0;
 }
 
 }  // namespace
@@ -682,14 +679,12 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     if (failure.empty() && !r.interrupted) std::filesystem::remove(checkpoint_path(dir));
     if (stage) stage->publish();
     if (failure.empty() && !r.interrupted && o.plot && c.plot && (Dim == 1 || (Dim == 2 && vtk)) &&
-        matplotlib_present()) {
-      const std::string cmd =
-          Dim == 1 ? fmt::format("{} {}/tools/plot/mpmx_plot.py --quiet '{}'", MPMX_PYTHON, MPMX_SOURCE_DIR, o.out_dir)
-                   : fmt::format("{} {}/tools/plot/points2d.py '{}/particles.pvd' --field stress --component xx "
-                                 "--out '{}/stress_xx.png' >/dev/null",
-                                 MPMX_PYTHON, MPMX_SOURCE_DIR, o.out_dir, o.out_dir);
-      if (std::system(cmd.c_str()) != 0)
-        fmt::print(stderr, "mpmx: plotting failed (the run's tables are complete): {}\n", cmd);
+        io::matplotlib_present()) {
+      if (Dim == 1) io::run_plot_script("mpmx_plot.py", fmt::format("--quiet '{}'", o.out_dir));
+      else
+        io::run_plot_script("points2d.py", fmt::format("'{}/particles.pvd' --field stress --component xx "
+                                                       "--out '{}/stress_xx.png' >/dev/null",
+                                                       o.out_dir, o.out_dir));
     }
   }
   if (!failure.empty()) throw RunError(failure);

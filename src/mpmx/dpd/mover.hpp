@@ -1,0 +1,21 @@
+#pragma once
+// What advances the particles between two force evaluations when it is not the system's
+// own velocity Verlet: given the pair forces at the current positions (p.fx, p.fy, p.fz,
+// eV/Angstrom), a mover sets the velocities and positions of every particle (mobile,
+// rigid and external) one step dt later. The DPD/MPM-grid model (seed 004 sec. 3.2,
+// steps s1-s14) is one: its grid lives in multiscale/, so dpd/ knows only this.
+#include <toml++/toml.h>
+
+#include "mpmx/dpd/particles.hpp"
+
+namespace mpmx::dpd {
+
+class Mover {
+ public:
+  virtual ~Mover() = default;
+  virtual void move(Particles& p, double dt) = 0;
+  // What run.json records of the model (its name, grid, counters).
+  virtual void report(toml::table& out) const = 0;
+};
+
+}  // namespace mpmx::dpd

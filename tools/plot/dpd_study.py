@@ -1,0 +1,168 @@
+#!/usr/bin/python3
+"""Figures and figures-of-merit of DPD runs (seed 004 sec. 4): the region displacement
+histories (fig. 3), stress-strain curves (fig. 6) and displacement profiles (fig. 8) of
+one or more `mpmx dpd` run directories, overlaid, and a table of what VALIDATION.md D1-D3
+compare: wave speeds (and their difference from the first run's), initial slopes and peak
+stresses, and, for a concurrent run beside its all-DPD reference (a run whose deck id ends
+in "reference_dpd_only"), the reflection at the interface: the largest difference of the
+'interface' track's displacement from the reference's, before the wave reflected at the
+far free end returns, over the reference's largest displacement there.
+
+Usage: dpd_study.py --out FIG_DIR RUN_DIR [RUN_DIR ...]
+"""
+import argparse
+import csv
+import json
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def table(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return {k: [float(r[k]) for r in rows] for k in rows[0]} if rows else {}
+
+
+def label(run):
+    m = run.get("model", {})
+    if m.get("name") == "dpd_only":
+        return "DPD-only"
+    if m.get("name") == "dpd_mpm_concurrent":
+        return f"DPD/MPM, {m.get('grid_cell_A', 0):g} A"
+    return f"DPD/MPM-grid, {m.get('grid_cell_A', 0):g} A"
+
+
+def reflection(conc, ref, onset):
+    """The interface's reflection: on the 'interface' track (the DPD side, next to the
+    interface), the displacement gained from the incident wave's arrival there (the
+    reference's onset) up to the reference's first peak, concurrent against all-DPD:
+    max |du_conc - du_ref| over max |du_ref|. Gains from the arrival, because the two
+    runs drift apart before it (the static continuum's pull, docs/theory.md)."""
+    a, b = conc.get("tracks"), ref.get("tracks")
+    if not a or not b or "interface_ux_A" not in a or "interface_ux_A" not in b or onset is None:
+        return None
+    t = b["time_ps"]
+    n = min(len(a["time_ps"]), len(t))
+    k0 = next((k for k in range(n) if t[k] >= onset), None)
+    if k0 is None:
+        return None
+    ua, ub = a["interface_ux_A"], b["interface_ux_A"]
+    du_b = [ub[k] - ub[k0] for k in range(k0, n)]
+    # the reference's first peak: where its gain stops growing in magnitude for 0.5 ps
+    step = t[1] - t[0]
+    hold = max(1, round(0.5 / step))
+    end = len(du_b)
+    best = 0
+    for k in range(len(du_b)):
+        if abs(du_b[k]) > abs(du_b[best]):
+            best = k
+        elif k - best > hold:
+            end = best + 1
+            break
+    du_a = [ua[k0 + k] - ua[k0] for k in range(end)]
+    umax = max(abs(v) for v in du_b[:end])
+    if umax <= 0:
+        return None
+    return max(abs(x - y) for x, y in zip(du_a, du_b[:end])) / umax, t[k0], t[k0 + end - 1]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--out", required=True)
+    ap.add_argument("runs", nargs="+")
+    args = ap.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    runs = []
+    for d in args.runs:
+        with open(os.path.join(d, "run.json")) as f:
+            r = json.load(f)
+        r["dir"] = d
+        for name in ("tracks", "stress_strain", "profile"):
+            p = os.path.join(d, name + ".csv")
+            if os.path.exists(p):
+                r[name] = table(p)
+        runs.append(r)
+
+    styles = ["-", "--", "-.", ":", (0, (5, 1)), (0, (1, 1))]
+    with_tracks = [r for r in runs if r.get("tracks")]
+    if with_tracks:
+        fig, ax = plt.subplots(figsize=(6.2, 4.2))
+        for i, r in enumerate(with_tracks):
+            t = r["tracks"]
+            for k, name in enumerate(n for n in t if n.endswith("_ux_A")):
+                ax.plot(t["time_ps"], t[name], linestyle=styles[i % len(styles)], color=f"C{k}",
+                        label=f"{label(r)}: {name[:-5]}")
+        ax.set_xlabel("time after impact (ps)")
+        ax.set_ylabel("mean x displacement (Angstrom)")
+        ax.set_title("Region displacement histories (seed 004 fig. 3)")
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.out, "fig3_tracks.png"), dpi=130)
+        plt.close(fig)
+    with_ss = [r for r in runs if r.get("stress_strain")]
+    if with_ss:
+        fig, ax = plt.subplots(figsize=(5.6, 4.2))
+        for i, r in enumerate(with_ss):
+            s = r["stress_strain"]
+            ax.plot(s["strain"], s["stress_GPa"], linestyle=styles[i % len(styles)], label=label(r))
+        ax.set_xlabel("strain")
+        ax.set_ylabel("stress (GPa)")
+        ax.set_title("Tensile test at 0.02/ps (seed 004 fig. 6)")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.out, "fig6_stress_strain.png"), dpi=130)
+        plt.close(fig)
+    for r in runs:
+        p = r.get("profile")
+        if not p:
+            continue
+        fig, ax = plt.subplots(figsize=(6.2, 4.0))
+        times = sorted(set(p["time_ps"]))
+        cmap = plt.get_cmap("viridis")
+        for n, t in enumerate(times):
+            xs = [x for x, tt in zip(p["x0_A"], p["time_ps"]) if tt == t]
+            us = [u for u, tt in zip(p["ux_A"], p["time_ps"]) if tt == t]
+            ax.plot([x / 10 for x in xs], us, color=cmap(n / max(1, len(times) - 1)), label=f"{t:g} ps")
+        lo = r.get("deck", {}).get("continuum", {}).get("x")
+        if lo:
+            ax.axvline(lo[1] / 10, color="k", linewidth=0.8, linestyle=":")
+        ax.set_xlabel("x at the run's start (nm)")
+        ax.set_ylabel("mean x displacement (Angstrom)")
+        ax.set_title(f"Displacement profiles, {label(r)} (seed 004 fig. 8)")
+        ax.legend(fontsize=7, ncol=2)
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.out, f"fig8_profiles_{r.get('case', 'run')}.png"), dpi=130)
+        plt.close(fig)
+
+    base = runs[0].get("analysis", {})
+    print(f"{'run':<28} {'model':<22} {'wave m/s':>9} {'vs first':>9} {'slope GPa':>10} {'peak GPa':>9} "
+          f"{'fcc start':>9} {'fcc end':>8}")
+    for r in runs:
+        a = r.get("analysis", {})
+        w = a.get("wave_speed_m_per_s")
+        w0 = base.get("wave_speed_m_per_s")
+        rel = f"{100 * (w - w0) / w0:+.1f}%" if w and w0 and w > 0 and w0 > 0 else ""
+        t = a.get("tensile", {})
+        c = r.get("cna", {})
+        print(f"{r.get('case', '?'):<28} {label(r):<22} {w if w else float('nan'):9.0f} {rel:>9} "
+              f"{t.get('initial_slope_GPa', float('nan')):10.2f} {t.get('peak_stress_GPa', float('nan')):9.3f} "
+              f"{c.get('interior_fcc_fraction_start', float('nan')):9.3f} "
+              f"{c.get('interior_fcc_fraction_end', float('nan')):8.3f}")
+    refs = [r for r in runs if str(r.get("case", "")).endswith("reference_dpd_only")]
+    for r in runs:
+        if r.get("model", {}).get("name") == "dpd_mpm_concurrent" and refs:
+            onset = refs[0].get("analysis", {}).get("tracks", {}).get("interface", {}).get("onset_ps")
+            q = reflection(r, refs[0], onset if onset and onset > 0 else None)
+            if q is not None:
+                print(f"interface reflection of {r.get('case')}: {100 * q[0]:.2f}% of the reference's displacement "
+                      f"gain ({q[1]:.2f}-{q[2]:.2f} ps)")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
