@@ -150,3 +150,33 @@ TEST(Cli, InputErrorsArePrintedOnce) {
   EXPECT_EQ(count(r.output, "run.steps"), 1u) << r.output;
   EXPECT_EQ(count(r.output, "input error"), 1u) << r.output;
 }
+
+TEST(Cli, TemperaturesAreBounded) {
+  // An MD deck at 1e30 K ran to completion with meaningless figures; every temperature
+  // key now stops at 1e6 K, named, at check time.
+  const std::string deck = ::testing::TempDir() + "cli_hot.toml";
+  std::FILE* f = std::fopen(deck.c_str(), "w");
+  std::fputs("[potential]\nstyle = \"lj\"\nepsilon = 0.4\nsigma = 2.3\ncutoff = 5.0\nmass = 63.5\n"
+             "[lattice]\nconstant = 3.6\ncells = [3]\n[thermal]\ntemperature = 1e30\n[run]\ndt = 0.001\nsteps = 10\n",
+             f);
+  std::fclose(f);
+  const auto r = mpmx_cli("md " + deck + " --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("thermal.temperature"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1e6 K"), std::string::npos) << r.output;
+  const std::string dpd = std::string(MPMX_SOURCE_DIR) + "/examples/D_dpde_cu_nve.toml";
+  const std::string hot = ::testing::TempDir() + "cli_hot_dpd.toml";
+  std::FILE* in = std::fopen(dpd.c_str(), "r");
+  std::string text;
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, in)) text.append(buf, n);
+  std::fclose(in);
+  text.replace(text.find("initial_temperature = 596.0"), 27, "initial_temperature = 2e9");
+  text.replace(text.find("cu_sc_298K_morse.toml"), 21, std::string(MPMX_SOURCE_DIR) + "/examples/cu_sc_298K_morse.toml");
+  std::FILE* out = std::fopen(hot.c_str(), "w");
+  std::fputs(text.c_str(), out);
+  std::fclose(out);
+  const auto d = mpmx_cli("dpd " + hot + " --check");
+  EXPECT_EQ(d.status, 2) << d.output;
+  EXPECT_NE(d.output.find("dpd.initial_temperature"), std::string::npos) << d.output;
+}

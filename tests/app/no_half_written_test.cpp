@@ -207,3 +207,26 @@ TEST(NoHalfWritten, StagedRunPublishesOnlyARunThatEnded) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(NoHalfWritten, LammpsRouteWritesThroughTheStagingFolder) {
+  // `md --lammps-write-only` into the folder of a finished mpmx run: the LAMMPS inputs
+  // join it, the run's own files stay, and no staging folder is left; a deck with no bar
+  // or jet is refused before anything is made.
+  const std::string deck = std::string(MPMX_SOURCE_DIR) + "/examples/J1_direct_md_tiny.toml";
+  const fs::path out = test::scratch_root() / "lammps_out";
+  ASSERT_EQ(mpmx(fmt::format("md '{}' --out '{}' --quiet", deck, out.string())), 0);
+  const auto before = snapshot(out);
+  ASSERT_EQ(mpmx(fmt::format("md '{}' --out '{}' --lammps-write-only", deck, out.string())), 0);
+  const auto after = snapshot(out);
+  for (const auto& [name, bytes] : before) EXPECT_EQ(after.at(name), bytes) << name;
+  EXPECT_TRUE(after.count("lammps/in.jet") && after.count("lammps/jet.data"));
+  EXPECT_FALSE(fs::exists(out / ".staging"));
+  const fs::path fresh = test::scratch_root() / "lammps_fresh";
+  const std::string m1 = std::string(MPMX_SOURCE_DIR) + "/examples/M1_cu_energy_vs_lattice.toml";
+  EXPECT_EQ(mpmx(fmt::format("md '{}' --out '{}' --lammps-write-only", m1, fresh.string())), 2);
+  EXPECT_FALSE(fs::exists(fresh));
+}
+
+}  // namespace

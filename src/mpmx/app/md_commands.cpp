@@ -26,37 +26,39 @@ namespace mpmx::app {
 namespace {
 
 // The bar of a deck through LAMMPS instead of mpmx's own MD: inputs in OUT/lammps/,
-// then (unless write_only) lmp, and its slab stress as OUT/bar_stress_lammps.csv.
-void run_bar_lammps(const std::string& deck, const md::MdConfig& c, const std::string& out, bool write_only,
-                    int ranks) {
+// then (unless write_only) lmp, and its slab stress as OUT/bar_stress_lammps.csv. Written
+// into `stage` (the staging folder of OUT, io/staged_dir.hpp); messages name OUT.
+void run_bar_lammps(const std::string& deck, const md::MdConfig& c, const std::string& out, const std::string& stage,
+                    bool write_only, int ranks) {
   namespace fs = std::filesystem;
   if (!c.bar)
     throw InputError(fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", deck));
-  const fs::path dir = fs::path(out) / "lammps";
+  const fs::path dir = fs::path(stage) / "lammps", shown = fs::path(out) / "lammps";
   const md::Bar bar(c.bar_config, md::Potential(c.potential), c.options);
   md::write_lammps_bar(bar, c.potential, c.dt, c.steps, c.bar_every, dir.string());
   if (write_only) {
     fmt::print("{} atoms, {} steps: wrote {} and {}; run `lmp -in {}` there (or under mpirun); the slab stress "
                "(GPa) lands in {}\n",
-               bar.system().atoms().size(), c.steps, (dir / md::kLammpsBarData).string(),
-               (dir / md::kLammpsBarInput).string(), md::kLammpsBarInput, (dir / md::kLammpsBarStress).string());
+               bar.system().atoms().size(), c.steps, (shown / md::kLammpsBarData).string(),
+               (shown / md::kLammpsBarInput).string(), md::kLammpsBarInput, (shown / md::kLammpsBarStress).string());
     return;
   }
   const md::LammpsRun r = md::run_lammps(dir.string(), ranks);
   if (r.ranks < ranks) fmt::print(stderr, "md: mpirun not on PATH, LAMMPS ran on 1 rank instead of {}\n", ranks);
   const auto samples =
       md::read_lammps_bar_stress((dir / md::kLammpsBarStress).string(), c.dt, c.bar_config.bins);
-  const fs::path csv = fs::path(out) / "bar_stress_lammps.csv";
+  const fs::path csv = fs::path(stage) / "bar_stress_lammps.csv";
   md::write_bar_stress_csv(csv.string(), samples, bar.slab_centres());
   fmt::print("{} atoms, {} steps through LAMMPS (`{}` in {}) -> {}\n", bar.system().atoms().size(), c.steps,
-             r.command, dir.string(), csv.string());
+             r.command, shown.string(), (fs::path(out) / "bar_stress_lammps.csv").string());
 }
 
 // The jet of a deck through LAMMPS: inputs in OUT/lammps/, then (unless write_only) lmp,
 // and its bins' stress as OUT/jet_stress_lammps.csv (long table, one row per bin and record).
-void run_jet_lammps(const md::MdConfig& c, const std::string& out, bool write_only, int ranks) {
+void run_jet_lammps(const md::MdConfig& c, const std::string& out, const std::string& stage, bool write_only,
+                    int ranks) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::path(out) / "lammps";
+  const fs::path dir = fs::path(stage) / "lammps", shown = fs::path(out) / "lammps";
   md::JetGeometry geo;
   const md::System sys = md::build_jet(c.jet_config, md::Potential(c.potential), c.options, &geo);
   const md::BinGrid grid = md::jet_grid(geo, c.jet_bins[0], c.jet_bins[1]);
@@ -64,14 +66,14 @@ void run_jet_lammps(const md::MdConfig& c, const std::string& out, bool write_on
   if (write_only) {
     fmt::print("{} atoms, {} steps: wrote {} and {}; run `lmp -in {}` there (or under mpirun); the bins' stress "
                "(GPa) lands in {}\n",
-               sys.atoms().size(), c.steps, (dir / md::kLammpsJetData).string(), (dir / md::kLammpsJetInput).string(),
-               md::kLammpsJetInput, (dir / md::kLammpsJetStress).string());
+               sys.atoms().size(), c.steps, (shown / md::kLammpsJetData).string(),
+               (shown / md::kLammpsJetInput).string(), md::kLammpsJetInput, (shown / md::kLammpsJetStress).string());
     return;
   }
   const md::LammpsRun r = md::run_lammps(dir.string(), ranks, md::kLammpsJetInput, md::kLammpsJetStress);
   if (r.ranks < ranks) fmt::print(stderr, "md: mpirun not on PATH, LAMMPS ran on 1 rank instead of {}\n", ranks);
   const auto samples = md::read_lammps_bar_stress((dir / md::kLammpsJetStress).string(), c.dt, grid.nx * grid.ny);
-  const fs::path csv = fs::path(out) / "jet_stress_lammps.csv";
+  const fs::path csv = fs::path(stage) / "jet_stress_lammps.csv";
   std::ofstream f(csv);
   if (!f) throw RunError(fmt::format("cannot write {}", csv.string()));
   f << "step,time_ps,ix,iy,x_A,y_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n";
@@ -84,7 +86,7 @@ void run_jet_lammps(const md::MdConfig& c, const std::string& out, bool write_on
     }
   if (!f) throw RunError(fmt::format("error writing {}", csv.string()));
   fmt::print("{} atoms, {} steps through LAMMPS (`{}` in {}) -> {}\n", sys.atoms().size(), c.steps, r.command,
-             dir.string(), csv.string());
+             shown.string(), (fs::path(out) / "jet_stress_lammps.csv").string());
 }
 
 }  // namespace
@@ -132,12 +134,15 @@ void add_md_commands(CLI::App& app) {
     if (out.empty()) out = "run-" + std::filesystem::path(args->deck).stem().string();
     if (std::error_code ec; std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
       throw InputError(fmt::format("--out {}: exists and is not a directory", out));
-    if ((args->lammps || args->lammps_write_only) && config.jet) {
-      run_jet_lammps(config, out, args->lammps_write_only, args->ranks);
-      return;
-    }
     if (args->lammps || args->lammps_write_only) {
-      run_bar_lammps(args->deck, config, out, args->lammps_write_only, args->ranks);
+      if (!config.jet && !config.bar)
+        throw InputError(
+            fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", args->deck));
+      io::run_staged(out, [&](const std::string& dir) {
+        if (config.jet) run_jet_lammps(config, out, dir, args->lammps_write_only, args->ranks);
+        else run_bar_lammps(args->deck, config, out, dir, args->lammps_write_only, args->ranks);
+        return 0;
+      });
       return;
     }
     const auto r = io::run_staged(

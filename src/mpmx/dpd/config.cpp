@@ -252,9 +252,9 @@ DpdConfig read_dpd_config(io::Deck& deck) {
   p.cutoff = dp.number("cutoff", rc);
   dp.positive("cutoff", p.cutoff);
   p.temperature = dp.number("temperature");
-  dp.non_negative("temperature", p.temperature);
+  dp.temperature("temperature", p.temperature);
   c.initial_temperature = dp.number("initial_temperature", p.temperature);
-  dp.non_negative("initial_temperature", c.initial_temperature);
+  dp.temperature("initial_temperature", c.initial_temperature);
   if (p.energy_conserving) {
     const double cv = dp.number("heat_capacity_kB");
     dp.positive("heat_capacity_kB", cv);
@@ -269,6 +269,7 @@ DpdConfig read_dpd_config(io::Deck& deck) {
     c.equilibrate = true;
     c.berendsen.temperature = eq.number("temperature", p.temperature);
     eq.positive("temperature", c.berendsen.temperature);
+    eq.temperature("temperature", c.berendsen.temperature);
     c.berendsen.tau = eq.number("tau");
     eq.positive("tau", c.berendsen.tau);
     c.equilibrate_steps = eq.integer("steps");
@@ -286,7 +287,7 @@ DpdConfig read_dpd_config(io::Deck& deck) {
   c.thermo = run.integer("thermo", 100);
   run.check(c.thermo >= 1, "thermo", "must be >= 1");
   c.dump_every = run.integer("dump_every", 0);
-  run.check(c.dump_every >= 0 && (c.dump_every == 0 || c.dump_every % c.thermo == 0), "dump_every",
+  run.check(c.dump_every >= 0 && (c.dump_every == 0 || (c.thermo >= 1 && c.dump_every % c.thermo == 0)), "dump_every",
             "must be 0 (no dump) or a multiple of thermo");
   c.skin = run.number("skin", 1.0);
   run.non_negative("skin", c.skin);

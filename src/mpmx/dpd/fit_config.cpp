@@ -30,6 +30,7 @@ FitConfig read_fit_config(io::Deck& deck) {
   md.check(c.md.cells >= 2 && c.md.cells <= 40, "cells", "must be from 2 to 40 fcc cells per edge");
   c.md.temperature = md.number("temperature");
   md.positive("temperature", c.md.temperature);
+  md.temperature("temperature", c.md.temperature);
   c.md.dt = md.number("dt", 0.002);
   md.check(c.md.dt > 0 && c.md.dt <= 0.01, "dt", "must lie in (0, 0.01] ps");
   c.md.equilibrate_steps = static_cast<int>(md.integer("equilibrate_steps", 3000));

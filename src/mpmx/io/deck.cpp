@@ -423,6 +423,10 @@ void Section::non_negative(std::string_view key, double value) {
   check(value >= 0.0, key, "must not be negative");
 }
 
+void Section::temperature(std::string_view key, double value) {
+  check(value >= 0.0 && value <= 1e6, key, "must be a temperature from 0 to 1e6 K");
+}
+
 void Section::error(std::string_view reason) {
   deck_->add_error(table_, fmt::format("[{}]: {}", path_.empty() ? "deck" : path_, reason));
 }

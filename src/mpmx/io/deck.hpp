@@ -71,6 +71,9 @@ class Section {
   void check(bool ok, std::string_view key, std::string_view reason);
   void positive(std::string_view key, double value);
   void non_negative(std::string_view key, double value);
+  // A temperature in K: from 0 to 1e6 K (beyond, no potential or mesoparticle model
+  // means anything, and the velocities it draws overflow the run's figures).
+  void temperature(std::string_view key, double value);
   // An error not tied to one key of this table.
   void error(std::string_view reason);
 

@@ -28,7 +28,7 @@ std::shared_ptr<const Model> read_md_closure(io::Section& m, const Context& ctx)
   md.cells = static_cast<int>(s.integer("cells", 4));
   s.check(md.cells >= 1 && md.cells <= 20, "cells", "must be from 1 to 20 (4 x cells^3 atoms per point)");
   md.temperature = s.number("temperature", 0.0);
-  s.non_negative("temperature", md.temperature);
+  s.temperature("temperature", md.temperature);
   const auto seed = s.integer("seed", 1);
   s.check(seed >= 0, "seed", "must be >= 0");
   md.seed = static_cast<std::uint64_t>(seed);

@@ -91,7 +91,7 @@ MdConfig read_md_config(io::Deck& deck) {
 
   auto th = root.optional_table("thermal");
   c.temperature = th.number("temperature", 0.0);
-  th.non_negative("temperature", c.temperature);
+  th.temperature("temperature", c.temperature);
   c.seed = static_cast<std::uint64_t>(th.integer("seed", 1, 0, kMax64));
   c.relax_steps = th.integer("relax_steps", 0, 0, kMax64);
 
