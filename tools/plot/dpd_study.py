@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Figures and figures-of-merit of DPD runs (seed 004 sec. 4): the region displacement
-histories (fig. 3), stress-strain curves (fig. 6) and displacement profiles (fig. 8) of
+histories (fig. 3), CNA snapshots of the last dump frame (fig. 4, when the dump has a
+structure column), stress-strain curves (fig. 6) and displacement profiles (fig. 8) of
 one or more `mpmx dpd` run directories, overlaid, and a table of what VALIDATION.md D1-D3
 compare: wave speeds (and their difference from the first run's), initial slopes and peak
 stresses, and, for a concurrent run beside its all-DPD reference (a run whose deck id ends
@@ -71,6 +72,56 @@ def reflection(conc, ref, onset):
     return max(abs(x - y) for x, y in zip(du_a, du_b[:end])) / umax, t[k0], t[k0 + end - 1]
 
 
+def last_frame(path):
+    """The last frame of a LAMMPS dump: (step, {column: list of floats})."""
+    step, cols, rows, names = None, None, [], []
+    with open(path) as f:
+        lines = iter(f)
+        for line in lines:
+            if line.startswith("ITEM: TIMESTEP"):
+                step, rows = int(next(lines)), []
+            elif line.startswith("ITEM: ATOMS"):
+                names = line.split()[2:]
+                rows = []
+            elif names and not line.startswith("ITEM"):
+                rows.append(line.split())
+            if rows and len(rows) and names:
+                cols = rows
+    if not names or not cols:
+        return None
+    return step, {n: [float(row[k]) for row in cols] for k, n in enumerate(names)}
+
+
+def cna_snapshot(run, out):
+    """Fig. 4: the last dump frame's particles in a slab through the rod's middle (y within
+    one coarse lattice constant of the centre), x-z, coloured by CNA structure."""
+    path = os.path.join(run["dir"], "dump.lammpstrj")
+    if not os.path.exists(path):
+        return
+    frame = last_frame(path)
+    if frame is None or "structure" not in frame[1]:
+        return
+    step, c = frame
+    a = run.get("cna", {}).get("lattice_constant_A", 7.0)
+    ymid = 0.5 * (min(c["y"]) + max(c["y"]))
+    keep = [k for k, y in enumerate(c["y"]) if abs(y - ymid) <= 0.5 * a]
+    colours = {0: "#d0d0d0", 1: "#2ca02c", 2: "#d62728"}
+    fig, ax = plt.subplots(figsize=(8, 3.2))
+    for code, name in ((1, "fcc"), (2, "hcp"), (0, "other")):
+        sel = [k for k in keep if int(c["structure"][k]) == code]
+        ax.scatter([c["x"][k] / 10 for k in sel], [c["z"][k] / 10 for k in sel], s=9, c=colours[code],
+                   label=f"{name} ({len(sel)})", edgecolors="none")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (nm)")
+    ax.set_ylabel("z (nm)")
+    t = run.get("dt_ps", 0) * (step - run.get("equilibrate_steps", 0))
+    ax.set_title(f"CNA, {label(run)}, {t:g} ps into the run (seed 004 fig. 4)")
+    ax.legend(fontsize=7, loc="upper right")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, f"fig4_cna_{run.get('case', 'run')}.png"), dpi=130)
+    plt.close(fig)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--out", required=True)
@@ -138,6 +189,9 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(args.out, f"fig8_profiles_{r.get('case', 'run')}.png"), dpi=130)
         plt.close(fig)
+
+    for r in runs:
+        cna_snapshot(r, args.out)
 
     base = runs[0].get("analysis", {})
     print(f"{'run':<28} {'model':<22} {'wave m/s':>9} {'vs first':>9} {'slope GPa':>10} {'peak GPa':>9} "
