@@ -27,8 +27,12 @@ namespace mpmx::dpd {
 class PairList {
  public:
   void build(const Particles& p, const Domain& d, double cutoff, double skin, bool sweep_order);
-  bool needs_rebuild(const Particles& p, const Domain& d) const { return nb.needs_rebuild(p, d.box); }
-  void update_positions(const Particles& p, const Domain& d) { nb.update_positions(p, d.box); }
+  bool needs_rebuild(const Particles& p, const Domain& d, int threads = 1) const {
+    return nb.needs_rebuild(p, d.box, threads);
+  }
+  void update_positions(const Particles& p, const Domain& d, int threads = 1) {
+    nb.update_positions(p, d.box, threads);
+  }
   int slots() const { return static_cast<int>(nb.list.size()); }
   int slabs() const { return static_cast<int>(slab_first.size()) - 1; }
 

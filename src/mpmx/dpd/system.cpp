@@ -146,8 +146,10 @@ void System::advance(int nsteps, double dt, const Berendsen* thermostat) {
   sp.heat_capacity = par_.heat_capacity;
   sp.seed = par_.seed;
   const double half = 0.5 * dt * units::ftm2v;
+  const int threads = opt_.threads;
   auto kick = [&] {
     kick_free_groups(0.5 * dt);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
     for (std::size_t i = 0; i < n; ++i) {
       if (p_.group[i] != kMobile) continue;
       const double h = half / p_.mass[i];
@@ -166,6 +168,7 @@ void System::advance(int nsteps, double dt, const Berendsen* thermostat) {
       mover_->move(p_, dt);
     } else {
       kick();
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
       for (std::size_t i = 0; i < n; ++i) {
         p_.x[i] += dt * p_.vx[i];
         p_.y[i] += dt * p_.vy[i];
@@ -174,8 +177,8 @@ void System::advance(int nsteps, double dt, const Berendsen* thermostat) {
     }
     ++step_;
     time_ += dt;
-    if (list_.needs_rebuild(p_, d_)) rebuild();
-    else list_.update_positions(p_, d_);
+    if (list_.needs_rebuild(p_, d_, opt_.threads)) rebuild();
+    else list_.update_positions(p_, d_, opt_.threads);
     compute_forces(dt, s + 1 == nsteps);  // energy and virial on the last step only
     if (!mover_) kick();
     if (thermostat) berendsen_rescale(p_, *thermostat, dt, par_.energy_conserving ? par_.heat_capacity : 0.0);

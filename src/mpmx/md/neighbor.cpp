@@ -152,14 +152,16 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) 
   ++builds;
 }
 
-void Neighbors::update_positions(const Atoms& atoms, const Box& box) {
+void Neighbors::update_positions(const Atoms& atoms, const Box& box, int threads) {
   // Only the packed copy the kernels read; x, y, z keep the build-time positions.
   double* __restrict q = xyz.data();
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (int i = 0; i < nlocal; ++i) {
     q[4 * i] = atoms.x[i];
     q[4 * i + 1] = atoms.y[i];
     q[4 * i + 2] = atoms.z[i];
   }
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (int k = nlocal; k < nall; ++k) {
     const int o = owner[k];
     const int a = n1[k], b = n2[k], c = n3[k];
@@ -179,9 +181,10 @@ void Neighbors::pack() {
   }
 }
 
-bool Neighbors::needs_rebuild(const Atoms& atoms, const Box& box) const {
+bool Neighbors::needs_rebuild(const Atoms& atoms, const Box& box, int threads) const {
   if (!built_ || static_cast<int>(atoms.size()) != nlocal) return true;
-  double d2max = 0;
+  double d2max = 0;  // a maximum: the same for any thread count
+#pragma omp parallel for schedule(static) reduction(max : d2max) num_threads(threads) if (threads > 1)
   for (int i = 0; i < nlocal; ++i) {
     const double dx = atoms.x[i] - x0_[i], dy = atoms.y[i] - y0_[i], dz = atoms.z[i] - z0_[i];
     d2max = std::max(d2max, dx * dx + dy * dy + dz * dz);

@@ -21,9 +21,11 @@ class Neighbors {
   // first); along an open axis they may lie anywhere.
   void build(const Atoms& atoms, const Box& box, double cutoff, double skin);
   // Positions of locals and ghosts for the current atoms and box (every step).
-  void update_positions(const Atoms& atoms, const Box& box);
+  // `threads` > 1 spreads the copy (one big system, as DPD's); the MD boxes of a
+  // multiscale run call it from their own thread with the default.
+  void update_positions(const Atoms& atoms, const Box& box, int threads = 1);
   // True if some pair may have come within the cutoff unseen.
-  bool needs_rebuild(const Atoms& atoms, const Box& box) const;
+  bool needs_rebuild(const Atoms& atoms, const Box& box, int threads = 1) const;
   bool built() const { return built_; }
   // The positions and box of the last build (a checkpoint rebuilds the same list from them).
   const std::vector<double>& x_at_build() const { return x0_; }
