@@ -1,8 +1,7 @@
 #include "mpmx/io/atomic_file.hpp"
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
+#include <cerrno>
+#include <cstring>
 
 #include <fmt/format.h>
 
@@ -10,25 +9,38 @@
 
 namespace mpmx::io {
 
+AtomicWriter::AtomicWriter(std::string path) : path_(std::move(path)), tmp_(path_ + ".tmp") {
+  f_ = std::fopen(tmp_.c_str(), "wb");
+  if (!f_) fail("cannot create " + tmp_);
+}
+
+AtomicWriter::~AtomicWriter() {
+  if (f_) std::fclose(f_);
+  if (!done_) std::remove(tmp_.c_str());
+}
+
+void AtomicWriter::write(const void* data, std::size_t bytes) {
+  if (bytes > 0 && std::fwrite(data, 1, bytes, f_) != bytes) fail("write failed");
+}
+
+void AtomicWriter::commit() {
+  std::FILE* f = f_;
+  f_ = nullptr;
+  // fclose flushes: a full disk shows up here rather than in fwrite.
+  if (std::fclose(f) != 0) fail("write failed (disk full?)");
+  if (std::rename(tmp_.c_str(), path_.c_str()) != 0) fail("cannot rename " + tmp_);
+  done_ = true;
+}
+
+void AtomicWriter::fail(const std::string& what) const {
+  const int err = errno;
+  throw RunError(fmt::format("writing {}: {}: {}", path_, what, std::strerror(err)));
+}
+
 void write_file_atomic(const std::string& path, std::string_view bytes) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw RunError(fmt::format("cannot create {}", tmp));
-    f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    f.flush();
-    if (!f) {
-      f.close();
-      std::remove(tmp.c_str());
-      throw RunError(fmt::format("cannot write {} (disk full?)", tmp));
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw RunError(fmt::format("cannot rename {} to {}: {}", tmp, path, ec.message()));
-  }
+  AtomicWriter w(path);
+  w.write(bytes);
+  w.commit();
 }
 
 }  // namespace mpmx::io

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/io/atomic_file.hpp"
 
 namespace mpmx::io::vtk {
 namespace {
@@ -23,45 +24,6 @@ namespace {
 constexpr const char* kByteOrder =
     std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian";
 constexpr std::uint8_t kVtkVertex = 1;
-
-// Writes `path + ".tmp"` and renames it over `path` on commit(); a failure or an early
-// exit removes the temporary, so `path` is always a whole file or absent.
-class AtomicFile {
- public:
-  explicit AtomicFile(std::string path) : path_(std::move(path)), tmp_(path_ + ".tmp") {
-    f_ = std::fopen(tmp_.c_str(), "wb");
-    if (!f_) fail("cannot create " + tmp_);
-  }
-  ~AtomicFile() {
-    if (f_) std::fclose(f_);
-    if (!done_) std::remove(tmp_.c_str());
-  }
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
-
-  void write(const void* data, std::size_t bytes) {
-    if (bytes > 0 && std::fwrite(data, 1, bytes, f_) != bytes) fail("write failed");
-  }
-  void write(std::string_view s) { write(s.data(), s.size()); }
-
-  void commit() {
-    std::FILE* f = f_;
-    f_ = nullptr;
-    // fclose flushes: a full disk shows up here rather than in fwrite.
-    if (std::fclose(f) != 0) fail("write failed");
-    if (std::rename(tmp_.c_str(), path_.c_str()) != 0) fail("cannot rename " + tmp_);
-    done_ = true;
-  }
-
- private:
-  [[noreturn]] void fail(const std::string& what) const {
-    const int err = errno;
-    throw RunError(fmt::format("VTK output {}: {}: {}", path_, what, std::strerror(err)));
-  }
-  std::string path_, tmp_;
-  std::FILE* f_ = nullptr;
-  bool done_ = false;
-};
 
 // A name goes into an XML attribute.
 std::string escape(std::string_view s) {
@@ -114,7 +76,7 @@ class Appended {
     offset_ += sizeof(std::uint64_t) + bytes;
     return tag;
   }
-  void write(AtomicFile& f) const {
+  void write(AtomicWriter& f) const {
     f.write("  <AppendedData encoding=\"raw\">\n   _");
     for (const auto& b : blocks_) {
       const std::uint64_t n = b.bytes;
@@ -218,7 +180,7 @@ void write_points(const std::string& path, const std::vector<double>& xyz,
   xml += "        " + data.add("UInt8", R"( Name="types")", 1, types.data(), n) + "\n";
   xml += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n";
 
-  AtomicFile f(path);
+  AtomicWriter f(path);
   f.write(xml);
   data.write(f);
   f.commit();
@@ -246,7 +208,7 @@ void write_image(const std::string& path, std::array<int, 3> nodes, std::array<d
   xml += point_data(fields, data);
   xml += "    </Piece>\n  </ImageData>\n";
 
-  AtomicFile f(path);
+  AtomicWriter f(path);
   f.write(xml);
   data.write(f);
   f.commit();
@@ -273,7 +235,7 @@ void Series::write() const {
     xml += fmt::format("    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", time,
                        escape(file));
   xml += "  </Collection>\n</VTKFile>\n";
-  AtomicFile f(path_);
+  AtomicWriter f(path_);
   f.write(xml);
   f.commit();
 }
