@@ -192,3 +192,26 @@ TEST(DpdCli, ExampleDecksValidate) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(DpdCli, GridAndAnalysisKeysAreChecked) {
+  // A DPD/MPM-grid deck whose cells would not fit, a track named twice, a wave speed
+  // between unknown tracks, an interface of no known kind: exit 2, each key named.
+  std::string text = slurp(fs::path(MPMX_SOURCE_DIR) / "examples/D3_concurrent_dpd_mpm.toml");
+  auto swap = [&](const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  swap("file = \"cu_sc_298K_morse.toml\"", "file = \"" + std::string(MPMX_SOURCE_DIR) + "/examples/cu_sc_298K_morse.toml\"");
+  swap("cell = 4.0", "cell = 0.01");
+  swap("name = \"region2\"", "name = \"region1\"");
+  swap("interface = \"pair_reaction\"", "interface = \"glue\"");
+  const auto r = run("dpd " + deck("grid_bad.toml", text).string() + " --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  for (const char* key : {"'grid'", "track[1].name", "analysis.wave_speed", "continuum.interface"})
+    EXPECT_NE(r.output.find(key), std::string::npos) << key << "\n" << r.output;
+}
+
+}  // namespace

@@ -92,7 +92,13 @@ void check_memory(io::Section& root, const DpdConfig& c) {
   if (c.grid.cell > 0) {
     double nodes = 1;
     const double size[3] = {c.domain.box.lx, c.domain.box.ly, c.domain.box.lz};
-    for (int d = 0; d < 3; ++d) nodes *= (size[d] + 2 * c.grid.margin) / c.grid.cell + 3;
+    for (int d = 0; d < 3; ++d) {
+      const double cells = (size[d] + 2 * c.grid.margin) / c.grid.cell;
+      root.check(cells <= 4096, "grid",
+                 fmt::format("cell = {} A and margin = {} A make {:.0f} cells along axis {} (at most 4096)", c.grid.cell,
+                             c.grid.margin, std::ceil(cells), d));
+      nodes *= cells + 3;
+    }
     bytes += 16 * 8 * nodes;
     root.check(nodes <= 4e9, "grid", fmt::format("cell = {} A makes {:.3g} grid nodes (at most 4e9)", c.grid.cell, nodes));
   }
