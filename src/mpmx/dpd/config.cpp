@@ -133,7 +133,9 @@ void read_coupling(io::Section& root, DpdConfig& c) {
     if (x.size() == 2 && x[1] > x[0]) s.lo = x[0], s.hi = x[1];
     else m.check(false, "x", "expected [lower, upper] with upper > lower (Angstrom)");
     s.lattice_constant = m.number("lattice_constant");
-    m.positive("lattice_constant", s.lattice_constant);
+    m.check(s.lattice_constant >= 0.05 * cutoff(c.potential) && s.lattice_constant <= 1000, "lattice_constant",
+            fmt::format("must lie in [{:.3g}, 1000] Angstrom (at least a twentieth of the pair cutoff)",
+                        0.05 * cutoff(c.potential)));
     s.from_potential = m.choice("constants_from", {"pair_potential", "given"}, "pair_potential") == "pair_potential";
     s.pair_reaction = m.choice("interface", {"pair_reaction", "seed"}, "pair_reaction") == "pair_reaction";
     if (!s.from_potential) {

@@ -3,6 +3,10 @@
 #include <cmath>
 #include <variant>
 
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+
 namespace mpmx::dpd {
 
 namespace {
@@ -22,6 +26,10 @@ double f_over_r(const PairPotential& pot, double r) {
 
 LatticeConstants fcc_born_constants(const PairPotential& pot, double a) {
   const double rc = cutoff(pot);
+  if (!(a > 0) || !(rc / a <= 100))
+    throw InputError(fmt::format("Born constants: lattice constant {} A against a cutoff of {} A: the lattice sum "
+                                 "would run over more than 100 cells per axis",
+                                 a, rc));
   const int nmax = static_cast<int>(std::ceil(rc / a)) + 1;
   static const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
   double c11 = 0, c12 = 0, c44 = 0, virial = 0;
