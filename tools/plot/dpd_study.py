@@ -72,24 +72,32 @@ def reflection(conc, ref, onset):
     return max(abs(x - y) for x, y in zip(du_a, du_b[:end])) / umax, t[k0], t[k0 + end - 1]
 
 
+def finish(fig, ax, xlabel, ylabel, title, path, legend=8, ncol=1):
+    """Labels, legend and the PNG; closes the figure."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=legend, ncol=ncol)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
 def last_frame(path):
-    """The last frame of a LAMMPS dump: (step, {column: list of floats})."""
-    step, cols, rows, names = None, None, [], []
+    """The last frame of a LAMMPS dump: (step, {column: list of floats}), or None."""
+    step, names, rows = None, [], []
     with open(path) as f:
         lines = iter(f)
         for line in lines:
             if line.startswith("ITEM: TIMESTEP"):
-                step, rows = int(next(lines)), []
+                step, names, rows = int(next(lines)), [], []
             elif line.startswith("ITEM: ATOMS"):
                 names = line.split()[2:]
-                rows = []
-            elif names and not line.startswith("ITEM"):
+            elif names:
                 rows.append(line.split())
-            if rows and len(rows) and names:
-                cols = rows
-    if not names or not cols:
+    if not names or not rows:
         return None
-    return step, {n: [float(row[k]) for row in cols] for k, n in enumerate(names)}
+    return step, {n: [float(row[k]) for row in rows] for k, n in enumerate(names)}
 
 
 def cna_snapshot(run, out):
@@ -112,14 +120,9 @@ def cna_snapshot(run, out):
         ax.scatter([c["x"][k] / 10 for k in sel], [c["z"][k] / 10 for k in sel], s=9, c=colours[code],
                    label=f"{name} ({len(sel)})", edgecolors="none")
     ax.set_aspect("equal")
-    ax.set_xlabel("x (nm)")
-    ax.set_ylabel("z (nm)")
     t = run.get("dt_ps", 0) * (step - run.get("equilibrate_steps", 0))
-    ax.set_title(f"CNA, {label(run)}, {t:g} ps into the run (seed 004 fig. 4)")
-    ax.legend(fontsize=7, loc="upper right")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, f"fig4_cna_{run.get('case', 'run')}.png"), dpi=130)
-    plt.close(fig)
+    finish(fig, ax, "x (nm)", "z (nm)", f"CNA, {label(run)}, {t:g} ps into the run (seed 004 fig. 4)",
+           os.path.join(out, f"fig4_cna_{run.get('case', 'run')}.png"), legend=7)
 
 
 def main():
@@ -148,26 +151,16 @@ def main():
             for k, name in enumerate(n for n in t if n.endswith("_ux_A")):
                 ax.plot(t["time_ps"], t[name], linestyle=styles[i % len(styles)], color=f"C{k}",
                         label=f"{label(r)}: {name[:-5]}")
-        ax.set_xlabel("time after impact (ps)")
-        ax.set_ylabel("mean x displacement (Angstrom)")
-        ax.set_title("Region displacement histories (seed 004 fig. 3)")
-        ax.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(os.path.join(args.out, "fig3_tracks.png"), dpi=130)
-        plt.close(fig)
+        finish(fig, ax, "time after impact (ps)", "mean x displacement (Angstrom)",
+               "Region displacement histories (seed 004 fig. 3)", os.path.join(args.out, "fig3_tracks.png"), legend=7)
     with_ss = [r for r in runs if r.get("stress_strain")]
     if with_ss:
         fig, ax = plt.subplots(figsize=(5.6, 4.2))
         for i, r in enumerate(with_ss):
             s = r["stress_strain"]
             ax.plot(s["strain"], s["stress_GPa"], linestyle=styles[i % len(styles)], label=label(r))
-        ax.set_xlabel("strain")
-        ax.set_ylabel("stress (GPa)")
-        ax.set_title("Tensile test at 0.02/ps (seed 004 fig. 6)")
-        ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(os.path.join(args.out, "fig6_stress_strain.png"), dpi=130)
-        plt.close(fig)
+        finish(fig, ax, "strain", "stress (GPa)", "Tensile test (seed 004 fig. 6)",
+               os.path.join(args.out, "fig6_stress_strain.png"))
     for r in runs:
         p = r.get("profile")
         if not p:
@@ -182,13 +175,9 @@ def main():
         lo = r.get("deck", {}).get("continuum", {}).get("x")
         if lo:
             ax.axvline(lo[1] / 10, color="k", linewidth=0.8, linestyle=":")
-        ax.set_xlabel("x at the run's start (nm)")
-        ax.set_ylabel("mean x displacement (Angstrom)")
-        ax.set_title(f"Displacement profiles, {label(r)} (seed 004 fig. 8)")
-        ax.legend(fontsize=7, ncol=2)
-        fig.tight_layout()
-        fig.savefig(os.path.join(args.out, f"fig8_profiles_{r.get('case', 'run')}.png"), dpi=130)
-        plt.close(fig)
+        finish(fig, ax, "x at the run's start (nm)", "mean x displacement (Angstrom)",
+               f"Displacement profiles, {label(r)} (seed 004 fig. 8)",
+               os.path.join(args.out, f"fig8_profiles_{r.get('case', 'run')}.png"), legend=7, ncol=2)
 
     for r in runs:
         cna_snapshot(r, args.out)

@@ -18,10 +18,10 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-int group_index(const System& s, const std::string& name) {
-  for (std::size_t g = 0; g < s.groups().size(); ++g)
-    if (s.groups()[g].name == name) return static_cast<int>(g);
-  throw InputError(fmt::format("tensile.grips: \"{}\" is not a rigid group of the deck", name));
+int grip_index(const System& s, const std::string& name) {
+  const int g = s.group_index(name);
+  if (g < 0) throw InputError(fmt::format("tensile.grips: \"{}\" is not a rigid group of the deck", name));
+  return g;
 }
 
 double group_mean_x(const Particles& p, int g) {
@@ -57,8 +57,8 @@ Recorder::Recorder(const AnalysisSpec& spec, const System& s) : spec_(spec), t0_
   length_ = s.domain().length(0);
   area_ = s.domain().length(1) * s.domain().length(2);
   if (!spec_.grips[0].empty()) {
-    grip_[0] = group_index(s, spec_.grips[0]);
-    grip_[1] = group_index(s, spec_.grips[1]);
+    grip_[0] = grip_index(s, spec_.grips[0]);
+    grip_[1] = grip_index(s, spec_.grips[1]);
     sep0_ = group_mean_x(p, grip_[1]) - group_mean_x(p, grip_[0]);
   }
   record(s);
@@ -198,11 +198,10 @@ toml::table Recorder::summary() const {
   }
   if (!spec_.wave_speed[0].empty()) t.insert("wave_speed_m_per_s", finite(100.0 * wave_speed()));
   if (grip_[0] >= 0 && !strain_.empty()) {
-    const auto peak = std::max_element(stress_.begin(), stress_.end());
     t.insert("tensile", toml::table{{"initial_slope_GPa", finite(initial_slope())},
                                     {"slope_strain", toml::array{spec_.slope_strain[0], spec_.slope_strain[1]}},
-                                    {"peak_stress_GPa", *peak},
-                                    {"strain_at_peak", strain_[peak - stress_.begin()]},
+                                    {"peak_stress_GPa", peak_stress()},
+                                    {"strain_at_peak", peak_strain()},
                                     {"final_strain", strain_.back()}});
   }
   return t;
@@ -220,6 +219,10 @@ double Recorder::initial_slope() const {
 
 double Recorder::peak_stress() const {
   return stress_.empty() ? kNaN : *std::max_element(stress_.begin(), stress_.end());
+}
+
+double Recorder::peak_strain() const {
+  return stress_.empty() ? kNaN : strain_[std::max_element(stress_.begin(), stress_.end()) - stress_.begin()];
 }
 
 }  // namespace mpmx::dpd

@@ -58,6 +58,7 @@ class Recorder {
   // Tensile: least-squares slope of stress on strain over slope_strain, and the peak (GPa).
   double initial_slope() const;
   double peak_stress() const;
+  double peak_strain() const;  // the strain at the peak
 
  private:
   double onset_time(std::size_t track) const;

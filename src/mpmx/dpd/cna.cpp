@@ -141,4 +141,21 @@ double fcc_fraction(const std::vector<std::uint8_t>& codes, const std::vector<st
   return n > 0 ? f / n : 0.0;
 }
 
+double interior_fcc_fraction(const Particles& p, const Domain& d, double a) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.rigid(i)) continue;
+    const double x[3] = {p.x[i], p.y[i], p.z[i]};
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], x[k]), hi[k] = std::max(hi[k], x[k]);
+  }
+  std::vector<std::uint8_t> interior(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double x[3] = {p.x[i], p.y[i], p.z[i]};
+    bool in = !p.rigid(i);
+    for (int k = 0; k < 3; ++k) in = in && (d.periodic[k] || (x[k] >= lo[k] + a && x[k] <= hi[k] - a));
+    interior[i] = in ? 1 : 0;
+  }
+  return fcc_fraction(common_neighbour_analysis(p, d, a), interior);
+}
+
 }  // namespace mpmx::dpd

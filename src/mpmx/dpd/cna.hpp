@@ -21,4 +21,8 @@ std::vector<std::uint8_t> common_neighbour_analysis(const Particles& p, const Do
 // Fraction of `codes` equal to kFcc over the particles selected by `mask` (all when empty).
 double fcc_fraction(const std::vector<std::uint8_t>& codes, const std::vector<std::uint8_t>& mask = {});
 
+// CNA's fcc fraction over the mobile particles at least one lattice constant inside their
+// bounding box along every open axis (a free surface is never fcc by CNA).
+double interior_fcc_fraction(const Particles& p, const Domain& d, double lattice_constant);
+
 }  // namespace mpmx::dpd

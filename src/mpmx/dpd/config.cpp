@@ -25,16 +25,8 @@ bool read_vec3(io::Section& s, std::string_view key, md::Vec3& out, bool require
   return true;
 }
 
-bool group_names_has(const DpdConfig& c, const std::string& name) {
-  for (const auto& b : c.blocks)
-    if (b.group == name) return true;
-  for (const auto& r : c.regions)
-    if (r.name == name) return true;
-  return false;
-}
-
-// [[track]], [analysis], [tensile], [profile] (analysis.hpp).
-void read_analysis(io::Section& root, DpdConfig& c) {
+// [[track]], [analysis], [tensile], [profile] (analysis.hpp); `groups` the rigid groups' names.
+void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>& groups) {
   AnalysisSpec& a = c.analysis;
   std::set<std::string> names;
   for (auto& t : root.tables("track")) {
@@ -65,7 +57,7 @@ void read_analysis(io::Section& root, DpdConfig& c) {
   auto te = root.optional_table("tensile");
   if (te.present()) {
     const auto g = te.strings("grips", {});
-    if (g.size() == 2 && g[0] != g[1] && group_names_has(c, g[0]) && group_names_has(c, g[1])) a.grips = {g[0], g[1]};
+    if (g.size() == 2 && g[0] != g[1] && groups.count(g[0]) && groups.count(g[1])) a.grips = {g[0], g[1]};
     else te.check(false, "grips", "expected the names of two different rigid groups [left, right]");
     const auto r = te.numbers("slope_strain", {0.0, 0.05});
     if (r.size() == 2 && r[1] > r[0]) a.slope_strain = {r[0], r[1]};
@@ -121,8 +113,8 @@ void read_coupling(io::Section& root, DpdConfig& c) {
                         "the cell edge)", cutoff(c.potential)));
     c.grid.margin = g.number("margin", 30.0);
     g.non_negative("margin", c.grid.margin);
-    for (int d = 0; d < 3; ++d)
-      g.check(!c.domain.periodic[d], "cell", "the DPD/MPM grid needs open boundaries (box.boundary = [\"f\", \"f\", \"f\"])");
+    g.check(!c.domain.periodic[0] && !c.domain.periodic[1] && !c.domain.periodic[2], "cell",
+            "the DPD/MPM grid needs open boundaries (box.boundary = [\"f\", \"f\", \"f\"])");
   }
   auto m = root.optional_table("continuum");
   if (m.present()) {
@@ -299,7 +291,7 @@ DpdConfig read_dpd_config(io::Deck& deck) {
             "must be 0 (no dump) or a multiple of thermo");
   c.skin = run.number("skin", 1.0);
   run.non_negative("skin", c.skin);
-  read_analysis(root, c);
+  read_analysis(root, c, group_names);
   read_coupling(root, c);
   check_memory(root, c);
   deck.finish();

@@ -165,19 +165,15 @@ DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml
   if (c.equilibrate && c.equilibrate_steps > 0) phase("equilibrate", c.equilibrate_steps, &c.berendsen, false);
   // The run: rigid groups at their velocities, energy and momentum from here.
   DpdRunSummary r;
-  std::vector<md::Vec3> set_v;  // groups in build_system's order: blocks, then regions
-  for (const BlockSpec& s : c.blocks)
-    if (!s.group.empty()) set_v.push_back(s.velocity);
-  for (const RegionGroupSpec& s : c.regions) set_v.push_back(s.velocity);
-  for (std::size_t g = 0; g < set_v.size(); ++g) sys.set_group_velocity(static_cast<int>(g), set_v[g]);
-  {
-    int g = 0;
-    for (const BlockSpec& s : c.blocks) {
-      if (s.group.empty()) continue;
-      if (s.free) sys.release_group(g);
-      ++g;
-    }
+  // Rigid groups at their velocities, in build_system's order (blocks, then regions); the
+  // free ones then move by their forces.
+  for (const BlockSpec& s : c.blocks) {
+    if (s.group.empty()) continue;
+    const int g = sys.group_index(s.group);
+    sys.set_group_velocity(g, s.velocity);
+    if (s.free) sys.release_group(g);
   }
+  for (const RegionGroupSpec& s : c.regions) sys.set_group_velocity(sys.group_index(s.name), s.velocity);
   if (c.continuum.on) {
     // The concurrent model's continuum: the equilibrated particles of the region.
     std::vector<std::int64_t> ids;
@@ -187,7 +183,7 @@ DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml
     if (ids.empty())
       throw InputError(fmt::format("continuum.x = [{}, {}]: no mobile particle lies there at the run's start",
                                    c.continuum.lo, c.continuum.hi));
-    sys.make_external(static_cast<int>(set_v.size()), ids);
+    sys.make_external(sys.group_index(kContinuumGroup), ids);
   }
   std::unique_ptr<Mover> mover;
   if (make_mover) {
@@ -195,27 +191,7 @@ DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml
     sys.set_mover(mover.get());
   }
   double fcc_start = -1;
-  // CNA's fcc fraction over the mobile particles at least one lattice constant inside
-  // their bounding box (a free surface is never fcc by CNA).
-  auto fcc_now = [&] {
-    const Particles& p = sys.particles();
-    const double a = c.analysis.cna_lattice;
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (p.rigid(i)) continue;
-      const double x[3] = {p.x[i], p.y[i], p.z[i]};
-      for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
-    }
-    std::vector<std::uint8_t> interior(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const double x[3] = {p.x[i], p.y[i], p.z[i]};
-      bool in = !p.rigid(i);
-      for (int d = 0; d < 3; ++d)
-        in = in && (sys.domain().periodic[d] || (x[d] >= lo[d] + a && x[d] <= hi[d] - a));
-      interior[i] = in ? 1 : 0;
-    }
-    return fcc_fraction(common_neighbour_analysis(p, sys.domain(), a), interior);
-  };
+  auto fcc_now = [&] { return interior_fcc_fraction(sys.particles(), sys.domain(), c.analysis.cna_lattice); };
   if (c.analysis.cna_lattice > 0) fcc_start = fcc_now();
   if (c.analysis.records()) recorder = std::make_unique<Recorder>(c.analysis, sys);
   const double e0 = sys.total_energy(), k0 = sys.kinetic_energy();
@@ -292,6 +268,7 @@ DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml
     r.wave_speed = recorder->wave_speed();
     r.initial_slope = recorder->initial_slope();
     r.peak_stress = recorder->peak_stress();
+    r.peak_strain = recorder->peak_strain();
   }
   if (c.analysis.cna_lattice > 0) {
     r.fcc_start = fcc_start;

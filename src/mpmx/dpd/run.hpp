@@ -28,8 +28,9 @@ struct DpdRunSummary {
   double energy_drift = 0;  // DPDE: least-squares dE/dstep x 1000 / mean K over the run's rows, else 0
   double temperature = 0;   // K, mean kinetic temperature over the run's thermo rows
   // The analysis (NaN where not asked): wave speed (Angstrom/ps), tensile initial slope
-  // and peak stress (GPa), CNA's interior fcc fraction at the run's start and end.
-  double wave_speed = std::nan(""), initial_slope = std::nan(""), peak_stress = std::nan("");
+  // and peak stress (GPa) and the strain at the peak, CNA's interior fcc fraction at the
+  // run's start and end.
+  double wave_speed = std::nan(""), initial_slope = std::nan(""), peak_stress = std::nan(""), peak_strain = std::nan("");
   double fcc_start = std::nan(""), fcc_end = std::nan("");
 };
 

@@ -104,6 +104,15 @@ void System::rebuild() {
   }
   const bool sweep = par_.integrator == Integrator::shardlow && par_.gamma > 0;
   list_.build(p_, d_, neighbor_cutoff(), opt_.skin, sweep);
+  // The points of external groups (a continuum) do not interact with each other: the mask
+  // follows the particle order, which only a rebuild changes (make_external asks for one).
+  bool external = false;
+  for (const auto& g : groups_) external = external || g.external;
+  no_pair_.clear();
+  if (external) {
+    no_pair_.resize(p_.size());
+    for (std::size_t i = 0; i < p_.size(); ++i) no_pair_[i] = p_.group[i] != kMobile && groups_[p_.group[i]].external;
+  }
 }
 
 void System::compute_forces(double dt, bool tally) {
@@ -118,15 +127,8 @@ void System::compute_forces(double dt, bool tally) {
     st.seed = par_.seed;
     st.step = step_;
   }
-  // The points of external groups (a continuum) do not interact with each other.
-  bool any_external = false;
-  for (const auto& g : groups_) any_external = any_external || g.external;
-  if (any_external) {
-    no_pair_.resize(p_.size());
-    for (std::size_t i = 0; i < p_.size(); ++i) no_pair_[i] = p_.group[i] != kMobile && groups_[p_.group[i]].external;
-  }
   const md::ForceSums s = compute_pair_forces(pot_, list_, p_, stochastic ? &st : nullptr, buf_, opt_.threads, tally,
-                                              any_external ? no_pair_.data() : nullptr);
+                                              no_pair_.empty() ? nullptr : no_pair_.data());
   if (tally) sums_ = s;
 }
 
@@ -257,21 +259,28 @@ void System::set_group_velocity(int g, const md::Vec3& v) {
 void System::release_group(int g) {
   if (g < 0 || g >= static_cast<int>(groups_.size()) || groups_[g].external)
     throw InputError(fmt::format("dpd: group {} is not a rigid group", g));
+  double m = 0;
+  for (std::size_t i = 0; i < p_.size(); ++i)
+    if (p_.group[i] == g) m += p_.mass[i];
+  if (!(m > 0)) throw InputError(fmt::format("dpd: rigid group \"{}\" holds no particle", groups_[g].name));
   groups_[g].free = true;
+  groups_[g].mass = m;
 }
 
 void System::kick_free_groups(double dt) {
   for (std::size_t g = 0; g < groups_.size(); ++g) {
     if (!groups_[g].free) continue;
     const md::Vec3 f = group_force(static_cast<int>(g));
-    double m = 0;
-    for (std::size_t i = 0; i < p_.size(); ++i)
-      if (p_.group[i] == static_cast<int>(g)) m += p_.mass[i];
-    if (!(m > 0)) continue;
     md::Vec3 v = groups_[g].velocity;
-    for (int d = 0; d < 3; ++d) v[d] += dt * units::ftm2v * f[d] / m;
+    for (int d = 0; d < 3; ++d) v[d] += dt * units::ftm2v * f[d] / groups_[g].mass;
     set_group_velocity(static_cast<int>(g), v);
   }
+}
+
+int System::group_index(std::string_view name) const {
+  for (std::size_t g = 0; g < groups_.size(); ++g)
+    if (groups_[g].name == name) return static_cast<int>(g);
+  return -1;
 }
 
 void System::make_external(int g, const std::vector<std::int64_t>& ids) {

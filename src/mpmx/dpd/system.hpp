@@ -20,6 +20,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "mpmx/dpd/domain.hpp"
@@ -62,6 +63,7 @@ struct RigidGroup {
   // A rigid body with an initial velocity (the seed's flyer): its velocity follows the
   // total pair force on it over its mass; otherwise it moves at the set velocity.
   bool free = false;
+  double mass = 0;  // amu, set when the group is freed
 };
 
 class System {
@@ -100,6 +102,8 @@ class System {
   const DpdParams& params() const { return par_; }
   const SystemOptions& options() const { return opt_; }
   const std::vector<RigidGroup>& groups() const { return groups_; }
+  // The index of the group called `name`, or -1.
+  int group_index(std::string_view name) const;
   void set_threads(int n) { opt_.threads = n; }
   // Sets a rigid group's velocity (its particles take it at once).
   void set_group_velocity(int group, const md::Vec3& v);
@@ -136,7 +140,7 @@ class System {
   double dt_ = 0;  // the step the stored forces were computed for (random force ~ 1/sqrt(dt))
   bool valid_ = false;
   Mover* mover_ = nullptr;
-  std::vector<std::uint8_t> no_pair_;  // per particle: in an external group
+  std::vector<std::uint8_t> no_pair_;  // per particle: in an external group (empty: none is)
 };
 
 }  // namespace mpmx::dpd

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/io/plot.hpp"
 #include "mpmx/io/run_record.hpp"
 
 namespace mpmx::mpm {
@@ -106,9 +107,8 @@ ConvergenceStudy run_convergence(const MpmConfig& c, const RunOptions& o) {
   }
   rec.write(o.out_dir + "/run.json");
   if (o.plot && c.plot) {
-    const std::string cmd = fmt::format("{} {}/tools/plot/convergence.py '{}' >/dev/null 2>&1", MPMX_PYTHON,
-                                        MPMX_SOURCE_DIR, o.out_dir);
-    if (std::system(cmd.c_str()) != 0 && !o.quiet)
+    if (io::matplotlib_present()) io::run_plot_script("convergence.py", fmt::format("'{}' >/dev/null", o.out_dir));
+    else if (!o.quiet)
       fmt::print(stderr, "{}: no convergence figure (tools/plot/convergence.py needs matplotlib)\n", c.id);
   }
   return study;

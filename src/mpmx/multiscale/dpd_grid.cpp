@@ -130,8 +130,6 @@ void DpdGrid::locate(const dpd::Particles& p) {
 void DpdGrid::move(dpd::Particles& p, double dt) {
   const std::size_t n = p.size();
   locate(p);
-  const auto& off = off_;
-  auto shape = [this](const Stencil& st, int k, double G[3]) { return corner(st, k, G); };
 
   // Only the nodes the particles touch are cleared and solved (a fine grid over a wide
   // margin is mostly empty): last step's are cleared, this step's listed in p2g order.
@@ -158,8 +156,8 @@ void DpdGrid::move(dpd::Particles& p, double dt) {
     }
     for (int k = 0; k < 8; ++k) {
       double G[3];
-      const double S = shape(s, k, G);
-      const std::size_t node = s.base + off[k];
+      const double S = corner(s, k, G);
+      const std::size_t node = s.base + off_[k];
       if (!touched_[node]) touched_[node] = 1, active_.push_back(node);
       g_.mass[node] += m * S;
       for (int a = 0; a < 3; ++a) {
@@ -173,8 +171,9 @@ void DpdGrid::move(dpd::Particles& p, double dt) {
       }
     }
   }
-  // s5 and the nodal acceleration; nodes of near-zero mass are left out.
-  const double m_eps = 1e-12 * mmax;
+  // s5 and the nodal acceleration; nodes of near-zero mass are left out (here and in s11).
+  m_eps_ = 1e-12 * mmax;
+  const double m_eps = m_eps_;
   std::int64_t skipped = 0;
   const std::size_t nactive = active_.size();
 #pragma omp parallel for schedule(static) reduction(+ : skipped) num_threads(threads_) if (threads_ > 1)
@@ -198,8 +197,8 @@ void DpdGrid::move(dpd::Particles& p, double dt) {
       double acc[3] = {}, vbar[3] = {};
       for (int k = 0; k < 8; ++k) {
         double G[3];
-        const double S = shape(s, k, G);
-        const std::size_t node = s.base + off[k];
+        const double S = corner(s, k, G);
+        const std::size_t node = s.base + off_[k];
         for (int a = 0; a < 3; ++a) acc[a] += node_acc_[a][node] * S, vbar[a] += g_.velocity_L[a][node] * S;
       }
       p.vx[i] += dt * acc[0], p.vy[i] += dt * acc[1], p.vz[i] += dt * acc[2];
@@ -214,8 +213,6 @@ void DpdGrid::move(dpd::Particles& p, double dt) {
 // s10-s14 with the stencil of x^t (the seed's N_i(x_p^t), G_i(x_p^t)).
 void DpdGrid::update_continuum(dpd::Particles& p, double dt) {
   const std::size_t n = p.size();
-  const auto& off = off_;
-  auto weights = [this](const Stencil& st, int k, double G[3]) { return corner(st, k, G); };
   // s10, s11: the new momenta of every particle on the grid, over the node masses of s1.
   for (std::size_t node : active_)
     for (int a = 0; a < 3; ++a) g_.momentum[a][node] = 0.0;
@@ -224,16 +221,13 @@ void DpdGrid::update_continuum(dpd::Particles& p, double dt) {
     const double m = p.mass[i], mv[3] = {m * p.vx[i], m * p.vy[i], m * p.vz[i]};
     for (int k = 0; k < 8; ++k) {
       double G[3];
-      const double S = weights(st_[i], k, G);
-      for (int a = 0; a < 3; ++a) g_.momentum[a][st_[i].base + off[k]] += mv[a] * S;
+      const double S = corner(st_[i], k, G);
+      for (int a = 0; a < 3; ++a) g_.momentum[a][st_[i].base + off_[k]] += mv[a] * S;
     }
   }
-  double mmax = 0.0;
-  for (double m : mass_) mmax = std::max(mmax, m);
-  const double m_eps = 1e-12 * mmax;
   for (std::size_t node : active_)
     for (int a = 0; a < 3; ++a)
-      g_.velocity[a][node] = g_.mass[node] > m_eps ? g_.momentum[a][node] / g_.mass[node] : 0.0;
+      g_.velocity[a][node] = g_.mass[node] > m_eps_ ? g_.momentum[a][node] / g_.mass[node] : 0.0;
   // s12: L_p = sum_i v_i G_i(x_p^t); the volume follows det(I + dt L) to first order.
 #pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
   for (std::size_t i = 0; i < n; ++i) {
@@ -242,8 +236,8 @@ void DpdGrid::update_continuum(dpd::Particles& p, double dt) {
     double L[9] = {};
     for (int k = 0; k < 8; ++k) {
       double G[3];
-      weights(st_[i], k, G);
-      const std::size_t node = st_[i].base + off[k];
+      corner(st_[i], k, G);
+      const std::size_t node = st_[i].base + off_[k];
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b) L[3 * a + b] += g_.velocity[a][node] * G[b];
     }

@@ -76,6 +76,7 @@ class DpdGrid final : public dpd::Mover {
   std::array<std::size_t, 8> off_{};  // storage offsets of a cell's 8 corners
   int threads_ = 1;
   std::int64_t skipped_ = 0;
+  double m_eps_ = 0;  // this step's near-zero node mass
   std::vector<Stencil> st_;         // per particle (mobile and continuum)
   std::vector<std::uint8_t> moves_;  // 1 mobile DPD, 2 continuum, 0 rigid
   std::vector<double> node_acc_[3];

@@ -32,9 +32,7 @@ dpd::MoverFactory dpd_mpm_mover(const dpd::DpdConfig& c, int threads) {
         k.c12 = c.continuum.c12 / units::eV_per_A3_in_GPa;
         k.c44 = c.continuum.c44 / units::eV_per_A3_in_GPa;
       }
-      int group = -1;
-      for (std::size_t g = 0; g < sys.groups().size(); ++g)
-        if (sys.groups()[g].name == dpd::kContinuumGroup) group = static_cast<int>(g);
+      const int group = sys.group_index(dpd::kContinuumGroup);
       const double a = c.continuum.lattice_constant;
       grid->set_pair_reaction(c.continuum.pair_reaction);
       grid->set_continuum(group, std::make_unique<material::CubicElastic<3>>(k), p, a * a * a / 4.0);
