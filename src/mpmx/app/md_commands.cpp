@@ -96,10 +96,12 @@ void add_md_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
     bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false;
-    int ranks = 1;
+    int ranks = 1, threads = 1;
   };
   auto args = std::make_shared<Args>();
   md->add_option("deck", args->deck, "MD deck (TOML)")->required();
+  md->add_option("--threads", args->threads,
+                 "OpenMP threads over the atoms, 0 for all cores (default 1; results are the same for any count)");
   md->add_option("--out", args->out, "output directory (default: run-<deck name>)");
   md->add_flag("--check", args->check,
                "validate the deck, the potential file and the memory and work estimates; write nothing");
@@ -117,7 +119,10 @@ void add_md_commands(CLI::App& app) {
       ->needs(lammps);
   md->callback([args] {
     auto deck = io::Deck::from_file(args->deck);
-    const md::MdConfig config = md::read_md_config(deck);  // parses the potential file too
+    md::MdConfig config = md::read_md_config(deck);  // parses the potential file too
+    // mpmx md advances one large system: its threaded form (the same bits for any count).
+    config.options.threaded = true;
+    config.options.threads = args->threads > 0 ? args->threads : static_cast<int>(hardware_threads());
     const md::Potential potential(config.potential);
     const md::MdBudget budget = md::estimate_md(config, potential.cutoff());
     // Memory always; work unless --force, or when only LAMMPS inputs are written.

@@ -107,8 +107,8 @@ md::ForceSums compute_pair_forces(const PairPotential& pot, const PairList& list
       pot);
 
   // Each particle, its own slots summed, takes the slots where it is the partner.
-  const int* __restrict tfirst = list.tfirst.data();
-  const int* __restrict tslot = list.tslot.data();
+  const int* __restrict tfirst = list.nb.tfirst.data();
+  const int* __restrict tslot = list.nb.tslot.data();
   const double* __restrict pf = buf.pair_force.data();
   double* __restrict fx = p.fx.data();
   double* __restrict fy = p.fy.data();

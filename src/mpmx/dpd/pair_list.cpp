@@ -4,24 +4,14 @@
 
 namespace mpmx::dpd {
 
-void PairList::build(const Particles& p, const Domain& d, double cutoff, double skin, bool sweep_order) {
+void PairList::build(const Particles& p, const Domain& d, double cutoff, double skin, bool sweep_order,
+                     int threads) {
   nb.periodic = d.periodic;
-  nb.build(p, d.box, cutoff, skin);
+  nb.transpose = true;
+  nb.build(p, d.box, cutoff, skin, threads);
   const int n = nb.nlocal;
   const int ns = slots();
-  slot_i.resize(ns);
-  for (int i = 0; i < n; ++i)
-    for (int s = nb.first[i]; s < nb.first[i + 1]; ++s) slot_i[s] = i;
-
-  // Transpose by counting sort on the partner's owner; ascending slots per owner.
-  tfirst.assign(n + 1, 0);
-  for (int s = 0; s < ns; ++s) ++tfirst[nb.owner[nb.list[s]] + 1];
-  for (int j = 0; j < n; ++j) tfirst[j + 1] += tfirst[j];
-  tslot.resize(ns);
-  {
-    std::vector<int> fill(tfirst.begin(), tfirst.end() - 1);
-    for (int s = 0; s < ns; ++s) tslot[fill[nb.owner[nb.list[s]]]++] = s;
-  }
+  const std::vector<int>& slot_i = nb.slot_i;
 
   sweep.clear();
   slab_first.assign(1, 0);

@@ -103,7 +103,7 @@ void System::rebuild() {
     if (!identity) p_.permute(order);
   }
   const bool sweep = par_.integrator == Integrator::shardlow && par_.gamma > 0;
-  list_.build(p_, d_, neighbor_cutoff(), opt_.skin, sweep);
+  list_.build(p_, d_, neighbor_cutoff(), opt_.skin, sweep, opt_.threads);
   // The points of external groups (a continuum) do not interact with each other: the mask
   // follows the particle order, which only a rebuild changes (make_external asks for one).
   bool external = false;

@@ -13,14 +13,18 @@ namespace {
 
 // Bytes, fitted to the peak RSS of `mpmx md` (Cu EAM, Release): boxes of 500, 32,000
 // and 131,072 atoms (14.5, 65 and 221 MB) and a 144,000-atom bar (287 MB, estimate
-// within 2%). Per local atom: its fields and copies (300), and per pair of its half
-// list the list and the force passes' pair buffers (24); per entry of locals plus ghosts
-// (positions in three layouts, type, owner, image, forces, density) 110, and 56 more for
-// a bar's per-atom energy and virial; the program and potential tables 16 MiB.
+// within 2%); refitted to the tiled force loop with boxes of 32,000, 131,072 and 340,736
+// atoms (86.7, 303 and 743 MB). Per local atom: its fields and copies (300), and per
+// pair of its half list the list, its tiled copy and the force passes' pair buffers
+// (36); per entry of locals plus ghosts (positions in three layouts, type, owner, image,
+// bins, forces, density) 110, and 56 more for a bar's per-atom energy and virial; a
+// jet's atom 1,500 more (its records and tiles' per-atom tallies: the s = 0.05 and 0.1
+// samples, 28 and 122 MB); the program and potential tables 16 MiB.
 constexpr double kBytesPerLocal = 300.0;
-constexpr double kBytesPerPair = 24.0;
+constexpr double kBytesPerPair = 36.0;
 constexpr double kBytesPerEntry = 110.0;
 constexpr double kBytesPerEntryPerAtom = 56.0;
+constexpr double kBytesPerJetAtom = 1500.0;
 constexpr double kBytesFixed = 16.0 * 1024 * 1024;
 
 }  // namespace
@@ -60,7 +64,7 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
   entries = std::max(entries, b.atoms);
   const double pairs = b.atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density;
   b.bytes = kBytesFixed + kBytesPerLocal * b.atoms + kBytesPerEntry * entries + kBytesPerPair * pairs +
-            (c.bar || c.jet ? kBytesPerEntryPerAtom * entries : 0.0);
+            (c.bar || c.jet ? kBytesPerEntryPerAtom * entries : 0.0) + (c.jet ? kBytesPerJetAtom * b.atoms : 0.0);
   const double steps = static_cast<double>(c.relax_steps) + static_cast<double>(c.steps);
   b.atom_steps = b.atoms * (steps + c.scan_points);
   b.work_key = c.relax_steps > 0 ? "thermal.relax_steps + run.steps" : "run.steps";

@@ -19,6 +19,12 @@ struct ForceWork {
   // Set by a kernel that already summed ghost forces into their owners (fx.. valid for
   // locals only).
   bool folded = false;
+  // One large system: the one-element EAM kernel sums its pairs tile by tile (the
+  // neighbour list's tiles) on `threads` threads, and every atom adds its tiles' shares
+  // in a fixed order, so any count gives the same bits. Other potentials, and the small
+  // boxes of a multiscale run (off: the whole list scattered on one thread), ignore it.
+  bool tiled = false;
+  int threads = 1;
   // Sizes the arrays and zeroes rho (and the per-atom sums); each kernel zeroes the
   // force arrays it accumulates into (zero_forces()).
   void reset(int nall);

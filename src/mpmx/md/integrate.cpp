@@ -6,11 +6,12 @@
 
 namespace mpmx::md {
 
-void kick(Atoms& a, const std::vector<double>& mass, double dt, double factor) {
-  const std::size_t n = a.size();
+void kick(Atoms& a, const std::vector<double>& mass, double dt, double factor, int threads) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.size());
   if (mass.size() == 1) {  // one type: no per-atom lookup
     const double c = factor * dt * units::ftm2v / mass[0];
-    for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
       a.vx[i] += c * a.fx[i];
       a.vy[i] += c * a.fy[i];
       a.vz[i] += c * a.fz[i];
@@ -19,7 +20,8 @@ void kick(Atoms& a, const std::vector<double>& mass, double dt, double factor) {
   }
   std::vector<double> inv(mass.size());
   for (std::size_t t = 0; t < mass.size(); ++t) inv[t] = factor * dt * units::ftm2v / mass[t];
-  for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
     const double c = inv[a.type[i]];
     a.vx[i] += c * a.fx[i];
     a.vy[i] += c * a.fy[i];
@@ -27,17 +29,19 @@ void kick(Atoms& a, const std::vector<double>& mass, double dt, double factor) {
   }
 }
 
-void drift(Atoms& a, double dt, const Mat3& g, bool streaming) {
-  const std::size_t n = a.size();
+void drift(Atoms& a, double dt, const Mat3& g, bool streaming, int threads) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.size());
   if (!streaming) {
-    for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
       a.x[i] += dt * a.vx[i];
       a.y[i] += dt * a.vy[i];
       a.z[i] += dt * a.vz[i];
     }
     return;
   }
-  for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
     const double x = a.x[i], y = a.y[i], z = a.z[i];
     a.x[i] += dt * (a.vx[i] + g[0] * x + g[1] * y + g[2] * z);
     a.y[i] += dt * (a.vy[i] + g[4] * y + g[5] * z);
@@ -45,9 +49,11 @@ void drift(Atoms& a, double dt, const Mat3& g, bool streaming) {
   }
 }
 
-int wrap(Atoms& a, const Box& box, const Mat3& g, bool adjust) {
+int wrap(Atoms& a, const Box& box, const Mat3& g, bool adjust, int threads) {
   int moved = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(a.size());
+#pragma omp parallel for schedule(static) reduction(+ : moved) num_threads(threads) if (threads > 1)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
     bool any = false;
     // A second pass catches a coordinate that round-off left at exactly L.
     for (int pass = 0; pass < 3; ++pass) {

@@ -196,7 +196,6 @@ std::string run_jet(const MdConfig& c, const Potential& pot, const std::string& 
   std::sort(plateau.begin(), plateau.end());
   rec.insert("plateau_stress_gpa", plateau.empty() ? kNaN : plateau[plateau.size() / 2]);
   rec.insert("md_atom_steps_per_second", r.atom_steps_per_second);
-  rec.insert("threads", 1);
   rec.insert("run_seconds", secs);
   rec.insert("jet", toml::table{{"scale", c.jet_config.scale},
                                 {"cells", toml::array{c.jet_config.nx(), c.jet_config.ny(), c.jet_config.nz()}},

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include "mpmx/core/error.hpp"
 
@@ -15,7 +16,7 @@ namespace {
 bool positive(int a, int b, int c) { return a > 0 || (a == 0 && (b > 0 || (b == 0 && c > 0))); }
 }  // namespace
 
-void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) {
+void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk, int threads) {
   cutoff = rc;
   skin = sk;
   const double rs = rc + sk;
@@ -74,8 +75,8 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) 
   }
   nall = static_cast<int>(x.size());
 
-  // Bins of edge >= rs over [-rs, L+rs) (no periodic wrap: ghosts are explicit); along
-  // an open axis over the atoms' extent.
+  // Bins over [-rs, L+rs) (no periodic wrap: ghosts are explicit); along an open axis
+  // over the atoms' extent.
   double lo[3] = {-rs, -rs, -rs};
   double ext[3] = {box.lx + 2 * rs, box.ly + 2 * rs, box.lz + 2 * rs};
   for (int d = 0; d < 3; ++d) {
@@ -85,15 +86,17 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) 
     lo[d] = *mn;
     ext[d] = std::max(*mx - *mn, rs);
   }
+  // Bins of edge >= rs/2, searched two deep: the 5^3 bins around an atom's hold about
+  // 58% of the candidates that 3^3 bins of edge rs would.
   int nb[3];
   double inv[3];
   for (int d = 0; d < 3; ++d) {
-    nb[d] = std::max(1, static_cast<int>(ext[d] / rs));
-    nb[d] = std::min(nb[d], 1024);
+    nb[d] = std::max(1, static_cast<int>(2.0 * ext[d] / rs));
+    nb[d] = std::min(nb[d], 2048);
   }
   // Never many more bins than entries, however large and empty the box (a system that
   // flew apart, a box read from a checkpoint): fewer, larger bins hold the same pairs.
-  // A bin of edge rs in a solid holds tens of atoms, so this never binds there.
+  // A bin of edge rs/2 in a solid holds a few atoms, so this never binds there.
   const long long max_bins = 8LL * nall + 4096;
   while (static_cast<long long>(nb[0]) * nb[1] * nb[2] > max_bins) {
     int& widest = *std::max_element(nb, nb + 3);
@@ -112,36 +115,66 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk) 
     ++bin_start_[bin[k] + 1];
   }
   for (int b = 0; b < nbins; ++b) bin_start_[b + 1] += bin_start_[b];
+  // The entries in bin order, with their positions and owners beside them (the search
+  // reads each bin's as one run).
   bin_atoms_.resize(nall);
+  bin_owner_.resize(nall);
+  bin_xyz_.resize(3 * static_cast<std::size_t>(nall));
   {
     std::vector<int> fill(bin_start_.begin(), bin_start_.end() - 1);
-    for (int k = 0; k < nall; ++k) bin_atoms_[fill[bin[k]]++] = k;
+    for (int k = 0; k < nall; ++k) {
+      const int s = fill[bin[k]]++;
+      bin_atoms_[s] = k;
+      bin_owner_[s] = owner[k];
+      bin_xyz_[3 * s] = x[k], bin_xyz_[3 * s + 1] = y[k], bin_xyz_[3 * s + 2] = z[k];
+    }
   }
 
   // Half list: keep (i, k) iff owner(k) > i, or owner(k) == i and k's image shift is
-  // positive, so each physical pair appears exactly once.
+  // positive, so each physical pair appears exactly once. Each atom's entries ascending
+  // (locals first, then ghosts): deterministic, whoever builds it.
   const double rs2 = rs * rs;
-  first.assign(nlocal + 1, 0);
-  list.clear();
-  list.reserve(static_cast<std::size_t>(nlocal) * 48);
-  for (int i = 0; i < nlocal; ++i) {
+  auto list_of = [&](int i, std::vector<int>& out) {
+    const std::size_t start = out.size();
     const int bx = bin_of(i, 0), by = bin_of(i, 1), bz = bin_of(i, 2);
-    for (int cz = std::max(0, bz - 1); cz <= std::min(nb[2] - 1, bz + 1); ++cz)
-      for (int cy = std::max(0, by - 1); cy <= std::min(nb[1] - 1, by + 1); ++cy)
-        for (int cx = std::max(0, bx - 1); cx <= std::min(nb[0] - 1, bx + 1); ++cx) {
-          const int b = (cz * nb[1] + cy) * nb[0] + cx;
-          for (int s = bin_start_[b]; s < bin_start_[b + 1]; ++s) {
-            const int k = bin_atoms_[s];
-            const int o = owner[k];
-            if (o < i || (o == i && !positive(n1[k], n2[k], n3[k]))) continue;
-            const double dx = x[i] - x[k], dy = y[i] - y[k], dz = z[i] - z[k];
-            if (dx * dx + dy * dy + dz * dz < rs2) list.push_back(k);
-          }
+    const double xi = x[i], yi = y[i], zi = z[i];
+    for (int cz = std::max(0, bz - 2); cz <= std::min(nb[2] - 1, bz + 2); ++cz)
+      for (int cy = std::max(0, by - 2); cy <= std::min(nb[1] - 1, by + 2); ++cy) {
+        // One row of up to five bins is one run of entries.
+        const int row = (cz * nb[1] + cy) * nb[0];
+        const int s0 = bin_start_[row + std::max(0, bx - 2)], s1 = bin_start_[row + std::min(nb[0] - 1, bx + 2) + 1];
+        for (int s = s0; s < s1; ++s) {
+          const int o = bin_owner_[s];
+          if (o < i) continue;
+          const double dx = xi - bin_xyz_[3 * s], dy = yi - bin_xyz_[3 * s + 1], dz = zi - bin_xyz_[3 * s + 2];
+          if (dx * dx + dy * dy + dz * dz >= rs2) continue;
+          const int k = bin_atoms_[s];
+          if (o == i && !positive(n1[k], n2[k], n3[k])) continue;
+          out.push_back(k);
         }
-    // Ascending entry order: locals first, then ghosts; deterministic.
-    std::sort(list.begin() + first[i], list.end());
-    first[i + 1] = static_cast<int>(list.size());
+      }
+    std::sort(out.begin() + static_cast<std::ptrdiff_t>(start), out.end());
+    return static_cast<int>(out.size() - start);
+  };
+  // Fixed chunks of atoms, each listed into its own part by whichever thread takes it,
+  // then laid end to end in chunk order.
+  constexpr int kChunk = 512;
+  const int nchunk = (nlocal + kChunk - 1) / kChunk;
+  first.assign(nlocal + 1, 0);
+  if (static_cast<int>(part_.size()) < nchunk) part_.resize(nchunk);
+  const int nt = std::max(1, threads);
+#pragma omp parallel for schedule(dynamic) num_threads(nt) if (nt > 1)
+  for (int c = 0; c < nchunk; ++c) {
+    std::vector<int>& mine = part_[c];
+    mine.clear();
+    for (int i = c * kChunk; i < std::min(nlocal, (c + 1) * kChunk); ++i) first[i + 1] = list_of(i, mine);
   }
+  for (int i = 0; i < nlocal; ++i) first[i + 1] += first[i];
+  list.resize(static_cast<std::size_t>(first[nlocal]));
+#pragma omp parallel for schedule(static) num_threads(nt) if (nt > 1)
+  for (int c = 0; c < nchunk; ++c) std::copy(part_[c].begin(), part_[c].end(), list.begin() + first[c * kChunk]);
+  if (transpose) build_transpose(nt);
+  if (tiles) build_tiles(nt);
 
   pack();
   x0_.assign(atoms.x.begin(), atoms.x.end());
@@ -195,6 +228,87 @@ bool Neighbors::needs_rebuild(const Atoms& atoms, const Box& box, int threads) c
   const double dc = std::hypot(box.xz - box0_.xz, box.yz - box0_.yz, box.lz - box0_.lz);
   const double image = max_n1_ * da + max_n2_ * db + max_n3_ * dc;
   return std::sqrt(d2max) + image > 0.5 * skin;
+}
+
+void Neighbors::build_transpose(int threads) {
+  const int ns = static_cast<int>(list.size());
+  slot_i.resize(ns);
+  tslot.resize(ns);
+  tfirst.assign(nlocal + 1, 0);
+  // A counting sort on the partner's owner (ascending slots per owner), in parallel: each
+  // thread counts the partners of a contiguous range of atoms, so the slots it fills for
+  // an owner follow those of the threads before it.
+  const int want = std::max(1, threads);
+  if (static_cast<int>(tcount_.size()) < want) tcount_.resize(want);
+#pragma omp parallel num_threads(want) if (want > 1)
+  {
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+    const int i0 = static_cast<int>(static_cast<long long>(nlocal) * t / nt);
+    const int i1 = static_cast<int>(static_cast<long long>(nlocal) * (t + 1) / nt);
+    std::vector<int>& count = tcount_[t];
+    count.assign(nlocal, 0);
+    for (int i = i0; i < i1; ++i)
+      for (int s = first[i]; s < first[i + 1]; ++s) {
+        slot_i[s] = i;
+        ++count[owner[list[s]]];
+      }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (int j = 0; j < nlocal; ++j) {
+        int at = tfirst[j];
+        for (int u = 0; u < nt; ++u) {
+          const int c = tcount_[u][j];
+          tcount_[u][j] = at;  // where thread u's slots for owner j begin
+          at += c;
+        }
+        tfirst[j + 1] = at;
+      }
+    }
+    for (int s = first[i0]; s < first[i1]; ++s) tslot[count[owner[list[s]]]++] = s;
+  }
+}
+
+void Neighbors::build_tiles(int threads) {
+  // About 32 tiles, at least 2048 atoms each (unless `tile_atoms` says): enough tiles to
+  // spread, few enough that the entries a tile reaches beyond its own atoms stay a small
+  // multiple of them, and each tile's arrays fit a core's cache.
+  const int size = tile_atoms > 0 ? tile_atoms : std::max(2048, (nlocal + 31) / 32);
+  const int ntile = std::max(1, (nlocal + size - 1) / size);
+  tile_atom.resize(ntile + 1);
+  for (int p = 0; p <= ntile; ++p) tile_atom[p] = std::min(nlocal, p * size);
+  tile_list.resize(list.size());
+  if (static_cast<int>(tile_part_.size()) < ntile) tile_part_.resize(ntile);
+  const int nt = std::max(1, threads);
+#pragma omp parallel num_threads(nt) if (nt > 1)
+  {
+    std::vector<int> place(static_cast<std::size_t>(nall), -1);  // entry -> place in the tile
+#pragma omp for schedule(dynamic)
+    for (int p = 0; p < ntile; ++p) {
+      const int a = tile_atom[p], b = tile_atom[p + 1];
+      std::vector<int>& e = tile_part_[p];
+      e.clear();
+      for (int i = a; i < b; ++i) e.push_back(i), place[i] = 0;
+      for (int s = first[a]; s < first[b]; ++s)
+        if (place[list[s]] < 0) e.push_back(list[s]), place[list[s]] = 0;  // each entry once
+      std::sort(e.begin() + (b - a), e.end());
+      for (int u = 0; u < static_cast<int>(e.size()); ++u) place[e[u]] = u;
+      for (int s = first[a]; s < first[b]; ++s) tile_list[s] = place[list[s]];
+      for (int k : e) place[k] = -1;
+    }
+  }
+  tile_first.assign(ntile + 1, 0);
+  for (int p = 0; p < ntile; ++p) tile_first[p + 1] = tile_first[p] + static_cast<int>(tile_part_[p].size());
+  tile_entry.resize(tile_first[ntile]);
+  for (int p = 0; p < ntile; ++p) std::copy(tile_part_[p].begin(), tile_part_[p].end(), tile_entry.begin() + tile_first[p]);
+  // Counting sort of the places on their entries' owners: ascending per owner.
+  const int ne = tile_first[ntile];
+  share_first.assign(nlocal + 1, 0);
+  for (int u = 0; u < ne; ++u) ++share_first[owner[tile_entry[u]] + 1];
+  for (int j = 0; j < nlocal; ++j) share_first[j + 1] += share_first[j];
+  share.resize(ne);
+  std::vector<int> fill(share_first.begin(), share_first.end() - 1);
+  for (int u = 0; u < ne; ++u) share[fill[owner[tile_entry[u]]]++] = u;
 }
 
 void Neighbors::fold(std::vector<double>& a) const {

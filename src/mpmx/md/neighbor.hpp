@@ -18,8 +18,9 @@ namespace mpmx::md {
 class Neighbors {
  public:
   // Atoms must lie in the fundamental box along periodic axes (System wraps them
-  // first); along an open axis they may lie anywhere.
-  void build(const Atoms& atoms, const Box& box, double cutoff, double skin);
+  // first); along an open axis they may lie anywhere. `threads` > 1 spreads the list
+  // over atoms (each atom's list is the same for any count, so is the whole).
+  void build(const Atoms& atoms, const Box& box, double cutoff, double skin, int threads = 1);
   // Positions of locals and ghosts for the current atoms and box (every step).
   // `threads` > 1 spreads the copy (one big system, as DPD's); the MD boxes of a
   // multiscale run call it from their own thread with the default.
@@ -50,13 +51,39 @@ class Neighbors {
   std::int64_t builds = 0;
   std::array<bool, 3> periodic{true, true, true};  // set before build()
 
+  // With `transpose` set before build(), the index that lets every atom sum what its
+  // pairs give it in a fixed order (threads over atoms, no atomics, the same bits for
+  // any thread count): slot_i[s] is the atom i of list slot s, and the slots whose
+  // partner is j or an image of j are tslot[tfirst[j] .. tfirst[j+1]), ascending.
+  bool transpose = false;
+  std::vector<int> slot_i, tfirst, tslot;
+
+  // With `tiles` set before build(), the locals cut into tiles of consecutive atoms (a
+  // size from the atom count alone, never from the threads), so that each tile's pairs
+  // can be summed into arrays of its own, small enough for a core's cache, and each atom
+  // then adds its shares in tile order: the same bits for any thread count. Tile p owns
+  // atoms [tile_atom[p], tile_atom[p+1]); its entries tile_entry[tile_first[p] ..
+  // tile_first[p+1]) are those atoms, then every other entry its pairs reach, ascending;
+  // tile_list is `list` with each entry replaced by its place among its tile's entries.
+  // The places (in all tiles' entries, end to end) that hold atom j or an image of it:
+  // share[share_first[j] .. share_first[j+1]), ascending.
+  bool tiles = false;
+  int tile_atoms = 0;  // atoms per tile; 0: from the atom count
+  std::vector<int> tile_atom, tile_first, tile_entry, tile_list, share_first, share;
+
  private:
   bool built_ = false;
   std::vector<double> x0_, y0_, z0_;  // local positions at build
   Box box0_;                          // box at build
   int max_n1_ = 0, max_n2_ = 0, max_n3_ = 0;
-  std::vector<int> bin_start_, bin_atoms_;
+  std::vector<int> bin_start_, bin_atoms_, bin_owner_;
+  std::vector<double> bin_xyz_;
+  std::vector<std::vector<int>> part_;    // the lists of chunks of atoms (build)
+  std::vector<std::vector<int>> tcount_;  // per-thread owner counts (build_transpose)
+  std::vector<std::vector<int>> tile_part_;  // each tile's entries (build_tiles)
   void pack();
+  void build_transpose(int threads);
+  void build_tiles(int threads);
 };
 
 }  // namespace mpmx::md

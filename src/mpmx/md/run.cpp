@@ -128,6 +128,7 @@ void write_record(const MdConfig& c, const Potential& pot, const toml::table& de
                   {"dt_ps", c.dt},
                   {"wall_seconds", r.wall_seconds},
                   {"atom_steps_per_second", r.atom_steps_per_second},
+                  {"threads", c.options.threaded ? c.options.threads : 1},
                   {"potential_energy_per_atom", r.potential_energy_per_atom},
                   {"stress_gpa", matrix(r.stress_gpa)}};
   if (!stopped.empty()) rec.insert("error", stopped);

@@ -6,6 +6,7 @@
 #include <istream>
 #include <numeric>
 #include <ostream>
+#include <parallel/algorithm>
 
 #include <fmt/format.h>
 
@@ -26,6 +27,9 @@ System::System(Atoms atoms, Box box, Potential potential, SystemOptions options)
       throw InputError(fmt::format("atom {} has type {}, the potential has {} type(s)", atoms_.id[i],
                                    atoms_.type[i] + 1, pot_.types()));
   if (!(opt_.skin >= 0)) throw InputError(fmt::format("skin = {}: must be >= 0", opt_.skin));
+  opt_.threads = std::max(1, opt_.threads);
+  nb_.tiles = opt_.threaded;
+  nb_.tile_atoms = opt_.tile_atoms;
   refresh();
 }
 
@@ -37,7 +41,8 @@ void System::refresh() {
 
 void System::rebuild() {
   box_.reduce_tilt();
-  wrap(atoms_, box_, g_, opt_.deformation == Deformation::boundary);
+  const int nt = opt_.threaded ? opt_.threads : 1;
+  wrap(atoms_, box_, g_, opt_.deformation == Deformation::boundary, nt);
   if (opt_.sort_atoms && atoms_.size() > 1) {
     // Spatial order (bins of half the cutoff), ties by id: deterministic.
     const double cell = std::max(0.5 * pot_.cutoff(), 1e-3);
@@ -50,8 +55,10 @@ void System::rebuild() {
       return static_cast<long>(b >= 0.0 ? std::min(b, static_cast<double>(n - 1)) : 0.0);  // NaN -> 0
     };
     const long nx = count(box_.lx), ny = count(box_.ly);
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(atoms_.size());
     std::vector<long> key(atoms_.size());
-    for (std::size_t i = 0; i < atoms_.size(); ++i) {
+#pragma omp parallel for schedule(static) num_threads(nt) if (nt > 1)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
       const long ix = index(atoms_.x[i] / box_.lx * nx, nx);
       const long iy = index(atoms_.y[i] / box_.ly * ny, ny);
       const long iz = index(atoms_.z[i] / cell, static_cast<long>(kMaxBins));
@@ -59,19 +66,27 @@ void System::rebuild() {
     }
     std::vector<std::size_t> order(atoms_.size());
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    // A strict total order (ids are unique): one result for any sort and thread count.
+    auto before = [&](std::size_t a, std::size_t b) {
       return key[a] != key[b] ? key[a] < key[b] : atoms_.id[a] < atoms_.id[b];
-    });
+    };
+    if (nt > 1) {
+      __gnu_parallel::sort(order.begin(), order.end(), before, __gnu_parallel::default_parallel_tag(nt));
+    } else {
+      std::sort(order.begin(), order.end(), before);
+    }
     bool identity = true;
     for (std::size_t k = 0; k < order.size(); ++k) identity = identity && order[k] == k;
     if (!identity) atoms_.permute(order);
   }
-  nb_.build(atoms_, box_, pot_.cutoff(), opt_.skin);
+  nb_.build(atoms_, box_, pot_.cutoff(), opt_.skin, nt);
 }
 
 void System::compute_forces(bool tally) {
-  work_.per_atom = opt_.per_atom;
-  work_.tally = tally || opt_.per_atom;
+  work_.per_atom = opt_.per_atom && tally;
+  work_.tally = tally;
+  work_.tiled = opt_.threaded;
+  work_.threads = opt_.threads;
   work_.reset(nb_.nall);
   const ForceSums s = pot_.compute(nb_, work_, opt_.mixed_precision);
   if (work_.tally) sums_ = s;
@@ -84,7 +99,7 @@ void System::compute_forces(bool tally) {
   std::copy_n(work_.fx.begin(), n, atoms_.fx.begin());
   std::copy_n(work_.fy.begin(), n, atoms_.fy.begin());
   std::copy_n(work_.fz.begin(), n, atoms_.fz.begin());
-  if (opt_.per_atom) {
+  if (work_.per_atom) {
     nb_.fold(work_.energy_atom);
     for (int k = nb_.nlocal; k < nb_.nall; ++k)
       for (int c = 0; c < 6; ++c) work_.virial_atom[6 * nb_.owner[k] + c] += work_.virial_atom[6 * k + c];
@@ -130,18 +145,19 @@ void System::advance(int nsteps, const Mat3& grad, double dt) {
   g_ = g;
   const bool affine = opt_.deformation == Deformation::affine;
   const bool deforming = std::any_of(g.begin(), g.end(), [](double v) { return v != 0.0; });
-  kick(atoms_, mass_, dt, 0.5);  // eq. 5.4
+  const int nt = opt_.threaded ? opt_.threads : 1;
+  kick(atoms_, mass_, dt, 0.5, nt);  // eq. 5.4
   hold_frozen();
   for (int s = 0; s < nsteps; ++s) {
-    drift(atoms_, dt, g, affine && deforming);  // eq. 5.5
+    drift(atoms_, dt, g, affine && deforming, nt);  // eq. 5.5
     if (walls_.enabled) reflect(dt);
-    if (deforming) box_.deform(g, dt);          // eq. 5.7
-    if (nb_.needs_rebuild(atoms_, box_)) rebuild();
-    else nb_.update_positions(atoms_, box_);
+    if (deforming) box_.deform(g, dt);              // eq. 5.7
+    if (nb_.needs_rebuild(atoms_, box_, nt)) rebuild();
+    else nb_.update_positions(atoms_, box_, nt);
     compute_forces(s + 1 == nsteps);  // energy and virial on the last step only
     ++step_;
     time_ += dt;
-    kick(atoms_, mass_, dt, s + 1 < nsteps ? 1.0 : 0.5);  // eq. 5.3; last: eq. 5.6
+    kick(atoms_, mass_, dt, s + 1 < nsteps ? 1.0 : 0.5, nt);  // eq. 5.3; last: eq. 5.6
     hold_frozen();
   }
 }
@@ -153,14 +169,20 @@ void System::set_frozen_ids(std::int64_t max_id) {
 
 void System::hold_frozen() {
   if (frozen_ids_ <= 0) return;
-  for (std::size_t i = 0; i < atoms_.size(); ++i)
+  const int nt = opt_.threaded ? opt_.threads : 1;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(atoms_.size());
+#pragma omp parallel for schedule(static) num_threads(nt) if (nt > 1)
+  for (std::ptrdiff_t i = 0; i < n; ++i)
     if (atoms_.id[i] <= frozen_ids_) atoms_.vx[i] = atoms_.vy[i] = atoms_.vz[i] = 0.0;
 }
 
 void System::reflect(double dt) {
   walls_.lo += walls_.v_lo * dt;  // the walls' positions at the new time
   walls_.hi += walls_.v_hi * dt;
-  for (std::size_t i = 0; i < atoms_.size(); ++i) {
+  const int nt = opt_.threaded ? opt_.threads : 1;
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(atoms_.size());
+#pragma omp parallel for schedule(static) num_threads(nt) if (nt > 1)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
     if (atoms_.x[i] < walls_.lo) {
       atoms_.x[i] = 2 * walls_.lo - atoms_.x[i];
       atoms_.vx[i] = 2 * walls_.v_lo - atoms_.vx[i];
@@ -350,7 +372,7 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   for (std::size_t i = 0; i < n; ++i)
     if (!inside(box_at_build, at_build.x[i], at_build.y[i], at_build.z[i]))
       throw InputError(fmt::format("MD checkpoint: the neighbour list's atom {} lies far outside its box", i));
-  s.nb_.build(at_build, box_at_build, s.pot_.cutoff(), s.opt_.skin);
+  s.nb_.build(at_build, box_at_build, s.pot_.cutoff(), s.opt_.skin, s.opt_.threaded ? s.opt_.threads : 1);
   s.nb_.builds = builds;
   s.nb_.update_positions(s.atoms_, s.box_);
   s.compute_forces();

@@ -45,6 +45,13 @@ struct SystemOptions {
   bool mixed_precision = false;            // float pair arithmetic, double sums
   bool sort_atoms = true;                  // spatial sort at each neighbour rebuild
   bool per_atom = false;                   // keep per-atom energy and virial (binned stress)
+  // One large system (direct MD): neighbour list, forces and integration spread over
+  // `threads` threads, each atom summing its pairs in a fixed order, so any count gives
+  // the same bits. Off for the many small boxes of a multiscale run (one thread each,
+  // the scattering force loop: faster there).
+  bool threaded = false;
+  int threads = 1;
+  int tile_atoms = 0;  // atoms per tile of the threaded form; 0: chosen from the atom count
 };
 
 class System {
@@ -79,7 +86,8 @@ class System {
   double thermal_kinetic_energy() const;                    // eV, about the mean velocity
   double temperature() const;                               // K, 3N-3 degrees of freedom
   const Sym6& virial() const { return sums_.virial; }       // eV (pair virial sum)
-  // Per-atom virial (6 per atom, half of each pair), kept when options.per_atom.
+  // Per-atom virial (6 per atom, half of each pair), kept when options.per_atom (summed
+  // at the last step of an advance, as the energy and virial are).
   const std::vector<double>& per_atom_virial() const { return work_.virial_atom; }
 
   const Atoms& atoms() const { return atoms_; }

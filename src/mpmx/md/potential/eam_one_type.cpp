@@ -28,12 +28,15 @@ namespace {
 // Per-thread scratch of the kernel (not part of a System's state, so thousands of
 // Systems do not each carry it): the pairs inside the cutoff found by the density pass
 // (entry, r then the spline offset p, 1/r, knot), reused by the force pass, and packed
-// forces.
+// forces. A threaded call uses its calling thread's.
 struct Scratch {
-  std::vector<int> cut_first, cut_k, cut_m;
+  std::vector<int> cut_first, cut_end, cut_k, cut_m;
   std::vector<double> cut_r, cut_ri;
   std::vector<float> cut_rf, cut_rif;
   std::vector<double> f4;
+  // The tiled form's: per tile entry its position, density, F', energy and virial
+  // shares (f4 holds its forces); per tile the pair energy and virial; per atom F.
+  std::vector<double> tile_q, tile_rho, tile_fp, tile_e, tile_w, tile_sums, embed_atom;
 };
 thread_local Scratch scratch;
 }  // namespace
@@ -299,60 +302,43 @@ int force(const double* __restrict q, int i, Real fpi, const double* __restrict 
 }
 #endif  // HWY_TARGET != HWY_SCALAR
 
-// The density pass keeps the pairs inside the cutoff (entry, r), the force pass walks
-// only those. Each loop starts with its vector form where the path has one and ends with
-// the scalar loop (all of it on the scalar path).
-template <class Real, bool PerAtom, bool Tally>
-ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w) {
+// The pairs inside the cutoff found by the density pass, kept for the force pass: per
+// pair the partner entry, r then the spline offset p, 1/r and the knot (at the pair's
+// place, packed from a given list slot on); per atom the first and one past the last.
+template <class Real>
+struct CutPairs {
+  int* ck;
+  Real* cr;
+  Real* cri;
+  int* cm;
+  int* cbeg;
+  int* cend;
+};
+
+// The density pass of atoms [0, n): entries 0..n-1 of q, their candidates in
+// list[first[i] .. first[i+1]) (entries of q), the pairs packed from slot `npair` on.
+// Adds each pair's density to both atoms' rho (entries of q). In blocks of atoms, so the
+// pair data just written is still in cache: filter the candidates, r and 1/r in one
+// contiguous sweep, then the density; knot and offset are kept for the force pass. Each
+// loop starts with its vector form where the path has one and ends with the scalar loop
+// (all of it on the scalar path).
+template <class Real>
+void density_pass(const EamOneType<Real>& t, const double* __restrict q, const int* __restrict first,
+                  const int* __restrict list, int n, int npair, const CutPairs<Real>& cp, double* __restrict rho) {
   const Real* __restrict rho_tab = t.rho_tab;
-  const Real* __restrict pair_tab = t.pair_tab;
-  const int nlocal = nb.nlocal;
-  const double* __restrict q = nb.xyz.data();
-  const int* __restrict first = nb.first.data();
-  const int* __restrict list = nb.list.data();
-  double* __restrict rho = w.rho.data();
   const double cutsq = t.cut * t.cut;
   const Real rdr = static_cast<Real>(t.rdr);
   const int nrm1 = t.nr - 1;
-
-  Scratch& sc = scratch;
-  sc.cut_first.resize(nlocal + 1);
-  sc.cut_k.resize(nb.list.size());
-  std::vector<Real>& rbuf = [&]() -> std::vector<Real>& {
-    if constexpr (std::is_same_v<Real, double>) return sc.cut_r;
-    else return sc.cut_rf;
-  }();
-  rbuf.resize(nb.list.size());
-  std::vector<Real>& ribuf = [&]() -> std::vector<Real>& {
-    if constexpr (std::is_same_v<Real, double>) return sc.cut_ri;
-    else return sc.cut_rif;
-  }();
-  ribuf.resize(nb.list.size());
-  int* __restrict ck = sc.cut_k.data();
-  int* __restrict cfirst = sc.cut_first.data();
-  sc.cut_m.resize(nb.list.size());
-  int* __restrict cm = sc.cut_m.data();
-  Real* __restrict cr = rbuf.data();
-  Real* __restrict cri = ribuf.data();
-
-  auto locate = [&](Real r, Real& p, int& m) {
-    p = r * rdr + Real(1);
-    m = static_cast<int>(p);
-    m = std::min(m, nrm1);
-    p -= static_cast<Real>(m);
-    p = std::min(p, Real(1));
-  };
-
-  // In blocks of atoms (so the pair data just written is still in cache): filter the
-  // candidates, r and 1/r in one contiguous sweep, then the density; knot and offset are
-  // kept for the force pass.
+  int* __restrict ck = cp.ck;
+  int* __restrict cm = cp.cm;
+  Real* __restrict cr = cp.cr;
+  Real* __restrict cri = cp.cri;
   constexpr int kBlock = 64;
-  int npair = 0;
-  for (int i0 = 0; i0 < nlocal; i0 += kBlock) {
-    const int i1 = std::min(nlocal, i0 + kBlock);
+  for (int i0 = 0; i0 < n; i0 += kBlock) {
+    const int i1 = std::min(n, i0 + kBlock);
     const int start = npair;
     for (int i = i0; i < i1; ++i) {
-      cfirst[i] = npair;
+      cp.cbeg[i] = npair;
       const double xi = q[4 * i], yi = q[4 * i + 1], zi = q[4 * i + 2];
       int s = first[i];
 #if HWY_TARGET != HWY_SCALAR
@@ -366,8 +352,8 @@ ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w)
         cr[npair] = static_cast<Real>(rsq);
         npair += rsq < cutsq;
       }
+      cp.cend[i] = npair;
     }
-    cfirst[i1] = npair;
     int s0 = start;
 #if HWY_TARGET != HWY_SCALAR
     s0 = root(cr, cri, s0, npair);
@@ -379,16 +365,17 @@ ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w)
     }
     for (int i = i0; i < i1; ++i) {
       double rho_i = 0;
-      int s = cfirst[i];
+      int s = cp.cbeg[i];
 #if HWY_TARGET != HWY_SCALAR
-      s = density<Real, kG<Real>>(rho_tab, rdr, nrm1, ck, cr, cm, s, cfirst[i + 1], rho, rho_i);
-      if constexpr (kG<Real> == 8) s = density<Real, 4>(rho_tab, rdr, nrm1, ck, cr, cm, s, cfirst[i + 1], rho, rho_i);
+      s = density<Real, kG<Real>>(rho_tab, rdr, nrm1, ck, cr, cm, s, cp.cend[i], rho, rho_i);
+      if constexpr (kG<Real> == 8) s = density<Real, 4>(rho_tab, rdr, nrm1, ck, cr, cm, s, cp.cend[i], rho, rho_i);
 #endif
-      for (; s < cfirst[i + 1]; ++s) {
+      for (; s < cp.cend[i]; ++s) {
         const int k = ck[s];
-        Real p;
-        int m;
-        locate(cr[s], p, m);
+        Real p = cr[s] * rdr + Real(1);
+        const int m = std::min(static_cast<int>(p), nrm1);
+        p -= static_cast<Real>(m);
+        p = std::min(p, Real(1));
         cr[s] = p;
         cm[s] = m;
         const Real* c = rho_tab + 4 * m;
@@ -399,45 +386,53 @@ ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w)
       rho[i] += rho_i;
     }
   }
-  nb.fold(w.rho);
+}
 
-  const double* frho = t.frho;
-  double embed = 0;
-  for (int i = 0; i < nlocal; ++i) {
-    double p = rho[i] * t.rdrho + 1.0;
-    int m = static_cast<int>(p);
-    m = std::max(1, std::min(m, t.nrho - 1));
-    p -= m;
-    p = std::min(p, 1.0);
-    const double* c = frho + 7 * m;
-    const double fp = (c[0] * p + c[1]) * p + c[2];
-    double F = ((c[3] * p + c[4]) * p + c[5]) * p + c[6];
-    if (rho[i] > t.rhomax) F += fp * (rho[i] - t.rhomax);
-    w.fp[i] = fp;
-    if constexpr (Tally) embed += F;
-    if constexpr (PerAtom) w.energy_atom[i] += F;
-  }
-  nb.forward(w.fp);
+// F(rho) and F'(rho) of one atom (F continued linearly beyond the last knot).
+inline void embed(const EamOneType<double>& t, double rho, double& F, double& Fp) {
+  double p = rho * t.rdrho + 1.0;
+  int m = static_cast<int>(p);
+  m = std::max(1, std::min(m, t.nrho - 1));
+  p -= m;
+  p = std::min(p, 1.0);
+  const double* c = t.frho + 7 * m;
+  Fp = (c[0] * p + c[1]) * p + c[2];
+  F = ((c[3] * p + c[4]) * p + c[5]) * p + c[6];
+  if (rho > t.rhomax) F += Fp * (rho - t.rhomax);
+}
+template <class Real>
+EamOneType<double> embed_view(const EamOneType<Real>& t) {
+  return {nullptr, nullptr, t.frho, t.nr, t.nrho, t.rdr, t.rdrho, t.rhomax, t.cut};
+}
 
-  const double* __restrict fpa = w.fp.data();
-  sc.f4.assign(4 * static_cast<std::size_t>(nb.nall), 0.0);
-  double* __restrict f = sc.f4.data();
-  double epair = 0, vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0;
-  for (int i = 0; i < nlocal; ++i) {
+// The force pass of the pairs the density pass kept, atoms [0, n): each pair's force
+// added to atom i's and taken from the partner's in f (x, y, z, 0 per entry of q), the
+// pair energies summed into epair (Tally), half of each pair's energy and virial to both
+// atoms' e_atom and w_atom (PerAtom).
+template <class Real, bool PerAtom, bool Tally>
+void force_pass(const EamOneType<Real>& t, const double* __restrict q, const double* __restrict fpa, int n,
+                const CutPairs<Real>& cp, double* __restrict f, double& epair, double* __restrict e_atom,
+                double* __restrict w_atom) {
+  const Real* __restrict pair_tab = t.pair_tab;
+  const int* __restrict ck = cp.ck;
+  const int* __restrict cm = cp.cm;
+  const Real* __restrict cr = cp.cr;
+  const Real* __restrict cri = cp.cri;
+  for (int i = 0; i < n; ++i) {
     const double xi = q[4 * i], yi = q[4 * i + 1], zi = q[4 * i + 2];
     const Real fpi = static_cast<Real>(fpa[i]);
     double fxi = 0, fyi = 0, fzi = 0;
-    int s = cfirst[i];
+    int s = cp.cbeg[i];
+    const int end = cp.cend[i];
 #if HWY_TARGET != HWY_SCALAR
     if constexpr (!PerAtom) {
       double fi[4] = {0.0, 0.0, 0.0, 0.0};
-      const int end = cfirst[i + 1];
       s = force<Real, kG<Real>, Tally>(q, i, fpi, fpa, pair_tab, ck, cr, cri, cm, s, end, f, fi, epair);
       if constexpr (kG<Real> == 8) s = force<Real, 4, Tally>(q, i, fpi, fpa, pair_tab, ck, cr, cri, cm, s, end, f, fi, epair);
       fxi = fi[0], fyi = fi[1], fzi = fi[2];
     }
 #endif
-    for (; s < cfirst[i + 1]; ++s) {
+    for (; s < end; ++s) {
       const int k = ck[s];
       const Real p = cr[s];
       const Real* c = pair_tab + kEamPairStride * cm[s];
@@ -459,12 +454,12 @@ ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w)
       f[4 * k + 2] -= ffz;
       if constexpr (Tally) epair += phi;
       if constexpr (PerAtom) {
-        w.energy_atom[i] += 0.5 * phi;
-        w.energy_atom[k] += 0.5 * phi;
+        e_atom[i] += 0.5 * phi;
+        e_atom[k] += 0.5 * phi;
         const double v6[6] = {dx * ffx, dy * ffy, dz * ffz, dx * ffy, dx * ffz, dy * ffz};
         for (int c6 = 0; c6 < 6; ++c6) {
-          w.virial_atom[6 * i + c6] += 0.5 * v6[c6];
-          w.virial_atom[6 * k + c6] += 0.5 * v6[c6];
+          w_atom[6 * i + c6] += 0.5 * v6[c6];
+          w_atom[6 * k + c6] += 0.5 * v6[c6];
         }
       }
     }
@@ -472,18 +467,72 @@ ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w)
     f[4 * i + 1] += fyi;
     f[4 * i + 2] += fzi;
   }
+}
+
+// The virial as the sum over entries of x f (before any forces are folded): equal to
+// the pair sum of r_ab f_ab (eq. 2.25), as LAMMPS's fdotr.
+inline void add_fdotr(const double* __restrict q, const double* __restrict f, int n, double* v) {
+  double vxx = 0, vyy = 0, vzz = 0, vxy = 0, vxz = 0, vyz = 0;
+  for (int k = 0; k < n; ++k) {
+    const double* xk = q + 4 * k;
+    const double* fk = f + 4 * k;
+    vxx += xk[0] * fk[0], vyy += xk[1] * fk[1], vzz += xk[2] * fk[2];
+    vxy += xk[0] * fk[1], vxz += xk[0] * fk[2], vyz += xk[1] * fk[2];
+  }
+  v[0] += vxx, v[1] += vyy, v[2] += vzz, v[3] += vxy, v[4] += vxz, v[5] += vyz;
+}
+
+template <class Real>
+CutPairs<Real> cut_pairs(std::size_t nslot, int natom) {
+  Scratch& sc = scratch;
+  sc.cut_k.resize(nslot);
+  sc.cut_m.resize(nslot);
+  sc.cut_first.resize(natom);
+  sc.cut_end.resize(natom);
+  if constexpr (std::is_same_v<Real, double>) {
+    sc.cut_r.resize(nslot);
+    sc.cut_ri.resize(nslot);
+    return {sc.cut_k.data(), sc.cut_r.data(), sc.cut_ri.data(), sc.cut_m.data(), sc.cut_first.data(), sc.cut_end.data()};
+  } else {
+    sc.cut_rf.resize(nslot);
+    sc.cut_rif.resize(nslot);
+    return {sc.cut_k.data(), sc.cut_rf.data(), sc.cut_rif.data(), sc.cut_m.data(), sc.cut_first.data(),
+            sc.cut_end.data()};
+  }
+}
+
+// One thread over the whole list: pair shares scattered into the entries, ghosts folded
+// into their owners between the passes and at the end.
+template <class Real, bool PerAtom, bool Tally>
+ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w) {
+  const int nlocal = nb.nlocal;
+  const double* q = nb.xyz.data();
+  const CutPairs<Real> cp = cut_pairs<Real>(nb.list.size(), nlocal);
+  density_pass(t, q, nb.first.data(), nb.list.data(), nlocal, 0, cp, w.rho.data());
+  nb.fold(w.rho);
+
+  double embed_sum = 0;
+  const EamOneType<double> te = embed_view(t);
+  for (int i = 0; i < nlocal; ++i) {
+    double F;
+    embed(te, w.rho[i], F, w.fp[i]);
+    if constexpr (Tally) embed_sum += F;
+    if constexpr (PerAtom) w.energy_atom[i] += F;
+  }
+  nb.forward(w.fp);
+
+  Scratch& sc = scratch;
+  sc.f4.assign(4 * static_cast<std::size_t>(nb.nall), 0.0);
+  double* f = sc.f4.data();
+  double epair = 0;
+  force_pass<Real, PerAtom, Tally>(t, q, w.fp.data(), nlocal, cp, f, epair, w.energy_atom.data(),
+                                   w.virial_atom.data());
   ForceSums sums;
   if constexpr (Tally) {
-    // Virial as sum over locals and ghosts of x f (before ghost forces are folded):
-    // equal to the pair sum of r_ab f_ab (eq. 2.25), as LAMMPS's fdotr.
-    for (int k = 0; k < nb.nall; ++k) {
-      const double* xk = q + 4 * k;
-      const double* fk = f + 4 * k;
-      vxx += xk[0] * fk[0], vyy += xk[1] * fk[1], vzz += xk[2] * fk[2];
-      vxy += xk[0] * fk[1], vxz += xk[0] * fk[2], vyz += xk[1] * fk[2];
-    }
-    sums.energy = embed + epair;
-    sums.virial = {vxx, vyy, vzz, vxy, vxz, vyz};
+    double v[6] = {};
+    add_fdotr(q, f, nb.nall, v);
+    sums.energy = embed_sum + epair;
+    sums.virial = {v[0], v[1], v[2], v[3], v[4], v[5]};
   }
   // Ghost forces into their owners, then the locals out.
   const int* owner = nb.owner.data();
@@ -491,16 +540,141 @@ ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w)
     double* fo = f + 4 * owner[k];
     fo[0] += f[4 * k], fo[1] += f[4 * k + 1], fo[2] += f[4 * k + 2];
   }
-  double* __restrict fx = w.fx.data();
-  double* __restrict fy = w.fy.data();
-  double* __restrict fz = w.fz.data();
-  for (int k = 0; k < nlocal; ++k) fx[k] = f[4 * k], fy[k] = f[4 * k + 1], fz[k] = f[4 * k + 2];
+  for (int k = 0; k < nlocal; ++k) w.fx[k] = f[4 * k], w.fy[k] = f[4 * k + 1], w.fz[k] = f[4 * k + 2];
+  w.folded = true;
+  return sums;
+}
+
+// The same passes on `threads` threads over the list's tiles (ForceWork::tiled,
+// Neighbors::tiles): each tile's pairs are summed into arrays of its own entries (its
+// atoms and the entries they reach, in a core's cache), and every atom then adds its
+// shares from all tiles in tile order; the sums run over tiles in order. Which thread
+// takes which tile changes no number: every count gives the same bits, and every
+// vector path the scalar loop's.
+template <class Real, bool PerAtom, bool Tally>
+ForceSums one_type_tiles(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w) {
+  const int nlocal = nb.nlocal;
+  const int ntile = static_cast<int>(nb.tile_atom.size()) - 1;
+  const std::size_t ne = nb.tile_entry.size();
+  const int* __restrict tile_atom = nb.tile_atom.data();
+  const int* __restrict tile_first = nb.tile_first.data();
+  const int* __restrict tile_entry = nb.tile_entry.data();
+  const int* __restrict share_first = nb.share_first.data();
+  const int* __restrict share = nb.share.data();
+  const int* __restrict owner = nb.owner.data();
+  const double* __restrict xyz = nb.xyz.data();
+
+  // The calling thread's scratch, shared by the team through these pointers.
+  const CutPairs<Real> cp = cut_pairs<Real>(nb.list.size(), nlocal);
+  Scratch& sc = scratch;
+  sc.tile_q.resize(4 * ne);
+  sc.tile_rho.resize(ne);
+  sc.tile_fp.resize(ne);
+  sc.f4.resize(4 * ne);
+  sc.tile_sums.assign(7 * static_cast<std::size_t>(ntile), 0.0);
+  sc.embed_atom.resize(nlocal);
+  if constexpr (PerAtom) {
+    sc.tile_e.resize(ne);
+    sc.tile_w.resize(6 * ne);
+  }
+  double* __restrict tq = sc.tile_q.data();
+  double* __restrict trho = sc.tile_rho.data();
+  double* __restrict tfp = sc.tile_fp.data();
+  double* __restrict tf = sc.f4.data();
+  double* __restrict tsum = sc.tile_sums.data();
+  double* __restrict emb = sc.embed_atom.data();
+  double* __restrict te_ = PerAtom ? sc.tile_e.data() : nullptr;
+  double* __restrict tw_ = PerAtom ? sc.tile_w.data() : nullptr;
+  double* __restrict fp = w.fp.data();
+  const EamOneType<double> te = embed_view(t);
+  const int threads = std::max(1, w.threads);
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    // Each tile: its entries' positions, then the density of its pairs.
+#pragma omp for schedule(dynamic)
+    for (int p = 0; p < ntile; ++p) {
+      const int a = tile_atom[p], u0 = tile_first[p], nu = tile_first[p + 1] - u0;
+      double* q = tq + 4 * static_cast<std::size_t>(u0);
+      for (int u = 0; u < nu; ++u) std::copy_n(xyz + 4 * static_cast<std::size_t>(tile_entry[u0 + u]), 4, q + 4 * u);
+      std::fill_n(trho + u0, nu, 0.0);
+      const CutPairs<Real> tp{cp.ck, cp.cr, cp.cri, cp.cm, cp.cbeg + a, cp.cend + a};
+      density_pass(t, q, nb.first.data() + a, nb.tile_list.data(), tile_atom[p + 1] - a, nb.first[a], tp, trho + u0);
+    }
+    // Each atom: its shares of density, F and F'.
+#pragma omp for schedule(dynamic, 256)
+    for (int j = 0; j < nlocal; ++j) {
+      double r = 0;
+      for (int v = share_first[j]; v < share_first[j + 1]; ++v) r += trho[share[v]];
+      w.rho[j] = r;
+      double F;
+      embed(te, r, F, fp[j]);
+      emb[j] = F;
+    }
+    // Each tile: F' of its entries, then the forces of its pairs (and its sums).
+#pragma omp for schedule(dynamic)
+    for (int p = 0; p < ntile; ++p) {
+      const int a = tile_atom[p], u0 = tile_first[p], nu = tile_first[p + 1] - u0;
+      for (int u = 0; u < nu; ++u) tfp[u0 + u] = fp[owner[tile_entry[u0 + u]]];
+      double* f = tf + 4 * static_cast<std::size_t>(u0);
+      std::fill_n(f, 4 * static_cast<std::size_t>(nu), 0.0);
+      if constexpr (PerAtom) {
+        std::fill_n(te_ + u0, nu, 0.0);
+        std::fill_n(tw_ + 6 * static_cast<std::size_t>(u0), 6 * static_cast<std::size_t>(nu), 0.0);
+      }
+      const CutPairs<Real> tp{cp.ck, cp.cr, cp.cri, cp.cm, cp.cbeg + a, cp.cend + a};
+      const double* q = tq + 4 * static_cast<std::size_t>(u0);
+      double epair = 0;
+      force_pass<Real, PerAtom, Tally>(t, q, tfp + u0, tile_atom[p + 1] - a, tp, f, epair,
+                                       PerAtom ? te_ + u0 : nullptr, PerAtom ? tw_ + 6 * static_cast<std::size_t>(u0) : nullptr);
+      if constexpr (Tally) {
+        tsum[7 * p] = epair;
+        add_fdotr(q, f, nu, tsum + 7 * p + 1);
+      }
+    }
+    // Each atom: its shares of force (and of the per-atom tallies).
+#pragma omp for schedule(dynamic, 256)
+    for (int j = 0; j < nlocal; ++j) {
+      double sx = 0, sy = 0, sz = 0;
+      for (int v = share_first[j]; v < share_first[j + 1]; ++v) {
+        const double* f = tf + 4 * static_cast<std::size_t>(share[v]);
+        sx += f[0], sy += f[1], sz += f[2];
+      }
+      w.fx[j] = sx, w.fy[j] = sy, w.fz[j] = sz;
+      if constexpr (PerAtom) {
+        double e = emb[j], v6[6] = {};
+        for (int v = share_first[j]; v < share_first[j + 1]; ++v) {
+          e += te_[share[v]];
+          for (int c = 0; c < 6; ++c) v6[c] += tw_[6 * static_cast<std::size_t>(share[v]) + c];
+        }
+        w.energy_atom[j] = e;
+        for (int c = 0; c < 6; ++c) w.virial_atom[6 * static_cast<std::size_t>(j) + c] = v6[c];
+      }
+    }
+  }
+
+  ForceSums sums;
+  if constexpr (Tally) {
+    double e = 0, v[6] = {};
+    for (int j = 0; j < nlocal; ++j) e += emb[j];
+    for (int p = 0; p < ntile; ++p) {
+      e += tsum[7 * p];
+      for (int c = 0; c < 6; ++c) v[c] += tsum[7 * p + 1 + c];
+    }
+    sums.energy = e;
+    sums.virial = {v[0], v[1], v[2], v[3], v[4], v[5]};
+  }
   w.folded = true;
   return sums;
 }
 
 template <class Real>
 ForceSums one_type_any(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w) {
+  // One tile is the whole list: the scattering form is the faster one there.
+  if (w.tiled && nb.tile_atom.size() > 2) {
+    if (w.per_atom) return one_type_tiles<Real, true, true>(t, nb, w);
+    if (w.tally) return one_type_tiles<Real, false, true>(t, nb, w);
+    return one_type_tiles<Real, false, false>(t, nb, w);
+  }
   if (w.per_atom) return one_type<Real, true, true>(t, nb, w);
   if (w.tally) return one_type<Real, false, true>(t, nb, w);
   return one_type<Real, false, false>(t, nb, w);
