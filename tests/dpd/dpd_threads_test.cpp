@@ -14,6 +14,7 @@ namespace {
 
 using namespace mpmx;
 
+// Tiles of 100 particles: seven tiles, so the tiled pair forces' order is exercised.
 dpd::System make(const dpd::Particles& p, bool dpde, int threads) {
   const test::SoftFluid f;
   dpd::DpdParams par;
@@ -21,7 +22,8 @@ dpd::System make(const dpd::Particles& p, bool dpde, int threads) {
   par.integrator = dpde ? dpd::Integrator::shardlow : dpd::Integrator::velocity_verlet;
   par.gamma = f.gamma(), par.cutoff = f.rc, par.temperature = 300, par.seed = 77;
   par.heat_capacity = 10 * 8.617343e-5;
-  return dpd::System(p, test::cube(42.0), f.potential(), par, {.skin = 2.0, .threads = threads});
+  return dpd::System(p, test::cube(42.0), f.potential(), par,
+                     {.skin = 2.0, .threads = threads, .sort = true, .tile_particles = 100});
 }
 
 dpd::Particles start(std::uint64_t seed) {
@@ -56,11 +58,13 @@ TEST_P(DpdThreads, OneAndTwoThreadsGiveTheSameBits) {
   const bool dpde = GetParam();
   const test::SoftFluid f;
   const dpd::Particles p = start(12);
-  dpd::System one = make(p, dpde, 1), two = make(p, dpde, 2);
+  dpd::System one = make(p, dpde, 1), two = make(p, dpde, 2), three = make(p, dpde, 3);
   one.advance(150, 0.04 * f.tau());
   two.advance(150, 0.04 * f.tau());
+  three.advance(150, 0.04 * f.tau());
   EXPECT_GT(one.neighbor_builds(), 2);
   expect_bitwise_equal(by_id(one.particles()), by_id(two.particles()));
+  expect_bitwise_equal(by_id(one.particles()), by_id(three.particles()));
   EXPECT_EQ(one.total_energy(), two.total_energy());
 }
 

@@ -8,10 +8,12 @@
 //   w^R = 1 - r/rc_d, w^D = (w^R)^2, sigma^2 = 2 gamma k_B T,
 // theta_ij a standard normal number per pair and step (pair_random.hpp).
 //
-// Every pair is evaluated once into a per-pair buffer (threads over the particles i of
-// the half list), then every particle sums its own pairs in the list's fixed order
-// (threads over particles): results are bitwise the same for any thread count.
-// Energy and virial are summed per particle, then over particles in index order.
+// Every pair of the half list is evaluated once, tile by tile (the list's tiles: runs of
+// consecutive particles, threads over tiles), its force added to its particle's and
+// taken from its partner's entry in the tile's own array; every particle then adds its
+// shares from all tiles in tile order (threads over particles): results are bitwise the
+// same for any thread count. Energy and virial are summed per particle, then over
+// particles in index order.
 #include <cstdint>
 #include <vector>
 
@@ -33,7 +35,7 @@ struct StochasticForces {
 };
 
 struct ForceBuffers {
-  std::vector<double> pair_force;  // 3 per slot, eV/Angstrom
+  std::vector<double> tile_force;  // 3 per entry of each tile, eV/Angstrom
   std::vector<double> energy;      // per particle (each pair to its particle i)
   std::vector<double> virial;      // 6 per particle
 };

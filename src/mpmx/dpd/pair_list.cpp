@@ -7,11 +7,13 @@ namespace mpmx::dpd {
 void PairList::build(const Particles& p, const Domain& d, double cutoff, double skin, bool sweep_order,
                      int threads) {
   nb.periodic = d.periodic;
-  nb.transpose = true;
+  nb.tiles = true;
   nb.build(p, d.box, cutoff, skin, threads);
   const int n = nb.nlocal;
   const int ns = slots();
-  const std::vector<int>& slot_i = nb.slot_i;
+  slot_i.resize(ns);
+  for (int i = 0; i < n; ++i)
+    for (int s = nb.first[i]; s < nb.first[i + 1]; ++s) slot_i[s] = i;
 
   sweep.clear();
   slab_first.assign(1, 0);

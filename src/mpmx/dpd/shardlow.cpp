@@ -15,7 +15,7 @@ void sweep(const PairList& list, Particles& p, const SweepParams& sp, SweepWork&
   const md::Neighbors& nb = list.nb;
   const int n = nb.nlocal;
   const double* __restrict q = nb.xyz.data();
-  const int* __restrict slot_i = list.nb.slot_i.data();
+  const int* __restrict slot_i = list.slot_i.data();
   const int* __restrict entries = nb.list.data();
   const int* __restrict owner = nb.owner.data();
   const std::int8_t* __restrict n1 = nb.n1.data();

@@ -103,6 +103,7 @@ void System::rebuild() {
     if (!identity) p_.permute(order);
   }
   const bool sweep = par_.integrator == Integrator::shardlow && par_.gamma > 0;
+  list_.nb.tile_atoms = opt_.tile_particles;
   list_.build(p_, d_, neighbor_cutoff(), opt_.skin, sweep, opt_.threads);
   // The points of external groups (a continuum) do not interact with each other: the mask
   // follows the particle order, which only a rebuild changes (make_external asks for one).

@@ -51,6 +51,7 @@ struct SystemOptions {
   double skin = 1.0;  // Angstrom
   int threads = 1;
   bool sort = true;   // spatial sort at each neighbour rebuild (deterministic)
+  int tile_particles = 0;  // particles per tile of the pair forces; 0: from the count
 };
 
 struct RigidGroup {

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include <fmt/format.h>
-#include <omp.h>
 
 #include "mpmx/core/error.hpp"
 
@@ -173,7 +172,6 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk, 
   list.resize(static_cast<std::size_t>(first[nlocal]));
 #pragma omp parallel for schedule(static) num_threads(nt) if (nt > 1)
   for (int c = 0; c < nchunk; ++c) std::copy(part_[c].begin(), part_[c].end(), list.begin() + first[c * kChunk]);
-  if (transpose) build_transpose(nt);
   if (tiles) build_tiles(nt);
 
   pack();
@@ -228,45 +226,6 @@ bool Neighbors::needs_rebuild(const Atoms& atoms, const Box& box, int threads) c
   const double dc = std::hypot(box.xz - box0_.xz, box.yz - box0_.yz, box.lz - box0_.lz);
   const double image = max_n1_ * da + max_n2_ * db + max_n3_ * dc;
   return std::sqrt(d2max) + image > 0.5 * skin;
-}
-
-void Neighbors::build_transpose(int threads) {
-  const int ns = static_cast<int>(list.size());
-  slot_i.resize(ns);
-  tslot.resize(ns);
-  tfirst.assign(nlocal + 1, 0);
-  // A counting sort on the partner's owner (ascending slots per owner), in parallel: each
-  // thread counts the partners of a contiguous range of atoms, so the slots it fills for
-  // an owner follow those of the threads before it.
-  const int want = std::max(1, threads);
-  if (static_cast<int>(tcount_.size()) < want) tcount_.resize(want);
-#pragma omp parallel num_threads(want) if (want > 1)
-  {
-    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-    const int i0 = static_cast<int>(static_cast<long long>(nlocal) * t / nt);
-    const int i1 = static_cast<int>(static_cast<long long>(nlocal) * (t + 1) / nt);
-    std::vector<int>& count = tcount_[t];
-    count.assign(nlocal, 0);
-    for (int i = i0; i < i1; ++i)
-      for (int s = first[i]; s < first[i + 1]; ++s) {
-        slot_i[s] = i;
-        ++count[owner[list[s]]];
-      }
-#pragma omp barrier
-#pragma omp single
-    {
-      for (int j = 0; j < nlocal; ++j) {
-        int at = tfirst[j];
-        for (int u = 0; u < nt; ++u) {
-          const int c = tcount_[u][j];
-          tcount_[u][j] = at;  // where thread u's slots for owner j begin
-          at += c;
-        }
-        tfirst[j + 1] = at;
-      }
-    }
-    for (int s = first[i0]; s < first[i1]; ++s) tslot[count[owner[list[s]]]++] = s;
-  }
 }
 
 void Neighbors::build_tiles(int threads) {

@@ -51,13 +51,6 @@ class Neighbors {
   std::int64_t builds = 0;
   std::array<bool, 3> periodic{true, true, true};  // set before build()
 
-  // With `transpose` set before build(), the index that lets every atom sum what its
-  // pairs give it in a fixed order (threads over atoms, no atomics, the same bits for
-  // any thread count): slot_i[s] is the atom i of list slot s, and the slots whose
-  // partner is j or an image of j are tslot[tfirst[j] .. tfirst[j+1]), ascending.
-  bool transpose = false;
-  std::vector<int> slot_i, tfirst, tslot;
-
   // With `tiles` set before build(), the locals cut into tiles of consecutive atoms (a
   // size from the atom count alone, never from the threads), so that each tile's pairs
   // can be summed into arrays of its own, small enough for a core's cache, and each atom
@@ -79,10 +72,8 @@ class Neighbors {
   std::vector<int> bin_start_, bin_atoms_, bin_owner_;
   std::vector<double> bin_xyz_;
   std::vector<std::vector<int>> part_;    // the lists of chunks of atoms (build)
-  std::vector<std::vector<int>> tcount_;  // per-thread owner counts (build_transpose)
   std::vector<std::vector<int>> tile_part_;  // each tile's entries (build_tiles)
   void pack();
-  void build_transpose(int threads);
   void build_tiles(int threads);
 };
 
