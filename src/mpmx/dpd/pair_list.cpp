@@ -12,6 +12,7 @@ void PairList::build(const Particles& p, const Domain& d, double cutoff, double 
   const int n = nb.nlocal;
   const int ns = slots();
   slot_i.resize(ns);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (int i = 0; i < n; ++i)
     for (int s = nb.first[i]; s < nb.first[i + 1]; ++s) slot_i[s] = i;
 

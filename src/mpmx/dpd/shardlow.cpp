@@ -37,6 +37,7 @@ void sweep(const PairList& list, Particles& p, const SweepParams& sp, SweepWork&
   work.inv_temperature.resize(n);
   double* __restrict inv_m = work.inv_mass.data();
   double* __restrict inv_t = work.inv_temperature.data();
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (int i = 0; i < n; ++i) {
     inv_m[i] = p.group[i] == kMobile ? 1.0 / p.mass[i] : 0.0;
     if constexpr (Dpde) inv_t[i] = p.u[i] > 0 ? sp.heat_capacity / p.u[i] : std::numeric_limits<double>::infinity();
