@@ -28,6 +28,7 @@ System::System(Particles particles, Domain domain, PairPotential potential, DpdP
                                  d_.box.ly, d_.box.lz));
   if (!(opt_.skin >= 0)) throw InputError(fmt::format("dpd: skin = {}: must be >= 0", opt_.skin));
   if (opt_.threads < 1) throw InputError(fmt::format("dpd: threads = {}: must be >= 1", opt_.threads));
+  list_.nb.tile_atoms = opt_.tile_particles;
   if (!(par_.gamma >= 0)) throw InputError(fmt::format("dpd: gamma = {}: must be >= 0", par_.gamma));
   if (par_.gamma > 0 && !(par_.cutoff > 0)) throw InputError("dpd: the dissipative cutoff must be positive");
   if (par_.energy_conserving && par_.integrator != Integrator::shardlow)
@@ -103,7 +104,6 @@ void System::rebuild() {
     if (!identity) p_.permute(order);
   }
   const bool sweep = par_.integrator == Integrator::shardlow && par_.gamma > 0;
-  list_.nb.tile_atoms = opt_.tile_particles;
   list_.build(p_, d_, neighbor_cutoff(), opt_.skin, sweep, opt_.threads);
   // The points of external groups (a continuum) do not interact with each other: the mask
   // follows the particle order, which only a rebuild changes (make_external asks for one).

@@ -16,14 +16,12 @@ struct ForceWork {
   bool tally = true;                 // energy and virial wanted (else forces only)
   std::vector<double> energy_atom;   // size nall
   std::vector<double> virial_atom;   // 6 * nall, half of each pair to each atom
-  // Set by a kernel that already summed ghost forces into their owners (fx.. valid for
-  // locals only).
+  // Set by a kernel that already summed ghost forces (and per-atom tallies) into their
+  // owners (valid for locals only).
   bool folded = false;
-  // One large system: the one-element EAM kernel sums its pairs tile by tile (the
-  // neighbour list's tiles) on `threads` threads, and every atom adds its tiles' shares
-  // in a fixed order, so any count gives the same bits. Other potentials, and the small
-  // boxes of a multiscale run (off: the whole list scattered on one thread), ignore it.
-  bool tiled = false;
+  // Threads for a list with tiles (Neighbors::tiles): the one-element EAM kernel sums its
+  // pairs tile by tile and every atom adds its tiles' shares in a fixed order, so any
+  // count gives the same bits. Other potentials run on one thread.
   int threads = 1;
   // Sizes the arrays and zeroes rho (and the per-atom sums); each kernel zeroes the
   // force arrays it accumulates into (zero_forces()).

@@ -270,8 +270,10 @@ void Neighbors::build_tiles(int threads) {
   for (int u = 0; u < ne; ++u) share[fill[owner[tile_entry[u]]]++] = u;
 }
 
-void Neighbors::fold(std::vector<double>& a) const {
-  for (int k = nlocal; k < nall; ++k) a[owner[k]] += a[k];
+void Neighbors::fold(std::vector<double>& a, int width) const {
+  const std::size_t w = static_cast<std::size_t>(width);
+  for (int k = nlocal; k < nall; ++k)
+    for (std::size_t c = 0; c < w; ++c) a[w * owner[k] + c] += a[w * k + c];
 }
 
 void Neighbors::forward(std::vector<double>& a) const {

@@ -34,8 +34,8 @@ class Neighbors {
   const std::vector<double>& z_at_build() const { return z0_; }
   const Box& box_at_build() const { return box0_; }
 
-  // Sums ghost entries of a per-atom array (size nall) into their owners.
-  void fold(std::vector<double>& a) const;
+  // Sums ghost entries of a per-atom array (size `width` x nall) into their owners.
+  void fold(std::vector<double>& a, int width = 1) const;
   // Copies owners' values to their ghosts.
   void forward(std::vector<double>& a) const;
 

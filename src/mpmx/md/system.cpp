@@ -27,7 +27,7 @@ System::System(Atoms atoms, Box box, Potential potential, SystemOptions options)
       throw InputError(fmt::format("atom {} has type {}, the potential has {} type(s)", atoms_.id[i],
                                    atoms_.type[i] + 1, pot_.types()));
   if (!(opt_.skin >= 0)) throw InputError(fmt::format("skin = {}: must be >= 0", opt_.skin));
-  opt_.threads = std::max(1, opt_.threads);
+  opt_.threads = opt_.threaded ? std::max(1, opt_.threads) : 1;  // one thread unless threaded
   nb_.tiles = opt_.threaded;
   nb_.tile_atoms = opt_.tile_atoms;
   refresh();
@@ -41,7 +41,7 @@ void System::refresh() {
 
 void System::rebuild() {
   box_.reduce_tilt();
-  const int nt = opt_.threaded ? opt_.threads : 1;
+  const int nt = opt_.threads;
   wrap(atoms_, box_, g_, opt_.deformation == Deformation::boundary, nt);
   if (opt_.sort_atoms && atoms_.size() > 1) {
     // Spatial order (bins of half the cutoff), ties by id: deterministic.
@@ -85,7 +85,6 @@ void System::rebuild() {
 void System::compute_forces(bool tally) {
   work_.per_atom = opt_.per_atom && tally;
   work_.tally = tally;
-  work_.tiled = opt_.threaded;
   work_.threads = opt_.threads;
   work_.reset(nb_.nall);
   const ForceSums s = pot_.compute(nb_, work_, opt_.mixed_precision);
@@ -94,16 +93,15 @@ void System::compute_forces(bool tally) {
     nb_.fold(work_.fx);
     nb_.fold(work_.fy);
     nb_.fold(work_.fz);
+    if (work_.per_atom) {
+      nb_.fold(work_.energy_atom);
+      nb_.fold(work_.virial_atom, 6);
+    }
   }
   const std::size_t n = atoms_.size();
   std::copy_n(work_.fx.begin(), n, atoms_.fx.begin());
   std::copy_n(work_.fy.begin(), n, atoms_.fy.begin());
   std::copy_n(work_.fz.begin(), n, atoms_.fz.begin());
-  if (work_.per_atom) {
-    nb_.fold(work_.energy_atom);
-    for (int k = nb_.nlocal; k < nb_.nall; ++k)
-      for (int c = 0; c < 6; ++c) work_.virial_atom[6 * nb_.owner[k] + c] += work_.virial_atom[6 * k + c];
-  }
   if (work_.tally && !std::isfinite(sums_.energy)) check_finite();
 }
 
@@ -145,7 +143,7 @@ void System::advance(int nsteps, const Mat3& grad, double dt) {
   g_ = g;
   const bool affine = opt_.deformation == Deformation::affine;
   const bool deforming = std::any_of(g.begin(), g.end(), [](double v) { return v != 0.0; });
-  const int nt = opt_.threaded ? opt_.threads : 1;
+  const int nt = opt_.threads;
   kick(atoms_, mass_, dt, 0.5, nt);  // eq. 5.4
   hold_frozen();
   for (int s = 0; s < nsteps; ++s) {
@@ -169,7 +167,7 @@ void System::set_frozen_ids(std::int64_t max_id) {
 
 void System::hold_frozen() {
   if (frozen_ids_ <= 0) return;
-  const int nt = opt_.threaded ? opt_.threads : 1;
+  const int nt = opt_.threads;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(atoms_.size());
 #pragma omp parallel for schedule(static) num_threads(nt) if (nt > 1)
   for (std::ptrdiff_t i = 0; i < n; ++i)
@@ -179,7 +177,7 @@ void System::hold_frozen() {
 void System::reflect(double dt) {
   walls_.lo += walls_.v_lo * dt;  // the walls' positions at the new time
   walls_.hi += walls_.v_hi * dt;
-  const int nt = opt_.threaded ? opt_.threads : 1;
+  const int nt = opt_.threads;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(atoms_.size());
 #pragma omp parallel for schedule(static) num_threads(nt) if (nt > 1)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
@@ -372,7 +370,7 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   for (std::size_t i = 0; i < n; ++i)
     if (!inside(box_at_build, at_build.x[i], at_build.y[i], at_build.z[i]))
       throw InputError(fmt::format("MD checkpoint: the neighbour list's atom {} lies far outside its box", i));
-  s.nb_.build(at_build, box_at_build, s.pot_.cutoff(), s.opt_.skin, s.opt_.threaded ? s.opt_.threads : 1);
+  s.nb_.build(at_build, box_at_build, s.pot_.cutoff(), s.opt_.skin, s.opt_.threads);
   s.nb_.builds = builds;
   s.nb_.update_positions(s.atoms_, s.box_);
   s.compute_forces();

@@ -50,7 +50,7 @@ struct SystemOptions {
   // the same bits. Off for the many small boxes of a multiscale run (one thread each,
   // the scattering force loop: faster there).
   bool threaded = false;
-  int threads = 1;
+  int threads = 1;     // used when threaded
   int tile_atoms = 0;  // atoms per tile of the threaded form; 0: chosen from the atom count
 };
 

@@ -389,7 +389,8 @@ void density_pass(const EamOneType<Real>& t, const double* __restrict q, const i
 }
 
 // F(rho) and F'(rho) of one atom (F continued linearly beyond the last knot).
-inline void embed(const EamOneType<double>& t, double rho, double& F, double& Fp) {
+template <class Real>
+void embed(const EamOneType<Real>& t, double rho, double& F, double& Fp) {
   double p = rho * t.rdrho + 1.0;
   int m = static_cast<int>(p);
   m = std::max(1, std::min(m, t.nrho - 1));
@@ -399,10 +400,6 @@ inline void embed(const EamOneType<double>& t, double rho, double& F, double& Fp
   Fp = (c[0] * p + c[1]) * p + c[2];
   F = ((c[3] * p + c[4]) * p + c[5]) * p + c[6];
   if (rho > t.rhomax) F += Fp * (rho - t.rhomax);
-}
-template <class Real>
-EamOneType<double> embed_view(const EamOneType<Real>& t) {
-  return {nullptr, nullptr, t.frho, t.nr, t.nrho, t.rdr, t.rdrho, t.rhomax, t.cut};
 }
 
 // The force pass of the pairs the density pass kept, atoms [0, n): each pair's force
@@ -502,7 +499,7 @@ CutPairs<Real> cut_pairs(std::size_t nslot, int natom) {
 }
 
 // One thread over the whole list: pair shares scattered into the entries, ghosts folded
-// into their owners between the passes and at the end.
+// into their owners between the passes and at the end (forces and per-atom tallies).
 template <class Real, bool PerAtom, bool Tally>
 ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w) {
   const int nlocal = nb.nlocal;
@@ -512,10 +509,9 @@ ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w)
   nb.fold(w.rho);
 
   double embed_sum = 0;
-  const EamOneType<double> te = embed_view(t);
   for (int i = 0; i < nlocal; ++i) {
     double F;
-    embed(te, w.rho[i], F, w.fp[i]);
+    embed(t, w.rho[i], F, w.fp[i]);
     if constexpr (Tally) embed_sum += F;
     if constexpr (PerAtom) w.energy_atom[i] += F;
   }
@@ -541,12 +537,16 @@ ForceSums one_type(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w)
     fo[0] += f[4 * k], fo[1] += f[4 * k + 1], fo[2] += f[4 * k + 2];
   }
   for (int k = 0; k < nlocal; ++k) w.fx[k] = f[4 * k], w.fy[k] = f[4 * k + 1], w.fz[k] = f[4 * k + 2];
+  if constexpr (PerAtom) {
+    nb.fold(w.energy_atom);
+    nb.fold(w.virial_atom, 6);
+  }
   w.folded = true;
   return sums;
 }
 
-// The same passes on `threads` threads over the list's tiles (ForceWork::tiled,
-// Neighbors::tiles): each tile's pairs are summed into arrays of its own entries (its
+// The same passes on `threads` threads over the list's tiles (Neighbors::tiles,
+// ForceWork::threads): each tile's pairs are summed into arrays of its own entries (its
 // atoms and the entries they reach, in a core's cache), and every atom then adds its
 // shares from all tiles in tile order; the sums run over tiles in order. Which thread
 // takes which tile changes no number: every count gives the same bits, and every
@@ -586,7 +586,6 @@ ForceSums one_type_tiles(const EamOneType<Real>& t, const Neighbors& nb, ForceWo
   double* __restrict te_ = PerAtom ? sc.tile_e.data() : nullptr;
   double* __restrict tw_ = PerAtom ? sc.tile_w.data() : nullptr;
   double* __restrict fp = w.fp.data();
-  const EamOneType<double> te = embed_view(t);
   const int threads = std::max(1, w.threads);
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
@@ -607,8 +606,8 @@ ForceSums one_type_tiles(const EamOneType<Real>& t, const Neighbors& nb, ForceWo
       for (int v = share_first[j]; v < share_first[j + 1]; ++v) r += trho[share[v]];
       w.rho[j] = r;
       double F;
-      embed(te, r, F, fp[j]);
-      emb[j] = F;
+      embed(t, r, F, fp[j]);
+      if constexpr (Tally) emb[j] = F;
     }
     // Each tile: F' of its entries, then the forces of its pairs (and its sums).
 #pragma omp for schedule(dynamic)
@@ -670,7 +669,7 @@ ForceSums one_type_tiles(const EamOneType<Real>& t, const Neighbors& nb, ForceWo
 template <class Real>
 ForceSums one_type_any(const EamOneType<Real>& t, const Neighbors& nb, ForceWork& w) {
   // One tile is the whole list: the scattering form is the faster one there.
-  if (w.tiled && nb.tile_atom.size() > 2) {
+  if (nb.tiles && nb.tile_atom.size() > 2) {
     if (w.per_atom) return one_type_tiles<Real, true, true>(t, nb, w);
     if (w.tally) return one_type_tiles<Real, false, true>(t, nb, w);
     return one_type_tiles<Real, false, false>(t, nb, w);
