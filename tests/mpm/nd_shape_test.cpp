@@ -10,6 +10,7 @@
 
 #include "mpmx/mpm/shape/axis.hpp"
 #include "mpmx/mpm/shape/ddmp.hpp"
+#include "mpmx/mpm/shape/ddmp_operator.hpp"
 #include "mpmx/mpm/shape/scheme.hpp"
 
 using namespace mpmx::mpm;
@@ -62,6 +63,7 @@ void check_consistency(const Case& c) {
   ShapeEvaluator<Dim> eval(opt, g);
   Stencil<Dim> st;
   eval(g, p, st);
+  st = shape::expanded(st, g);  // DDMP: the gradient in full
   for (std::size_t q = 0; q < p.size(); ++q) {
     double s = 0.0, gsum[Dim] = {}, gabs = 0.0, xs[Dim] = {}, xg[Dim][Dim] = {};
     for (int k = 0; k < st.width; ++k) {
@@ -131,6 +133,7 @@ TEST(DdmpND, Eq72IsEq331In1D) {
   for (std::size_t q = 0; q < p.size(); ++q) p.x[0][q] = g.lower[0] + 4.0 * (q + 0.37) / p.size();
   Stencil<1> st;
   ShapeEvaluator<1>({Scheme::ddmp}, g)(g, p, st);
+  st = shape::expanded(st, g);
   for (std::size_t q = 0; q < p.size(); ++q) {
     const double xi = (p.x[0][q] - g.lower[0]) * g.inv_dx[0];
     const int c = shape::ddmp_cell(xi, g.cells[0]);
@@ -160,6 +163,8 @@ TEST(DdmpND, AxisProductReducesTo1DAcrossY) {
   Stencil<2> s2;
   ShapeEvaluator<1>(o, g1)(g1, p1, s1);
   ShapeEvaluator<2>(o, g2)(g2, p2, s2);
+  s1 = shape::expanded(s1, g1);
+  s2 = shape::expanded(s2, g2);
   for (std::size_t q = 0; q < 50; ++q)
     for (int k = 0; k < 4; ++k) {
       double sum = 0.0;

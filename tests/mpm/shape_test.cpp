@@ -7,6 +7,7 @@
 #include <random>
 
 #include "mpmx/mpm/shape/ddmp.hpp"
+#include "mpmx/mpm/shape/ddmp_operator.hpp"
 #include "mpmx/mpm/shape/hat.hpp"
 #include "mpmx/mpm/shape/scheme.hpp"
 #include "mpmx/mpm/transfer.hpp"
@@ -45,6 +46,7 @@ TEST_P(EveryScheme, PartitionOfUnityAndZeroGradientSum) {
   ShapeEvaluator eval({GetParam(), 8, true}, g);
   Stencil<1> st;
   eval(g, p, st);
+  st = shape::expanded(st, g);  // DDMP: the gradient in full
   for (std::size_t q = 0; q < p.size(); ++q) {
     double s = 0.0, gs = 0.0, gabs = 0.0;
     for (int k = 0; k < st.width; ++k) {
@@ -141,6 +143,8 @@ TEST(SubPoints, OneSubPointIsPlainDdmp) {
   Stencil<1> a, b;
   ShapeEvaluator({Scheme::ddmp, 1, true}, g)(g, p, a);
   ShapeEvaluator({Scheme::ddmp_subpoints, 1, true}, g)(g, p, b);
+  a = shape::expanded(a, g);
+  b = shape::expanded(b, g);
   for (std::size_t q = 0; q < p.size(); ++q)
     for (int k = 0; k < a.width; ++k) {
       // Same nodes: compare by node index.

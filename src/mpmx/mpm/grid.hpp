@@ -32,6 +32,10 @@ struct Grid {
   // The velocities the velocity gradient reads where the small-mass distribution is on
   // (eq. 7.7, mass_distribution.hpp); empty otherwise.
   std::array<std::vector<double>, Dim> gradient_velocity, gradient_velocity_L;
+  // DDMP's smoothed part on the nodes (shape/ddmp_operator.hpp), [a * Dim + d], empty
+  // unless the scheme is DDMP: T_j = sum_p V_p sigma_p S_j (1 - alpha_p), zero between
+  // steps, and the smoothed velocity gradient H_j = sum_i K_ji v_i.
+  std::array<std::vector<double>, Dim * Dim> smooth_stress, smooth_gradient;
 
   Grid() = default;
   Grid(std::array<double, Dim> lo, std::array<double, Dim> hi, std::array<int, Dim> n)

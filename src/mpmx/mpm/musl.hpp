@@ -13,6 +13,7 @@
 #include "mpmx/mpm/grid.hpp"
 #include "mpmx/mpm/mass_distribution.hpp"
 #include "mpmx/mpm/particles.hpp"
+#include "mpmx/mpm/shape/ddmp_operator.hpp"
 
 namespace mpmx::mpm {
 
@@ -47,6 +48,12 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
   });
   if (small_mass)  // the gradient reads the adjoint of the force distribution (eq. 7.7)
     for (int a = 0; a < Dim; ++a) adjoint_velocity(*small_mass, v[a]);
+  const bool smooth = st.smoothed();
+  if (smooth) {  // DDMP: eq. 7.2's smoothed gradient on the nodes
+    std::array<const double*, Dim> vv;
+    for (int a = 0; a < Dim; ++a) vv[a] = v[a].data();
+    shape::smoothed_gradient(st, vv, 1.0, vv, 0.0, g, threads);
+  }
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t q = 0; q < n; ++q) {
     double L[Dim][Dim] = {};
@@ -54,7 +61,10 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
       const std::size_t e = q * w + k;
       const int i = st.node[e];
       for (int a = 0; a < Dim; ++a)
-        for (int b = 0; b < Dim; ++b) L[a][b] += v[a][i] * st.G[b][e];
+        for (int b = 0; b < Dim; ++b) {
+          L[a][b] += v[a][i] * st.G[b][e];
+          if (smooth) L[a][b] += st.R[e] * g.smooth_gradient[a * Dim + b][i];
+        }
     }
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) p.grad_v[a * Dim + b][q] = L[a][b];

@@ -3,6 +3,8 @@
 // (row-major Dim x Dim), one array each, so loops over particles vectorise.
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace mpmx::mpm {
@@ -50,10 +52,19 @@ struct Particles {
   double density(std::size_t p) const { return mass[p] / volume[p]; }
 };
 
+namespace shape {
+struct DdmpTable;
+}
+
 // Per-particle node weights of the current step: node storage index, shape value
 // S_ip and (modified) gradient G_ip for `width` entries per particle. Entries past a
 // particle's true support carry zero weights, so p2g and g2p are one loop shape for
 // every scheme.
+//
+// DDMP keeps its gradient (eq. 7.2) factored: G holds the sharp part alpha grad S on
+// the hat's nodes and R the weights (1 - alpha) S_j of the smoothed part, which is
+// sum_j R_j K_ji with K the grid's smoothed-gradient operator (shape/ddmp_operator.hpp).
+// The points then see only the hat's 2^d nodes; the smoothing is a pass over the nodes.
 template <int Dim>
 struct Stencil {
   int width = 0;
@@ -61,9 +72,17 @@ struct Stencil {
   std::vector<int> node;                     // [p * width + k]
   std::vector<double> S;                     // [p * width + k]
   std::array<std::vector<double>, Dim> G;    // [d][p * width + k]
+  // DDMP's factored gradient (empty otherwise): R [p * width + k], the operator's
+  // factors along each axis, the nodes the points touch (sorted) and the real nodes
+  // within one of them (where the smoothed force lands).
+  std::vector<double> R;
+  std::shared_ptr<const std::vector<shape::DdmpTable>> smooth;  // one per axis
+  std::vector<std::uint32_t> smooth_nodes, smooth_reach;
+
+  bool smoothed() const { return !R.empty(); }
 
   // Sizes the arrays; zero-fills them unless the caller writes every entry.
-  void reset(std::size_t particles, int w, bool zero = true) {
+  void reset(std::size_t particles, int w, bool zero = true, bool factored = false) {
     width = w;
     const std::size_t n = particles * static_cast<std::size_t>(w);
     if (zero) {
@@ -75,6 +94,9 @@ struct Stencil {
       S.resize(n);
       for (int d = 0; d < Dim; ++d) G[d].resize(n);
     }
+    if (factored) R.assign(n, 0.0);
+    else R.clear();
+    if (!factored) smooth.reset();
   }
 };
 

@@ -8,6 +8,7 @@
 
 #include "mpmx/mpm/grid.hpp"
 #include "mpmx/mpm/particles.hpp"
+#include "mpmx/mpm/shape/ddmp_operator.hpp"
 
 namespace mpmx::mpm {
 
@@ -16,7 +17,7 @@ namespace detail {
 // Kernels with the stencil width as a compile-time constant (W > 0) or read at run
 // time (W == 0), so the common widths unroll.
 // Over the particles list[0 .. count) (all, in order, when list is null).
-template <int Dim, int W>
+template <int Dim, int W, bool Smooth>
 void p2g_kernel(const Particles<Dim>& p, const Stencil<Dim>& st, const std::vector<double>& vol,
                 Grid<Dim>& g, const std::uint32_t* list, std::size_t count) {
   const int w = W > 0 ? W : st.width;
@@ -46,13 +47,17 @@ void p2g_kernel(const Particles<Dim>& p, const Stencil<Dim>& st, const std::vect
         for (int b = 0; b < Dim; ++b) f += sig[a][b] * st.G[b][e];
         g.force[a][i] -= f;
       }
+      if constexpr (Smooth) {  // DDMP: T^d_j = sum_p V_p sigma_p[:, d] R_jp
+        const double R = st.R[e];
+        for (int c = 0; c < Dim * Dim; ++c) g.smooth_stress[c][i] += sig[c / Dim][c % Dim] * R;
+      }
     }
   }
 }
 
 // Returns the sum of the new velocities and positions: finite unless something blew up
 // (its rounding may depend on the threads; it is only tested for finiteness).
-template <int Dim, int W>
+template <int Dim, int W, bool Smooth>
 double g2p_kernel(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool move, double wl,
                   double wn, Particles<Dim>& p, int threads) {
   const int w = W > 0 ? W : st.width;
@@ -77,6 +82,11 @@ double g2p_kernel(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool mo
         vbar[a] += vg * S;
         const double vgrad = wl * gvl[a][i] + wn * gvn[a][i];
         for (int b = 0; b < Dim; ++b) L[a][b] += vgrad * st.G[b][e];
+      }
+      if constexpr (Smooth) {  // DDMP: sum_j R_jp H_j
+        const double R = st.R[e];
+        for (int a = 0; a < Dim; ++a)
+          for (int b = 0; b < Dim; ++b) L[a][b] += R * g.smooth_gradient[a * Dim + b][i];
       }
     }
     for (int a = 0; a < Dim; ++a) {
@@ -103,14 +113,19 @@ void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume,
     std::fill(g.force[d].begin(), g.force[d].end(), 0.0);
   }
   const std::vector<double>& vol = reference_volume ? p.volume0 : p.volume;
+  const bool smooth = st.smoothed();
+  if (smooth)
+    for (auto& t : g.smooth_stress)
+      if (t.size() != g.storage) t.assign(g.storage, 0.0);
   auto kernel = [&](const std::uint32_t* list, std::size_t count) {
+    if (smooth) return detail::p2g_kernel<Dim, 0, true>(p, st, vol, g, list, count);
     switch (st.width) {
-      case 2: return detail::p2g_kernel<Dim, 2>(p, st, vol, g, list, count);
-      case 4: return detail::p2g_kernel<Dim, 4>(p, st, vol, g, list, count);
-      case 5: return detail::p2g_kernel<Dim, 5>(p, st, vol, g, list, count);
-      case 8: return detail::p2g_kernel<Dim, 8>(p, st, vol, g, list, count);
-      case 16: return detail::p2g_kernel<Dim, 16>(p, st, vol, g, list, count);
-      default: return detail::p2g_kernel<Dim, 0>(p, st, vol, g, list, count);
+      case 2: return detail::p2g_kernel<Dim, 2, false>(p, st, vol, g, list, count);
+      case 4: return detail::p2g_kernel<Dim, 4, false>(p, st, vol, g, list, count);
+      case 5: return detail::p2g_kernel<Dim, 5, false>(p, st, vol, g, list, count);
+      case 8: return detail::p2g_kernel<Dim, 8, false>(p, st, vol, g, list, count);
+      case 16: return detail::p2g_kernel<Dim, 16, false>(p, st, vol, g, list, count);
+      default: return detail::p2g_kernel<Dim, 0, false>(p, st, vol, g, list, count);
     }
   };
   if constexpr (Dim == 1) {
@@ -138,6 +153,7 @@ void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume,
       for (std::size_t s = parity; s < slabs; s += 2) kernel(order.data() + start[s], start[s + 1] - start[s]);
     }
   }
+  if (smooth) shape::add_smoothed_force(g, st, threads);  // eq. 7.2's smoothed part
 }
 
 // Steps 9-10 and 7: particle velocity by the nodal velocity change (eq. 3.13), position
@@ -147,16 +163,31 @@ void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume,
 // positions, as for the isothermal gas whose V_p p_p is constant). Returns the sum of
 // the new velocities and positions, for a cheap finiteness check.
 template <int Dim>
-double g2p(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool move, bool midpoint,
+double g2p(Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool move, bool midpoint,
            Particles<Dim>& p, int threads = 1) {
   const double wl = midpoint ? 0.5 : 1.0, wn = midpoint ? 0.5 : 0.0;
+  if (st.smoothed()) {  // eq. 7.2's smoothed gradient on the nodes, of the velocities the gradient reads
+    const bool own = !g.gradient_velocity[0].empty();
+    std::array<const double*, Dim> vl, vn;
+    for (int a = 0; a < Dim; ++a) {
+      vl[a] = (own ? g.gradient_velocity_L : g.velocity_L)[a].data();
+      vn[a] = (own ? g.gradient_velocity : g.velocity)[a].data();
+    }
+    shape::smoothed_gradient(st, vl, wl, vn, wn, g, threads);
+    switch (st.width) {
+      case 2: return detail::g2p_kernel<Dim, 2, true>(g, st, dt, move, wl, wn, p, threads);
+      case 4: return detail::g2p_kernel<Dim, 4, true>(g, st, dt, move, wl, wn, p, threads);
+      case 8: return detail::g2p_kernel<Dim, 8, true>(g, st, dt, move, wl, wn, p, threads);
+      default: return detail::g2p_kernel<Dim, 0, true>(g, st, dt, move, wl, wn, p, threads);
+    }
+  }
   switch (st.width) {
-    case 2: return detail::g2p_kernel<Dim, 2>(g, st, dt, move, wl, wn, p, threads);
-    case 4: return detail::g2p_kernel<Dim, 4>(g, st, dt, move, wl, wn, p, threads);
-    case 5: return detail::g2p_kernel<Dim, 5>(g, st, dt, move, wl, wn, p, threads);
-    case 8: return detail::g2p_kernel<Dim, 8>(g, st, dt, move, wl, wn, p, threads);
-    case 16: return detail::g2p_kernel<Dim, 16>(g, st, dt, move, wl, wn, p, threads);
-    default: return detail::g2p_kernel<Dim, 0>(g, st, dt, move, wl, wn, p, threads);
+    case 2: return detail::g2p_kernel<Dim, 2, false>(g, st, dt, move, wl, wn, p, threads);
+    case 4: return detail::g2p_kernel<Dim, 4, false>(g, st, dt, move, wl, wn, p, threads);
+    case 5: return detail::g2p_kernel<Dim, 5, false>(g, st, dt, move, wl, wn, p, threads);
+    case 8: return detail::g2p_kernel<Dim, 8, false>(g, st, dt, move, wl, wn, p, threads);
+    case 16: return detail::g2p_kernel<Dim, 16, false>(g, st, dt, move, wl, wn, p, threads);
+    default: return detail::g2p_kernel<Dim, 0, false>(g, st, dt, move, wl, wn, p, threads);
   }
 }
 

@@ -19,15 +19,11 @@ struct Axis {
   int first = 0;
   double S[kMaxAxis];   // shape factor
   double G[kMaxAxis];   // its derivative (per unit length)
-  double A[kMaxAxis];   // DDMP: smoothed derivative sum_j S_j D_ji (eq. 3.31)
-  double B[kMaxAxis];   // DDMP: smoothed shape sum_j S_j M_ji / V_j
   double q = 0.0;       // DDMP: 4 f (1 - f), alpha's factor along the axis (eq. 7.3)
 
   void clear(int width) {
     std::fill(S, S + width, 0.0);
     std::fill(G, G + width, 0.0);
-    std::fill(A, A + width, 0.0);
-    std::fill(B, B + width, 0.0);
   }
 };
 
@@ -75,30 +71,17 @@ inline void domain_axis(double xi, double h, int cells, double inv, bool integra
   }
 }
 
-// DDMP at xi: hats and their derivative on nodes c .. c+1, the smoothed derivative and
-// shape on c-1 .. c+2, written at offset `at` (first = c - 1 - at). Past the grid ends
-// the point is clamped.
-inline void ddmp_axis(double xi, int cells, double inv, const DdmpTable& t, int at, Axis& ax, double w = 1.0) {
+// DDMP at xi: the hats of nodes c, c+1 and their derivative, times w, written at offset
+// `at` (first = c - at); alpha's factor along the axis. Past the grid ends the point is
+// clamped. The smoothed part of eq. 7.2 is the grid's operator (ddmp_operator.hpp).
+inline void ddmp_axis(double xi, int cells, double inv, int at, Axis& ax, double w = 1.0) {
   const auto [c, f] = locate(clamp_to_grid(xi, cells), cells);
-  const double Sc = 1.0 - f, Sc1 = f;
-  const std::size_t jc = static_cast<std::size_t>(c + 1), jc1 = jc + 1;  // storage index (one ghost)
+  ax.first = c - at;
   ax.q = 4.0 * f * (1.0 - f);
-  double* S = ax.S + at;
-  double* G = ax.G + at;
-  double* A = ax.A + at;
-  double* B = ax.B + at;
-  S[1] = w * Sc;
-  S[2] = w * Sc1;
-  G[1] = -w * inv;
-  G[2] = w * inv;
-  A[0] = w * (Sc * t.dm[jc]);
-  A[1] = w * (Sc * t.d0[jc] + Sc1 * t.dm[jc1]);
-  A[2] = w * (Sc * t.dp[jc] + Sc1 * t.d0[jc1]);
-  A[3] = w * (Sc1 * t.dp[jc1]);
-  B[0] = w * (Sc * t.bm[jc]);
-  B[1] = w * (Sc * t.b0[jc] + Sc1 * t.bm[jc1]);
-  B[2] = w * (Sc * t.bp[jc] + Sc1 * t.b0[jc1]);
-  B[3] = w * (Sc1 * t.bp[jc1]);
+  ax.S[at] = w * (1.0 - f);
+  ax.S[at + 1] = w * f;
+  ax.G[at] = -w * inv;
+  ax.G[at + 1] = w * inv;
 }
 inline int ddmp_cell(double xi, int cells) { return locate(clamp_to_grid(xi, cells), cells).cell; }
 

@@ -25,6 +25,12 @@ DdmpTable::DdmpTable(int N, double dx) {
     b0[s] = (dx / 3.0) * (has_left + has_right) / V;
     bp[s] = has_right ? (dx / 6.0) / V : 0.0;
   }
+  d3.resize(3 * storage);
+  b3.resize(3 * storage);
+  for (std::size_t s = 0; s < storage; ++s) {
+    d3[3 * s] = dm[s], d3[3 * s + 1] = d0[s], d3[3 * s + 2] = dp[s];
+    b3[3 * s] = bm[s], b3[3 * s + 1] = b0[s], b3[3 * s + 2] = bp[s];
+  }
 }
 
 void add_ddmp_gradient(const Grid<1>& g, const DdmpTable& t, double xi, double w, int first,

@@ -18,6 +18,9 @@ struct DdmpTable {
   // sum_j S_j(x) M_ji / V_j that carries eq. 7.2's smoothed gradient across the other
   // axes of a tensor-product grid (2-D, 3-D).
   std::vector<double> bm, b0, bp;
+  // The same rows interleaved for the grid operator: row[3 s + 1 + o] is the entry of
+  // node s for node s + o, o = -1, 0, 1.
+  std::vector<double> d3, b3;
   // Along one axis of `cells` cells of width dx.
   DdmpTable(int cells, double dx);
   explicit DdmpTable(const Grid<1>& g) : DdmpTable(g.cells[0], g.dx[0]) {}

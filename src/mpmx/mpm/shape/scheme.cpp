@@ -7,6 +7,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/mpm/shape/axis.hpp"
 #include "mpmx/mpm/shape/ddmp.hpp"
+#include "mpmx/mpm/shape/ddmp_operator.hpp"
 
 namespace mpmx::mpm {
 
@@ -40,8 +41,10 @@ std::string scheme_name(Scheme s) { return scheme_info(s).name; }
 
 template <int Dim>
 ShapeEvaluator<Dim>::ShapeEvaluator(SchemeOptions opt, const Grid<Dim>& grid) : opt_(opt) {
-  if (scheme_info(opt_.scheme).ddmp)
-    for (int d = 0; d < Dim; ++d) ddmp_.emplace_back(grid.cells[d], grid.dx[d]);
+  if (scheme_info(opt_.scheme).ddmp) {
+    ddmp_ = std::make_shared<std::vector<shape::DdmpTable>>();
+    for (int d = 0; d < Dim; ++d) ddmp_->emplace_back(grid.cells[d], grid.dx[d]);
+  }
 }
 template <int Dim>
 ShapeEvaluator<Dim>::~ShapeEvaluator() = default;
@@ -104,34 +107,32 @@ void separable(const Axis* ax, const std::array<int, Dim>& W, int width, double*
   }
 }
 
-// Eq. 7.2 at one evaluation point of weight w, its axis factors at offsets `at`:
-// G_d += w (alpha dS_d prod S + (1 - alpha) A_d prod B).
+// Eq. 7.2 at one evaluation point of weight w, factored (particles.hpp, Stencil): on
+// the 2^d hat nodes at box offsets `at`, G_d += w alpha dS_d prod S and R += w (1 - alpha)
+// prod S; the smoothed part is the grid's operator applied to R (ddmp_operator.hpp).
 template <int Dim>
 void add_ddmp(const Axis* ax, const std::array<int, Dim>& at, double w, const std::array<int, Dim>& W,
-              DdmpAlpha form, std::array<double*, Dim> G) {
+              DdmpAlpha form, std::array<double*, Dim> G, double* R) {
   double q[Dim];
   for (int a = 0; a < Dim; ++a) q[a] = ax[a].q;
   const double alpha = form == DdmpAlpha::eq_7_3 ? shape::ddmp_alpha_nd<Dim>(q) : shape::ddmp_alpha_product<Dim>(q);
-  const double beta = 1.0 - alpha;
-  constexpr int n4 = Dim == 1 ? 4 : Dim == 2 ? 16 : 64;
-  for (int k = 0; k < n4; ++k) {
-    std::array<int, Dim> o, cell;
-    int kk = k, flat = 0, stride = 1;
+  const double sharp = w * alpha, smooth = w * (1.0 - alpha);
+  for (int k = 0; k < (1 << Dim); ++k) {
+    std::array<int, Dim> o;
+    int flat = 0, stride = 1;
     for (int a = 0; a < Dim; ++a) {
-      cell[a] = kk % 4;
-      kk /= 4;
-      o[a] = at[a] + cell[a];
+      o[a] = at[a] + (k >> a & 1);
       flat += o[a] * stride;
       stride *= W[a];
     }
+    double s = 1.0;
+    for (int a = 0; a < Dim; ++a) s *= ax[a].S[o[a]];
+    R[flat] += smooth * s;
     for (int d = 0; d < Dim; ++d) {
-      double sharp = ax[d].G[o[d]], smooth = ax[d].A[o[d]];
+      double g = ax[d].G[o[d]];
       for (int a = 0; a < Dim; ++a)
-        if (a != d) {
-          sharp *= ax[a].S[o[a]];
-          smooth *= ax[a].B[o[a]];
-        }
-      G[d][flat] += w * (alpha * sharp + beta * smooth);
+        if (a != d) g *= ax[a].S[o[a]];
+      G[d][flat] += sharp * g;
     }
   }
 }
@@ -166,7 +167,7 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
 
   // Pass 1: the box width along each axis, the widest particle's.
   std::array<int, Dim> W;
-  W.fill(scheme == Scheme::ddmp ? 4 : 2);
+  W.fill(2);
   if (scheme == Scheme::mpm || scheme == Scheme::ddmp) {
     for (std::size_t q = 0; q < n; ++q) cell_coords(g, p, q);
   } else {
@@ -183,8 +184,8 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
         const auto at = place(q, xi, c, corners);
         for (int d = 0; d < Dim; ++d) {
           const int cell = shape::ddmp_cell(at[d], g.cells[d]);
-          lo[d] = std::min(lo[d], corners ? cell : cell - 1);
-          hi[d] = std::max(hi[d], corners ? cell + 1 : cell + 2);
+          lo[d] = std::min(lo[d], cell);
+          hi[d] = std::max(hi[d], cell + 1);
         }
       }
       for (int d = 0; d < Dim; ++d) W[d] = std::max(W[d], hi[d] - lo[d] + 1);
@@ -195,8 +196,10 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
     shape::require_width(W[d]);
     width *= W[d];
   }
-  st.reset(n, width, scheme != Scheme::mpm);
+  const bool factored = scheme_info(scheme).ddmp;
+  st.reset(n, width, scheme != Scheme::mpm, factored);
   st.box = W;
+  if (factored) st.smooth = ddmp_;
 
   // Pass 2: every particle's factors and their products, each particle on its own.
 #pragma omp parallel for schedule(static) num_threads(threads_)
@@ -280,36 +283,29 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
             }
         }
         break;
-      case Scheme::ddmp:
-        for (int d = 0; d < Dim; ++d) {
-          ax[d].clear(4);
-          shape::ddmp_axis(xi[d], g.cells[d], g.inv_dx[d], ddmp_[d], 0, ax[d]);
-          ax[d].first = shape::ddmp_cell(xi[d], g.cells[d]) - 1;
-          S = &st.S[e];
-        }
+      case Scheme::ddmp: {
+        for (int d = 0; d < Dim; ++d) shape::ddmp_axis(xi[d], g.cells[d], g.inv_dx[d], 0, ax[d]);
         for (int k = 0; k < width; ++k) {
-          const auto o = offsets<Dim>(k, W);
           double s = 1.0;
-          for (int a = 0; a < Dim; ++a) s *= ax[a].S[o[a]];
+          for (int a = 0; a < Dim; ++a) s *= ax[a].S[k >> a & 1];
           S[k] = s;
         }
-        add_ddmp<Dim>(ax, std::array<int, Dim>{}, 1.0, W, opt_.alpha, G);
+        add_ddmp<Dim>(ax, std::array<int, Dim>{}, 1.0, W, opt_.alpha, G, &st.R[e]);
         break;
+      }
       case Scheme::ddmp_subpoints: {
-        // The box: the sub-points' cells widened by one node below and two above.
+        // The box: the cells of the sub-points (the particle's own lies among them).
         std::array<int, Dim> lo;
         lo.fill(1 << 30);
         for (int c = 0; c < points; ++c) {
           const auto at = place(q, xi, c, false);
-          for (int d = 0; d < Dim; ++d) lo[d] = std::min(lo[d], shape::ddmp_cell(at[d], g.cells[d]) - 1);
+          for (int d = 0; d < Dim; ++d) lo[d] = std::min(lo[d], shape::ddmp_cell(at[d], g.cells[d]));
         }
         // S: the hat at the particle itself.
         Axis px[Dim];
         for (int d = 0; d < Dim; ++d) {
           px[d].clear(W[d]);
-          const int c = shape::ddmp_cell(xi[d], g.cells[d]);
-          shape::ddmp_axis(xi[d], g.cells[d], g.inv_dx[d], ddmp_[d], c - 1 - lo[d], px[d]);
-          px[d].first = lo[d];
+          shape::ddmp_axis(xi[d], g.cells[d], g.inv_dx[d], shape::ddmp_cell(xi[d], g.cells[d]) - lo[d], px[d]);
         }
         for (int k = 0; k < width; ++k) {
           const auto o = offsets<Dim>(k, W);
@@ -317,17 +313,16 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
           for (int a = 0; a < Dim; ++a) s *= px[a].S[o[a]];
           S[k] = s;
         }
-        // G: the volume-weighted mean of eq. 7.2 over the sub-points (eqs. 4.5-4.6).
+        // G, R: the volume-weighted mean of eq. 7.2 over the sub-points (eqs. 4.5-4.6).
         const double w = 1.0 / points;
         for (int c = 0; c < points; ++c) {
           const auto at = place(q, xi, c, false);
           std::array<int, Dim> off;
           for (int d = 0; d < Dim; ++d) {
-            ax[d].clear(W[d]);
-            off[d] = shape::ddmp_cell(at[d], g.cells[d]) - 1 - lo[d];
-            shape::ddmp_axis(at[d], g.cells[d], g.inv_dx[d], ddmp_[d], off[d], ax[d]);
+            off[d] = shape::ddmp_cell(at[d], g.cells[d]) - lo[d];
+            shape::ddmp_axis(at[d], g.cells[d], g.inv_dx[d], off[d], ax[d]);
           }
-          add_ddmp<Dim>(ax, off, w, W, opt_.alpha, G);
+          add_ddmp<Dim>(ax, off, w, W, opt_.alpha, G, &st.R[e]);
         }
         for (int d = 0; d < Dim; ++d) ax[d].first = lo[d];
         break;
@@ -335,6 +330,7 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
     }
     set_nodes<Dim>(g, ax, W, width, &st.node[e]);
   }
+  if (factored) shape::list_smoothing_nodes(g, st, mark_);
 }
 
 template class ShapeEvaluator<1>;

@@ -5,6 +5,7 @@
 // deformed domains and the sub-points' lattice are placed by the particle's domain
 // vectors. 1-D is the case of one factor.
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -65,7 +66,8 @@ class ShapeEvaluator {
  private:
   SchemeOptions opt_;
   int threads_ = 1;
-  std::vector<shape::DdmpTable> ddmp_;  // one per axis (DDMP schemes)
+  std::shared_ptr<std::vector<shape::DdmpTable>> ddmp_;  // one per axis (DDMP schemes), shared with the stencils
+  mutable std::vector<std::uint8_t> mark_;  // scratch: the nodes DDMP's points touch
 };
 
 template <class G>

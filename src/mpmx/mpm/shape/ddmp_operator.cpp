@@ -1,0 +1,219 @@
+#include "mpmx/mpm/shape/ddmp_operator.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "mpmx/mpm/shape/ddmp.hpp"
+
+namespace mpmx::mpm::shape {
+
+namespace {
+
+constexpr int pow3(int d) { return d == 0 ? 1 : 3 * pow3(d - 1); }
+
+// The 3^d neighbour offsets o (each -1, 0, 1 per axis, x fastest) and their storage steps.
+template <int Dim>
+struct Neighbourhood {
+  static constexpr int n = pow3(Dim);
+  std::array<std::array<int, Dim>, n> o;
+  std::array<std::ptrdiff_t, n> step;
+  explicit Neighbourhood(const Grid<Dim>& g) {
+    for (int c = 0; c < n; ++c) {
+      int cc = c;
+      step[c] = 0;
+      for (int a = 0; a < Dim; ++a) {
+        o[c][a] = cc % 3 - 1;
+        cc /= 3;
+        step[c] += static_cast<std::ptrdiff_t>(o[c][a]) * g.stride[a];
+      }
+    }
+  }
+};
+
+// Storage index along each axis of node storage index i.
+template <int Dim>
+std::array<int, Dim> axis_indices(const Grid<Dim>& g, std::size_t i) {
+  std::array<int, Dim> s;
+  for (int a = 0; a < Dim; ++a)
+    s[a] = static_cast<int>(i / static_cast<std::size_t>(g.stride[a]) %
+                            static_cast<std::size_t>(g.cells[a] + 1 + 2 * Grid<Dim>::ghost));
+  return s;
+}
+
+// K^d_{j, j+o} for every d, from node j's axis indices sj: D along d, M / V across.
+template <int Dim>
+void row_entries(const Stencil<Dim>& st, const std::array<int, Dim>& sj, const std::array<int, Dim>& o,
+                 double* K) {
+  double kd[Dim], kb[Dim];
+  for (int a = 0; a < Dim; ++a) {
+    const std::size_t r = 3 * static_cast<std::size_t>(sj[a]) + static_cast<std::size_t>(o[a] + 1);
+    kd[a] = (*st.smooth)[a].d3[r];
+    kb[a] = (*st.smooth)[a].b3[r];
+  }
+  for (int d = 0; d < Dim; ++d) {
+    double k = kd[d];
+    for (int a = 0; a < Dim; ++a)
+      if (a != d) k *= kb[a];
+    K[d] = k;
+  }
+}
+
+}  // namespace
+
+template <int Dim>
+void list_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std::uint8_t>& mark) {
+  mark.assign(g.storage, 0);
+  for (const int i : st.node) mark[static_cast<std::size_t>(i)] = 1;
+  st.smooth_nodes.clear();
+  for (std::size_t i = 0; i < g.storage; ++i)
+    if (mark[i]) st.smooth_nodes.push_back(static_cast<std::uint32_t>(i));
+  const Neighbourhood<Dim> nb(g);
+  for (const std::uint32_t j : st.smooth_nodes) {
+    const auto s = axis_indices(g, j);
+    for (int c = 0; c < nb.n; ++c) {
+      bool real = true;
+      for (int a = 0; a < Dim; ++a) {
+        const int t = s[a] + nb.o[c][a] - Grid<Dim>::ghost;
+        real = real && t >= 0 && t <= g.cells[a];
+      }
+      if (real) mark[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(j) + nb.step[c])] |= 2;
+    }
+  }
+  st.smooth_reach.clear();
+  for (std::size_t i = 0; i < g.storage; ++i)
+    if (mark[i] & 2) st.smooth_reach.push_back(static_cast<std::uint32_t>(i));
+}
+
+template <int Dim>
+void add_smoothed_force(Grid<Dim>& g, const Stencil<Dim>& st, int threads) {
+  const Neighbourhood<Dim> nb(g);
+  const auto& T = g.smooth_stress;
+  const auto& reach = st.smooth_reach;
+  // Each node gathers from its neighbours j = i - o the entry K^d_{j, i}: one writer per
+  // node, the same sum in the same order for any thread count.
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t k = 0; k < reach.size(); ++k) {
+    const std::size_t i = reach[k];
+    const auto si = axis_indices(g, i);
+    double f[Dim] = {};
+    for (int c = 0; c < nb.n; ++c) {
+      std::array<int, Dim> sj, o;
+      for (int a = 0; a < Dim; ++a) {
+        o[a] = nb.o[c][a];
+        sj[a] = si[a] - o[a];
+      }
+      const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[c]);
+      double K[Dim];
+      row_entries<Dim>(st, sj, o, K);
+      for (int a = 0; a < Dim; ++a)
+        for (int d = 0; d < Dim; ++d) f[a] += T[a * Dim + d][j] * K[d];
+    }
+    for (int a = 0; a < Dim; ++a) g.force[a][i] -= f[a];
+  }
+  const auto& nodes = st.smooth_nodes;
+  for (int c = 0; c < Dim * Dim; ++c) {
+    double* t = g.smooth_stress[c].data();
+    for (const std::uint32_t j : nodes) t[j] = 0.0;
+  }
+}
+
+template <int Dim>
+void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::array<const double*, Dim>>& v1,
+                       double w1, const std::type_identity_t<std::array<const double*, Dim>>& v2, double w2,
+                       Grid<Dim>& g, int threads) {
+  for (auto& h : g.smooth_gradient)
+    if (h.size() != g.storage) h.assign(g.storage, 0.0);
+  const Neighbourhood<Dim> nb(g);
+  const auto& nodes = st.smooth_nodes;
+  const std::size_t last = g.storage;
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const std::size_t j = nodes[k];
+    const auto sj = axis_indices(g, j);
+    double H[Dim][Dim] = {};
+    for (int c = 0; c < nb.n; ++c) {
+      const std::ptrdiff_t i = static_cast<std::ptrdiff_t>(j) + nb.step[c];
+      if (i < 0 || static_cast<std::size_t>(i) >= last) continue;  // a clamped ghost's row is zero
+      double K[Dim];
+      row_entries<Dim>(st, sj, nb.o[c], K);
+      for (int a = 0; a < Dim; ++a) {
+        const double v = w1 * v1[a][i] + w2 * v2[a][i];
+        for (int b = 0; b < Dim; ++b) H[a][b] += K[b] * v;
+      }
+    }
+    for (int a = 0; a < Dim; ++a)
+      for (int b = 0; b < Dim; ++b) g.smooth_gradient[a * Dim + b][j] = H[a][b];
+  }
+}
+
+template <int Dim>
+Stencil<Dim> expanded(const Stencil<Dim>& st, const Grid<Dim>& g) {
+  if (!st.smoothed()) return st;
+  const std::size_t n = st.width > 0 ? st.node.size() / static_cast<std::size_t>(st.width) : 0;
+  std::array<int, Dim> W, X;
+  int wide = 1;
+  for (int a = 0; a < Dim; ++a) {
+    W[a] = Dim == 1 ? st.width : st.box[a];
+    X[a] = W[a] + 2;
+    wide *= X[a];
+  }
+  Stencil<Dim> out;
+  out.reset(n, wide);
+  out.box = X;
+  const Neighbourhood<Dim> nb(g);
+  for (std::size_t q = 0; q < n; ++q) {
+    const std::size_t e0 = q * static_cast<std::size_t>(st.width), x0 = q * static_cast<std::size_t>(wide);
+    const auto first = axis_indices(g, static_cast<std::size_t>(st.node[e0]));  // a box never starts clamped
+    for (int k = 0; k < wide; ++k) {  // the widened box's nodes
+      std::array<int, Dim> idx;
+      int kk = k;
+      for (int a = 0; a < Dim; ++a) {
+        idx[a] = first[a] - Grid<Dim>::ghost - 1 + kk % X[a];
+        kk /= X[a];
+      }
+      out.node[x0 + k] = static_cast<int>(g.index_clamped(idx));
+    }
+    for (int k = 0; k < st.width; ++k) {
+      const std::size_t e = e0 + k;
+      std::array<int, Dim> ok, sj;
+      int kk = k, at = 0, stride = 1;
+      bool inside = true;
+      for (int a = 0; a < Dim; ++a) {
+        ok[a] = kk % W[a];
+        kk /= W[a];
+        at += (ok[a] + 1) * stride;
+        stride *= X[a];
+        sj[a] = first[a] + ok[a];
+        inside = inside && sj[a] <= g.cells[a] + 2 * Grid<Dim>::ghost;
+      }
+      out.S[x0 + at] += st.S[e];
+      for (int d = 0; d < Dim; ++d) out.G[d][x0 + at] += st.G[d][e];
+      if (!inside || st.R[e] == 0.0) continue;
+      for (int c = 0; c < nb.n; ++c) {
+        double K[Dim];
+        row_entries<Dim>(st, sj, nb.o[c], K);
+        int to = 0;
+        stride = 1;
+        for (int a = 0; a < Dim; ++a) {
+          to += (ok[a] + 1 + nb.o[c][a]) * stride;
+          stride *= X[a];
+        }
+        for (int d = 0; d < Dim; ++d) out.G[d][x0 + to] += st.R[e] * K[d];
+      }
+    }
+  }
+  return out;
+}
+
+#define MPMX_DDMP_OPERATOR(D)                                                                                  \
+  template void list_smoothing_nodes<D>(const Grid<D>&, Stencil<D>&, std::vector<std::uint8_t>&);             \
+  template void add_smoothed_force<D>(Grid<D>&, const Stencil<D>&, int);                                       \
+  template void smoothed_gradient<D>(const Stencil<D>&, const std::array<const double*, D>&, double,           \
+                                     const std::array<const double*, D>&, double, Grid<D>&, int);              \
+  template Stencil<D> expanded<D>(const Stencil<D>&, const Grid<D>&);
+MPMX_DDMP_OPERATOR(1)
+MPMX_DDMP_OPERATOR(2)
+MPMX_DDMP_OPERATOR(3)
+#undef MPMX_DDMP_OPERATOR
+
+}  // namespace mpmx::mpm::shape
