@@ -1,5 +1,7 @@
 #include "mpmx/mpm/mass_distribution.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace mpmx::mpm {
@@ -24,29 +26,66 @@ std::vector<std::ptrdiff_t> neighbourhood(const Grid<Dim>& g) {
   return off;
 }
 
+// Lines of real nodes along x: the storage index of line l's first node.
+template <int Dim>
+std::size_t lines(const Grid<Dim>& g) {
+  std::size_t n = 1;
+  for (int d = 1; d < Dim; ++d) n *= static_cast<std::size_t>(g.cells[d] + 1);
+  return n;
+}
+template <int Dim>
+std::size_t line_start(const Grid<Dim>& g, std::size_t l) {
+  std::array<int, Dim> idx{};
+  for (int d = 1; d < Dim; ++d) {
+    idx[d] = static_cast<int>(l % static_cast<std::size_t>(g.cells[d] + 1));
+    l /= static_cast<std::size_t>(g.cells[d] + 1);
+  }
+  return g.index(idx);
+}
+
 // The map of one stage: every source node l (where `source(l)`) with the nodes of mass
 // in its 3^d neighbourhood (itself when `self`) and weights sqrt(m_i) / sum sqrt(m_j).
-// A source with no mass near keeps what it has (no entry).
+// A source with no mass near keeps what it has (no entry). Runs of lines are built
+// apart and joined in order: the map of one pass over the nodes, x fastest.
 template <int Dim, class Source>
 void build(const Grid<Dim>& g, const std::vector<std::ptrdiff_t>& off, Source source, bool self,
-           SmallMassMap& map) {
-  map.clear();
-  g.for_each_node([&](std::size_t l, const std::array<int, Dim>&) {
-    if (!source(l)) return;
-    const std::uint32_t first = static_cast<std::uint32_t>(map.node.size());
-    double sum = 0.0;
-    for (const std::ptrdiff_t o : off) {
-      const std::size_t i = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(l) + o);
-      if ((o == 0 && !self) || !(g.mass[i] > 0.0)) continue;
-      map.node.push_back(static_cast<std::uint32_t>(i));
-      map.weight.push_back(std::sqrt(g.mass[i]));
-      sum += map.weight.back();
+           SmallMassMap& map, std::vector<SmallMassMap>& parts, int threads) {
+  const std::size_t L = lines(g);
+  const std::size_t P = std::min<std::size_t>(L, static_cast<std::size_t>(4 * threads));
+  parts.resize(P);
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
+  for (std::size_t k = 0; k < P; ++k) {
+    SmallMassMap& part = parts[k];
+    part.clear();
+    for (std::size_t l = L * k / P; l < L * (k + 1) / P; ++l) {
+      const std::size_t i0 = line_start(g, l);
+      for (int x = 0; x <= g.cells[0]; ++x) {
+        const std::size_t src = i0 + static_cast<std::size_t>(x);
+        if (!source(src)) continue;
+        const std::uint32_t first = static_cast<std::uint32_t>(part.node.size());
+        double sum = 0.0;
+        for (const std::ptrdiff_t o : off) {
+          const std::size_t i = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(src) + o);
+          if ((o == 0 && !self) || !(g.mass[i] > 0.0)) continue;
+          part.node.push_back(static_cast<std::uint32_t>(i));
+          part.weight.push_back(std::sqrt(g.mass[i]));
+          sum += part.weight.back();
+        }
+        if (part.node.size() == first) continue;
+        for (std::size_t e = first; e < part.node.size(); ++e) part.weight[e] /= sum;
+        part.source.push_back(static_cast<std::uint32_t>(src));
+        part.start.push_back(static_cast<std::uint32_t>(part.node.size()));
+      }
     }
-    if (map.node.size() == first) return;
-    for (std::size_t k = first; k < map.node.size(); ++k) map.weight[k] /= sum;
-    map.source.push_back(static_cast<std::uint32_t>(l));
-    map.start.push_back(static_cast<std::uint32_t>(map.node.size()));
-  });
+  }
+  map.clear();
+  for (const SmallMassMap& part : parts) {
+    const std::uint32_t base = static_cast<std::uint32_t>(map.node.size());
+    map.source.insert(map.source.end(), part.source.begin(), part.source.end());
+    for (std::size_t s = 1; s < part.start.size(); ++s) map.start.push_back(base + part.start[s]);
+    map.node.insert(map.node.end(), part.node.begin(), part.node.end());
+    map.weight.insert(map.weight.end(), part.weight.begin(), part.weight.end());
+  }
 }
 
 // f <- A f: each source hands its value (read before the stage) to its neighbours.
@@ -61,27 +100,48 @@ void scatter(const SmallMassMap& map, std::vector<double>& f) {
 }
 
 // v <- A^T v: each source takes the weighted mean of its neighbours (read before the stage).
-void gather(const SmallMassMap& map, std::vector<double>& v) {
+void gather(const SmallMassMap& map, std::vector<double>& v, int threads) {
   std::vector<double> mean(map.source.size(), 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t s = 0; s < map.source.size(); ++s)
     for (std::uint32_t k = map.start[s]; k < map.start[s + 1]; ++k) mean[s] += map.weight[k] * v[map.node[k]];
   for (std::size_t s = 0; s < map.source.size(); ++s) v[map.source[s]] = mean[s];
 }
 
+// near = the nodes within one node of a node with mass (3^d box), by a dilation along
+// each axis in turn. Ghost nodes carry no mass, so a step that wraps onto a neighbouring
+// line's ghost reads a zero.
+template <int Dim>
+void mark_near(const Grid<Dim>& g, SmallMassMaps& maps, int threads) {
+  const std::size_t n = g.storage;
+  maps.near.resize(n);
+  maps.spread.resize(n);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t i = 0; i < n; ++i) maps.spread[i] = g.mass[i] > 0.0;
+  std::vector<char>* in = &maps.spread;
+  std::vector<char>* out = &maps.near;
+  for (int d = 0; d < Dim; ++d) {
+    const std::size_t s = static_cast<std::size_t>(g.stride[d]);
+    const char* a = in->data();
+    char* b = out->data();
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (std::size_t i = 0; i < n; ++i) b[i] = a[i] | (i >= s ? a[i - s] : 0) | (i + s < n ? a[i + s] : 0);
+    std::swap(in, out);
+  }
+  if (in != &maps.near) maps.near.swap(maps.spread);
+}
+
 }  // namespace
 
 template <int Dim>
-void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& maps) {
+void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& maps, int threads) {
   const auto off = neighbourhood(g);
-  // C0's sources: the empty nodes next to a node with mass, marked from the latter (most
-  // of a grid is empty and far from the material).
-  maps.near.assign(g.storage, 0);
-  g.for_each_node([&](std::size_t i, const std::array<int, Dim>&) {
-    if (g.mass[i] > 0.0)
-      for (const std::ptrdiff_t o : off) maps.near[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + o)] = 1;
-  });
-  build<Dim>(g, off, [&](std::size_t l) { return maps.near[l] && !(g.mass[l] > 0.0); }, false, maps.c0);  // eq. 7.4
-  build<Dim>(g, off, [&](std::size_t l) { return g.mass[l] > 0.0 && g.mass[l] <= m_eps; }, true, maps.c1);  // eq. 7.5
+  // C0's sources: the empty nodes next to a node with mass.
+  mark_near(g, maps, threads);
+  build<Dim>(g, off, [&](std::size_t l) { return maps.near[l] && !(g.mass[l] > 0.0); }, false, maps.c0, maps.parts,
+             threads);  // eq. 7.4
+  build<Dim>(g, off, [&](std::size_t l) { return g.mass[l] > 0.0 && g.mass[l] <= m_eps; }, true, maps.c1,
+             maps.parts, threads);  // eq. 7.5
   for (int a = 0; a < Dim; ++a) {
     scatter(maps.c0, g.force[a]);
     scatter(maps.c1, g.force[a]);
@@ -89,23 +149,29 @@ void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& map
 }
 
 template <int Dim>
-void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps) {
-  g.gradient_velocity = g.velocity;
-  g.gradient_velocity_L = g.velocity_L;
+void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps, int threads) {
   for (auto* v : {&g.gradient_velocity, &g.gradient_velocity_L})
-    for (int a = 0; a < Dim; ++a) adjoint_velocity(maps, (*v)[a]);
+    for (auto& c : *v) c.resize(g.storage);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t i = 0; i < g.storage; ++i)
+    for (int a = 0; a < Dim; ++a) {
+      g.gradient_velocity[a][i] = g.velocity[a][i];
+      g.gradient_velocity_L[a][i] = g.velocity_L[a][i];
+    }
+  for (auto* v : {&g.gradient_velocity, &g.gradient_velocity_L})
+    for (int a = 0; a < Dim; ++a) adjoint_velocity(maps, (*v)[a], threads);
 }
 
-void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v) {
-  gather(maps.c1, v);  // A1^T
-  gather(maps.c0, v);  // A0^T
+void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v, int threads) {
+  gather(maps.c1, v, threads);  // A1^T
+  gather(maps.c0, v, threads);  // A0^T
 }
 
-template void distribute_small_mass_forces<1>(Grid<1>&, double, SmallMassMaps&);
-template void distribute_small_mass_forces<2>(Grid<2>&, double, SmallMassMaps&);
-template void distribute_small_mass_forces<3>(Grid<3>&, double, SmallMassMaps&);
-template void gradient_velocities<1>(Grid<1>&, const SmallMassMaps&);
-template void gradient_velocities<2>(Grid<2>&, const SmallMassMaps&);
-template void gradient_velocities<3>(Grid<3>&, const SmallMassMaps&);
+template void distribute_small_mass_forces<1>(Grid<1>&, double, SmallMassMaps&, int);
+template void distribute_small_mass_forces<2>(Grid<2>&, double, SmallMassMaps&, int);
+template void distribute_small_mass_forces<3>(Grid<3>&, double, SmallMassMaps&, int);
+template void gradient_velocities<1>(Grid<1>&, const SmallMassMaps&, int);
+template void gradient_velocities<2>(Grid<2>&, const SmallMassMaps&, int);
+template void gradient_velocities<3>(Grid<3>&, const SmallMassMaps&, int);
 
 }  // namespace mpmx::mpm

@@ -30,19 +30,21 @@ struct SmallMassMap {
 };
 struct SmallMassMaps {
   SmallMassMap c0, c1;  // eqs. 7.4 and 7.5, built from this step's nodal masses
-  std::vector<char> near;  // nodes next to one with mass
+  std::vector<char> near, spread;  // nodes next to one with mass; scratch of the dilation
+  std::vector<SmallMassMap> parts;  // scratch: the maps of runs of node lines, built apart
 };
 
-// Builds the maps from the nodal masses, then forces f <- A1 A0 f.
+// Builds the maps from the nodal masses, then forces f <- A1 A0 f. Threads over runs of
+// node lines, whose maps are joined in line order: the same maps for any count.
 template <int Dim>
-void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& maps);
+void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& maps, int threads = 1);
 
 // After the solve: Grid::gradient_velocity and gradient_velocity_L <- A0^T A1^T of
 // velocity and velocity_L.
 template <int Dim>
-void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps);
+void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps, int threads = 1);
 
 // v <- A0^T A1^T v for one nodal velocity component (what a gradient reads).
-void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v);
+void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v, int threads = 1);
 
 }  // namespace mpmx::mpm

@@ -94,8 +94,9 @@ struct Stencil {
       S.resize(n);
       for (int d = 0; d < Dim; ++d) G[d].resize(n);
     }
-    if (factored) R.assign(n, 0.0);
-    else R.clear();
+    if (!factored) R.clear();
+    else if (zero) R.assign(n, 0.0);
+    else R.resize(n);
     if (!factored) smooth.reset();
   }
 };

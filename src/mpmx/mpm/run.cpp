@@ -57,10 +57,9 @@ template <int Dim>
 Sums sums(const State<Dim>& s) {
   const auto& p = s.particles;
   const auto view = points(p);
-  Sums r;
   // 1-D keeps ADMPM's stored energy of the elastic bar (eq. 8.26) and no other.
   const bool elastic_1d = Dim == 1 && typeid(*s.material) == typeid(material::LinearElastic<1>);
-  for (std::size_t q = 0; q < p.size(); ++q) {
+  auto add = [&](Sums& r, std::size_t q) {
     double v2 = 0.0;
     for (int a = 0; a < Dim; ++a) {
       r.momentum[a] += p.mass[q] * p.v[a][q];
@@ -77,6 +76,23 @@ Sums sums(const State<Dim>& s) {
       r.internal += s.material->stored_energy(view, q);
     }
     r.mass += p.mass[q];
+  };
+  Sums r;
+  const std::size_t n = p.size();
+  if constexpr (Dim == 1) {
+    for (std::size_t q = 0; q < n; ++q) add(r, q);
+  } else {
+    // Blocks of a fixed size on the threads, added in block order: the same sums for
+    // any thread count.
+    constexpr std::size_t kBlock = 2048;
+    std::vector<Sums> part((n + kBlock - 1) / kBlock);
+#pragma omp parallel for schedule(static) num_threads(s.threads) if (s.threads > 1)
+    for (std::size_t b = 0; b < part.size(); ++b)
+      for (std::size_t q = b * kBlock; q < std::min(n, (b + 1) * kBlock); ++q) add(part[b], q);
+    for (const Sums& b : part) {
+      r.kinetic += b.kinetic, r.abs_momentum += b.abs_momentum, r.internal += b.internal, r.mass += b.mass;
+      for (int a = 0; a < Dim; ++a) r.momentum[a] += b.momentum[a];
+    }
   }
   return r;
 }

@@ -53,53 +53,98 @@ void solve_1d(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& ta
 }  // namespace
 
 template <int Dim>
-void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies& tally) {
+void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies& tally, int threads) {
   if constexpr (Dim == 1) {
     solve_1d(g, bc, t, dt, tally);
   } else {
+    // Over lines of nodes along x, taken by threads; each line's sums kept apart and added
+    // in line order, so the tallies do not depend on the thread count.
+    std::size_t lines = 1;
+    for (int d = 1; d < Dim; ++d) lines *= static_cast<std::size_t>(g.cells[d] + 1);
+    const int nx = g.cells[0] + 1;
+    auto line_start = [&](std::size_t l, std::array<int, Dim>& idx) {
+      idx[0] = 0;
+      for (int d = 1; d < Dim; ++d) {
+        idx[d] = static_cast<int>(l % static_cast<std::size_t>(g.cells[d] + 1));
+        l /= static_cast<std::size_t>(g.cells[d] + 1);
+      }
+      return g.index(idx);
+    };
+    constexpr int kSums = 1 + 2 * Dim;  // mass, force sum and |force| per component
+    std::vector<double> sums(lines * kSums, 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (std::size_t l = 0; l < lines; ++l) {
+      std::array<int, Dim> idx;
+      const std::size_t i0 = line_start(l, idx);
+      double* sum = &sums[l * kSums];
+      for (int x = 0; x < nx; ++x) {
+        const std::size_t i = i0 + static_cast<std::size_t>(x);
+        sum[0] += g.mass[i];
+        for (int a = 0; a < Dim; ++a) {
+          sum[1 + a] += g.force[a][i];
+          sum[1 + Dim + a] += std::abs(g.force[a][i]);
+        }
+      }
+    }
     double mass_sum = 0.0;
     std::array<double, Dim> force_sum{}, force_abs{};
+    for (std::size_t l = 0; l < lines; ++l) {
+      mass_sum += sums[l * kSums];
+      for (int a = 0; a < Dim; ++a) {
+        force_sum[a] += sums[l * kSums + 1 + a];
+        force_abs[a] += sums[l * kSums + 1 + Dim + a];
+      }
+    }
     std::size_t nodes = 1;
     for (int d = 0; d < Dim; ++d) nodes *= static_cast<std::size_t>(g.cells[d] + 1);
-    g.for_each_node([&](std::size_t i, const std::array<int, Dim>&) {
-      mass_sum += g.mass[i];
-      for (int a = 0; a < Dim; ++a) {
-        force_sum[a] += g.force[a][i];
-        force_abs[a] += std::abs(g.force[a][i]);
-      }
-    });
     const double tiny = 1e-14 * mass_sum / static_cast<double>(nodes);
-    g.for_each_node([&](std::size_t i, const std::array<int, Dim>& idx) {
-      bool on_face = false;  // most nodes are inside: no face loop for them
-      for (int d = 0; d < Dim; ++d) on_face = on_face || idx[d] == 0 || idx[d] == g.cells[d];
-      const double m = g.mass[i];
-      const bool has = m > tiny;
-      const double r = 1.0 / (has ? m : 1.0);
-      for (int a = 0; a < Dim; ++a) {
-        const double vi = g.momentum[a][i] * r;
-        double v = has ? vi : 0.0, vL = has ? vi + dt * g.force[a][i] * r : 0.0;
-        // A node on a face with a condition on component a; at edges and corners the
-        // first face that holds the component sets it.
-        for (int f = 0; on_face && f < 2 * Dim; ++f) {
-          const int axis = f / 2;
-          const bool on = (f % 2 == 0) ? idx[axis] == 0 : idx[axis] == g.cells[axis];
-          const BoundarySide& side = bc.face[f];
-          if (!on || !side.holds(a, axis)) continue;
-          const double vn = side.velocity(t, a), vl = side.velocity(t + dt, a);
-          // What the face adds to the material's momentum: m (v^L - v^n) - dt f.
-          const double added = m * (vl - vn) - dt * g.force[a][i];
-          if (has) {
-            tally.boundary_impulse[a] += added;
-            tally.boundary_work += added * 0.5 * (vl + vn);
+    // What the faces add, per line: the impulse per component and the work.
+    constexpr int kFace = Dim + 1;
+    std::vector<double> added_by_faces(lines * kFace, 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (std::size_t l = 0; l < lines; ++l) {
+      std::array<int, Dim> idx;
+      const std::size_t i0 = line_start(l, idx);
+      bool line_on_face = false;  // most lines are inside: no face loop for their inner nodes
+      for (int d = 1; d < Dim; ++d) line_on_face = line_on_face || idx[d] == 0 || idx[d] == g.cells[d];
+      double* face_sum = &added_by_faces[l * kFace];
+      for (int x = 0; x < nx; ++x) {
+        idx[0] = x;
+        const std::size_t i = i0 + static_cast<std::size_t>(x);
+        const bool on_face = line_on_face || x == 0 || x == g.cells[0];
+        const double m = g.mass[i];
+        const bool has = m > tiny;
+        const double r = 1.0 / (has ? m : 1.0);
+        for (int a = 0; a < Dim; ++a) {
+          const double vi = g.momentum[a][i] * r;
+          double v = has ? vi : 0.0, vL = has ? vi + dt * g.force[a][i] * r : 0.0;
+          // A node on a face with a condition on component a; at edges and corners the
+          // first face that holds the component sets it.
+          for (int f = 0; on_face && f < 2 * Dim; ++f) {
+            const int axis = f / 2;
+            const bool on = (f % 2 == 0) ? idx[axis] == 0 : idx[axis] == g.cells[axis];
+            const BoundarySide& side = bc.face[f];
+            if (!on || !side.holds(a, axis)) continue;
+            const double vn = side.velocity(t, a), vl = side.velocity(t + dt, a);
+            // What the face adds to the material's momentum: m (v^L - v^n) - dt f.
+            const double added = m * (vl - vn) - dt * g.force[a][i];
+            if (has) {
+              face_sum[a] += added;
+              face_sum[Dim] += added * 0.5 * (vl + vn);
+            }
+            v = vn;
+            vL = vl;
+            break;
           }
-          v = vn;
-          vL = vl;
-          break;
+          g.velocity[a][i] = v;
+          g.velocity_L[a][i] = vL;
         }
-        g.velocity[a][i] = v;
-        g.velocity_L[a][i] = vL;
       }
-    });
+    }
+    for (std::size_t l = 0; l < lines; ++l) {
+      for (int a = 0; a < Dim; ++a) tally.boundary_impulse[a] += added_by_faces[l * kFace + a];
+      tally.boundary_work += added_by_faces[l * kFace + Dim];
+    }
     double fs = 0.0, fa = 0.0;
     for (int a = 0; a < Dim; ++a) fs += force_sum[a] * force_sum[a], fa += force_abs[a];
     if (fa > 0.0) tally.max_force_sum = std::max(tally.max_force_sum, std::sqrt(fs) / fa);
@@ -166,9 +211,9 @@ void work_and_volumes(Particles<Dim>& p, double dt, bool small_strain, bool trac
   tally.stress_work += dt * w;
 }
 
-template void solve_grid<1>(Grid<1>&, const Boundaries&, double, double, Tallies&);
-template void solve_grid<2>(Grid<2>&, const Boundaries&, double, double, Tallies&);
-template void solve_grid<3>(Grid<3>&, const Boundaries&, double, double, Tallies&);
+template void solve_grid<1>(Grid<1>&, const Boundaries&, double, double, Tallies&, int);
+template void solve_grid<2>(Grid<2>&, const Boundaries&, double, double, Tallies&, int);
+template void solve_grid<3>(Grid<3>&, const Boundaries&, double, double, Tallies&, int);
 template void work_and_volumes<1>(Particles<1>&, double, bool, bool, Tallies&, int);
 template void work_and_volumes<2>(Particles<2>&, double, bool, bool, Tallies&, int);
 template void work_and_volumes<3>(Particles<3>&, double, bool, bool, Tallies&, int);

@@ -6,8 +6,9 @@
 
 namespace mpmx::mpm {
 
+// Threads over lines of nodes (2-D, 3-D); the same bits for any count.
 template <int Dim>
-void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies& tally);
+void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies& tally, int threads = 1);
 
 // W += dt sum_p V_p (sigma_p - q_p) : grad v_p (the energy the stress absorbs, eq. 4.11,
 // over V0 for small strain), then V^{n+1} = V^n (1 + dt div v) and, when the scheme

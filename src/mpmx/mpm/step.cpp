@@ -46,9 +46,9 @@ void step_stencil(State<Dim>& s, double dt) {
   p2g(p, s.stencil, s.small_strain, g, s.threads);  // m_i, v_i^n (eq. 3.16), f_i
   if (s.manufactured) s.manufactured->add_body_force(p, s.stencil, s.time, g);
   const bool distribute = s.mass_distribution.on;
-  if (distribute) distribute_small_mass_forces(g, s.mass_distribution.threshold, s.mass_distribution.maps);  // eqs. 7.4-7.6
-  solve_grid(g, s.boundary, s.time, dt, s.tallies); // v^L (eq. 3.12) with boundaries
-  if (distribute) gradient_velocities(g, s.mass_distribution.maps);  // eq. 7.7
+  if (distribute) distribute_small_mass_forces(g, s.mass_distribution.threshold, s.mass_distribution.maps, s.threads);  // eqs. 7.4-7.6
+  solve_grid(g, s.boundary, s.time, dt, s.tallies, s.threads);  // v^L (eq. 3.12) with boundaries
+  if (distribute) gradient_velocities(g, s.mass_distribution.maps, s.threads);  // eq. 7.7
   s.finite_check = g2p(g, s.stencil, dt, s.move, s.midpoint_gradient, p, s.threads);  // v_p, x_p, grad v
   if (s.musl)
     musl_gradient(s.stencil, s.boundary, s.time + dt, g, p, distribute ? &s.mass_distribution.maps : nullptr,

@@ -107,10 +107,10 @@ double g2p_kernel(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool mo
 // strain) instead of the current V.
 template <int Dim>
 void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume, Grid<Dim>& g, int threads = 1) {
-  std::fill(g.mass.begin(), g.mass.end(), 0.0);
-  for (int d = 0; d < Dim; ++d) {
-    std::fill(g.momentum[d].begin(), g.momentum[d].end(), 0.0);
-    std::fill(g.force[d].begin(), g.force[d].end(), 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && Dim > 1)
+  for (std::size_t i = 0; i < g.storage; ++i) {
+    g.mass[i] = 0.0;
+    for (int d = 0; d < Dim; ++d) g.momentum[d][i] = g.force[d][i] = 0.0;
   }
   const std::vector<double>& vol = reference_volume ? p.volume0 : p.volume;
   const bool smooth = st.smoothed();
@@ -139,15 +139,31 @@ void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume,
     const std::size_t row = static_cast<std::size_t>(g.stride[Dim - 1]);
     const std::size_t n = p.size();
     const std::size_t slabs = g.storage / row / static_cast<std::size_t>(w) + 1;
+    // The particles by slab, in index order within each: a counting sort over runs of
+    // particles (each run counts, then writes after the earlier runs of its slab).
     std::vector<std::uint32_t> start(slabs + 1, 0), order(n);
-    std::vector<std::uint32_t> slab(n);
-    for (std::size_t q = 0; q < n; ++q) {
-      slab[q] = static_cast<std::uint32_t>(static_cast<std::size_t>(st.node[q * st.width]) / row / w);
-      ++start[slab[q] + 1];
+    const std::size_t runs = std::max<std::size_t>(1, std::min<std::size_t>(n, static_cast<std::size_t>(threads)));
+    std::vector<std::uint32_t> count(runs * slabs, 0), slab(n);
+    const std::uint32_t per_slab = static_cast<std::uint32_t>(row * static_cast<std::size_t>(w));
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
+    for (std::size_t r = 0; r < runs; ++r)
+      for (std::size_t q = n * r / runs; q < n * (r + 1) / runs; ++q) {
+        slab[q] = static_cast<std::uint32_t>(st.node[q * st.width]) / per_slab;  // node indices fit 32 bits
+        ++count[r * slabs + slab[q]];
+      }
+    for (std::size_t s = 0; s < slabs; ++s) {
+      std::uint32_t at = start[s];
+      for (std::size_t r = 0; r < runs; ++r) {
+        const std::uint32_t c = count[r * slabs + s];
+        count[r * slabs + s] = at;  // where run r's first particle of slab s goes
+        at += c;
+      }
+      start[s + 1] = at;
     }
-    for (std::size_t s = 0; s < slabs; ++s) start[s + 1] += start[s];
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t q = 0; q < n; ++q) order[fill[slab[q]]++] = static_cast<std::uint32_t>(q);
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
+    for (std::size_t r = 0; r < runs; ++r)
+      for (std::size_t q = n * r / runs; q < n * (r + 1) / runs; ++q)
+        order[count[r * slabs + slab[q]]++] = static_cast<std::uint32_t>(q);
     for (std::size_t parity = 0; parity < 2; ++parity) {
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1)
       for (std::size_t s = parity; s < slabs; s += 2) kernel(order.data() + start[s], start[s + 1] - start[s]);

@@ -1,6 +1,7 @@
 #include "mpmx/mpm/shape/ddmp_operator.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 
 #include "mpmx/mpm/shape/ddmp.hpp"
@@ -61,27 +62,53 @@ void row_entries(const Stencil<Dim>& st, const std::array<int, Dim>& sj, const s
 }  // namespace
 
 template <int Dim>
-void list_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std::uint8_t>& mark) {
-  mark.assign(g.storage, 0);
-  for (const int i : st.node) mark[static_cast<std::size_t>(i)] = 1;
-  st.smooth_nodes.clear();
-  for (std::size_t i = 0; i < g.storage; ++i)
-    if (mark[i]) st.smooth_nodes.push_back(static_cast<std::uint32_t>(i));
-  const Neighbourhood<Dim> nb(g);
-  for (const std::uint32_t j : st.smooth_nodes) {
-    const auto s = axis_indices(g, j);
-    for (int c = 0; c < nb.n; ++c) {
-      bool real = true;
-      for (int a = 0; a < Dim; ++a) {
-        const int t = s[a] + nb.o[c][a] - Grid<Dim>::ghost;
-        real = real && t >= 0 && t <= g.cells[a];
-      }
-      if (real) mark[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(j) + nb.step[c])] |= 2;
-    }
+void list_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std::uint8_t>& mark, int threads) {
+  const std::size_t n = g.storage;
+  mark.resize(2 * n);
+  std::uint8_t* touched = mark.data();
+  std::uint8_t* spread = mark.data() + n;
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t i = 0; i < n; ++i) touched[i] = 0;
+  // Points sharing a node mark it alike: relaxed atomic stores of the same value.
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t e = 0; e < st.node.size(); ++e)
+    std::atomic_ref<std::uint8_t>(touched[st.node[e]]).store(1, std::memory_order_relaxed);
+  // Lists in storage order, built by runs and joined in order (any thread count, same list).
+  auto collect = [&](const std::uint8_t* flag, std::size_t count, auto node_of, std::vector<std::uint32_t>& list) {
+    const std::size_t P = std::max<std::size_t>(1, std::min<std::size_t>(count, 4 * static_cast<std::size_t>(threads)));
+    std::vector<std::vector<std::uint32_t>> part(P);
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
+    for (std::size_t k = 0; k < P; ++k)
+      for (std::size_t r = count * k / P; r < count * (k + 1) / P; ++r) node_of(r, flag, part[k]);
+    list.clear();
+    for (const auto& p : part) list.insert(list.end(), p.begin(), p.end());
+  };
+  collect(touched, n, [](std::size_t i, const std::uint8_t* f, std::vector<std::uint32_t>& out) {
+    if (f[i]) out.push_back(static_cast<std::uint32_t>(i));
+  }, st.smooth_nodes);
+  // The reach: the 3^d box around every touched node, by a dilation along each axis in
+  // turn (ghost nodes are never touched, so a step that wraps onto a neighbouring line's
+  // ghost reads a zero); then the real nodes of it, line by line.
+  std::uint8_t* in = touched;
+  std::uint8_t* out = spread;
+  for (int d = 0; d < Dim; ++d) {
+    const std::size_t s = static_cast<std::size_t>(g.stride[d]);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+    for (std::size_t i = 0; i < n; ++i) out[i] = in[i] | (i >= s ? in[i - s] : 0) | (i + s < n ? in[i + s] : 0);
+    std::swap(in, out);
   }
-  st.smooth_reach.clear();
-  for (std::size_t i = 0; i < g.storage; ++i)
-    if (mark[i] & 2) st.smooth_reach.push_back(static_cast<std::uint32_t>(i));
+  std::size_t lines = 1;
+  for (int d = 1; d < Dim; ++d) lines *= static_cast<std::size_t>(g.cells[d] + 1);
+  collect(in, lines, [&g](std::size_t l, const std::uint8_t* f, std::vector<std::uint32_t>& list) {
+    std::array<int, Dim> idx{};
+    for (int d = 1; d < Dim; ++d) {
+      idx[d] = static_cast<int>(l % static_cast<std::size_t>(g.cells[d] + 1));
+      l /= static_cast<std::size_t>(g.cells[d] + 1);
+    }
+    const std::size_t i0 = g.index(idx);
+    for (std::size_t i = i0; i <= i0 + static_cast<std::size_t>(g.cells[0]); ++i)
+      if (f[i]) list.push_back(static_cast<std::uint32_t>(i));
+  }, st.smooth_reach);
 }
 
 template <int Dim>
@@ -206,7 +233,7 @@ Stencil<Dim> expanded(const Stencil<Dim>& st, const Grid<Dim>& g) {
 }
 
 #define MPMX_DDMP_OPERATOR(D)                                                                                  \
-  template void list_smoothing_nodes<D>(const Grid<D>&, Stencil<D>&, std::vector<std::uint8_t>&);             \
+  template void list_smoothing_nodes<D>(const Grid<D>&, Stencil<D>&, std::vector<std::uint8_t>&, int);             \
   template void add_smoothed_force<D>(Grid<D>&, const Stencil<D>&, int);                                       \
   template void smoothed_gradient<D>(const Stencil<D>&, const std::array<const double*, D>&, double,           \
                                      const std::array<const double*, D>&, double, Grid<D>&, int);              \

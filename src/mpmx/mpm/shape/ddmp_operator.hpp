@@ -19,9 +19,9 @@
 namespace mpmx::mpm::shape {
 
 // Fills st.smooth_nodes (every node a point's box holds) and st.smooth_reach (the real
-// nodes within one node of them); `mark` is scratch of the grid's size.
+// nodes within one node of them); `mark` is scratch.
 template <int Dim>
-void list_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std::uint8_t>& mark);
+void list_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std::uint8_t>& mark, int threads = 1);
 
 // f_i -= sum_d sum_j T^d_j K^d_ji at the reach, then T back to zero.
 template <int Dim>

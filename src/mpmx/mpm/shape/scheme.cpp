@@ -169,7 +169,15 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
   std::array<int, Dim> W;
   W.fill(2);
   if (scheme == Scheme::mpm || scheme == Scheme::ddmp) {
-    for (std::size_t q = 0; q < n; ++q) cell_coords(g, p, q);
+    // Every point on the grid (or a cell past it): the first one that is not is named.
+    std::size_t off_grid = n;
+#pragma omp parallel for schedule(static) reduction(min : off_grid) num_threads(threads_) if (threads_ > 1)
+    for (std::size_t q = 0; q < n; ++q)
+      for (int d = 0; d < Dim; ++d) {
+        const double xi = (p.x[d][q] - g.lower[d]) * g.inv_dx[d];
+        if (!(xi >= -1.0 && xi <= g.cells[d] + 1.0)) off_grid = std::min(off_grid, q);
+      }
+    if (off_grid < n) cell_coords(g, p, off_grid);  // throws with its number and position
   } else {
     for (std::size_t q = 0; q < n; ++q) {
       const auto xi = cell_coords(g, p, q);
@@ -197,7 +205,7 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
     width *= W[d];
   }
   const bool factored = scheme_info(scheme).ddmp;
-  st.reset(n, width, scheme != Scheme::mpm, factored);
+  st.reset(n, width, false, factored);  // each particle's entries are cleared by its thread below
   st.box = W;
   if (factored) st.smooth = ddmp_;
 
@@ -211,6 +219,11 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
     std::array<double*, Dim> G;
     for (int d = 0; d < Dim; ++d) G[d] = &st.G[d][e];
     double* S = &st.S[e];
+    if (scheme != Scheme::mpm) {  // the others add into their entries
+      std::fill(S, S + width, 0.0);
+      for (int d = 0; d < Dim; ++d) std::fill(G[d], G[d] + width, 0.0);
+      if (factored) std::fill(&st.R[e], &st.R[e] + width, 0.0);
+    }
     switch (scheme) {
       case Scheme::mpm:
         for (int d = 0; d < Dim; ++d) shape::hat_axis(xi[d], g.cells[d], g.inv_dx[d], ax[d]);
@@ -330,7 +343,7 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
     }
     set_nodes<Dim>(g, ax, W, width, &st.node[e]);
   }
-  if (factored) shape::list_smoothing_nodes(g, st, mark_);
+  if (factored) shape::list_smoothing_nodes(g, st, mark_, threads_);
 }
 
 template class ShapeEvaluator<1>;
