@@ -29,7 +29,6 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk, 
   n1.assign(nlocal, 0);
   n2.assign(nlocal, 0);
   n3.assign(nlocal, 0);
-  max_n1_ = max_n2_ = max_n3_ = 0;
 
   // Ghosts: every image within rs of the fundamental box (eqs. 5.10-5.17 with the
   // sliding offsets of the upper-triangular box).
@@ -65,9 +64,6 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk, 
           n1.push_back(static_cast<std::int8_t>(a));
           n2.push_back(static_cast<std::int8_t>(b));
           n3.push_back(static_cast<std::int8_t>(c));
-          max_n1_ = std::max(max_n1_, std::abs(a));
-          max_n2_ = std::max(max_n2_, std::abs(b));
-          max_n3_ = std::max(max_n3_, std::abs(c));
         }
       }
     }
@@ -214,18 +210,33 @@ void Neighbors::pack() {
 
 bool Neighbors::needs_rebuild(const Atoms& atoms, const Box& box, int threads) const {
   if (!built_ || static_cast<int>(atoms.size()) != nlocal) return true;
+  // The box's change since the build as the affine map A = H H0^-1 (H's columns are the
+  // edge vectors; both upper triangular), which carries every build-time image shift onto
+  // the current one. With d_i = x_i - A x0_i, a pair's separation moved from A r0 by
+  // d_j - d_i, so |r| >= (1 - |A - I|) |r0| - 2 max|d|: no pair beyond cutoff + skin at
+  // the build is within the cutoff while 2 max|d| + |A - I| (cutoff + skin) <= skin.
+  // Measured from A x0 rather than x0, a box deformed with its atoms (a multiscale box
+  // under its point's strain rate) spends the skin on the pairs' relative motion only.
+  const Box& h0 = box0_;
+  const double i00 = 1.0 / h0.lx, i11 = 1.0 / h0.ly, i22 = 1.0 / h0.lz;
+  const double i01 = -h0.xy * i00 * i11, i12 = -h0.yz * i11 * i22;
+  const double i02 = (h0.xy * h0.yz - h0.xz * h0.ly) * i00 * i11 * i22;
+  const double a00 = box.lx * i00, a01 = box.lx * i01 + box.xy * i11, a02 = box.lx * i02 + box.xy * i12 + box.xz * i22;
+  const double a11 = box.ly * i11, a12 = box.ly * i12 + box.yz * i22, a22 = box.lz * i22;
+  const double strain = std::sqrt((a00 - 1) * (a00 - 1) + a01 * a01 + a02 * a02 + (a11 - 1) * (a11 - 1) +
+                                  a12 * a12 + (a22 - 1) * (a22 - 1));  // Frobenius, >= the 2-norm
+  const double slack = skin - strain * (cutoff + skin);
+  if (!(slack > 0)) return true;
   double d2max = 0;  // a maximum: the same for any thread count
 #pragma omp parallel for schedule(static) reduction(max : d2max) num_threads(threads) if (threads > 1)
   for (int i = 0; i < nlocal; ++i) {
-    const double dx = atoms.x[i] - x0_[i], dy = atoms.y[i] - y0_[i], dz = atoms.z[i] - z0_[i];
+    const double x0 = x0_[i], y0 = y0_[i], z0 = z0_[i];
+    const double dx = atoms.x[i] - (a00 * x0 + a01 * y0 + a02 * z0);
+    const double dy = atoms.y[i] - (a11 * y0 + a12 * z0);
+    const double dz = atoms.z[i] - a22 * z0;
     d2max = std::max(d2max, dx * dx + dy * dy + dz * dz);
   }
-  // Images also move with the box: |n1 da + n2 db + n3 dc| bounded term by term.
-  const double da = std::abs(box.lx - box0_.lx);
-  const double db = std::hypot(box.xy - box0_.xy, box.ly - box0_.ly);
-  const double dc = std::hypot(box.xz - box0_.xz, box.yz - box0_.yz, box.lz - box0_.lz);
-  const double image = max_n1_ * da + max_n2_ * db + max_n3_ * dc;
-  return std::sqrt(d2max) + image > 0.5 * skin;
+  return 2.0 * std::sqrt(d2max) > slack;
 }
 
 void Neighbors::build_tiles(int threads) {

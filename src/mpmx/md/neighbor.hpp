@@ -2,7 +2,8 @@
 // Neighbours: ghost images of the atoms near the faces of the fundamental box (with the
 // sliding-image shifts of figs. 5.2-5.3), cell binning over the box plus ghosts, and a
 // half Verlet list with a skin (each pair once, Newton's third law, eq. 5.24). Rebuilt
-// when an atom or an image may have moved half the skin; correct for any box whose
+// when a pair may have closed by the skin (the atoms' motion measured against the box's
+// own affine change, so a deforming box keeps its list longer); correct for any box whose
 // edges exceed the cutoff plus skin... and smaller ones too, since an atom's own images
 // are ghosts like any other. An axis may be open (`periodic[d] = false`, the DPD
 // engine's free surfaces): no images along it, and the bins there span the atoms' extent.
@@ -68,7 +69,6 @@ class Neighbors {
   bool built_ = false;
   std::vector<double> x0_, y0_, z0_;  // local positions at build
   Box box0_;                          // box at build
-  int max_n1_ = 0, max_n2_ = 0, max_n3_ = 0;
   std::vector<int> bin_start_, bin_atoms_, bin_owner_;
   std::vector<double> bin_xyz_;
   std::vector<std::vector<int>> part_;    // the lists of chunks of atoms (build)
