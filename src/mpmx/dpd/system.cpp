@@ -1,6 +1,7 @@
 #include "mpmx/dpd/system.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
@@ -88,11 +89,20 @@ void System::rebuild() {
       lo[d] = a;
       nb[d] = std::clamp(static_cast<long>((b - a) / cell), 1L, 1L << 20);
     }
+    // x fastest; with the Shardlow sweep, the longest axis slowest: the sweep's slabs
+    // across it (pair_list.hpp) are then runs of consecutive particles, so threads on
+    // different slabs write to different cache lines (1.74x on two threads before,
+    // 1.91x after; the pair forces alone run 1% faster in the plain order).
+    std::array<int, 3> axes{0, 1, 2};  // fastest first
+    if (par_.integrator == Integrator::shardlow && par_.gamma > 0)
+      std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return nb[a] < nb[b]; });
     std::vector<long> key(n);
     for (std::size_t i = 0; i < n; ++i) {
       long k = 0;
-      for (int d = 2; d >= 0; --d)
+      for (int t = 2; t >= 0; --t) {
+        const int d = axes[t];
         k = k * nb[d] + std::clamp(static_cast<long>(((*c[d])[i] - lo[d]) / cell), 0L, nb[d] - 1);
+      }
       key[i] = k;
     }
     std::vector<std::size_t> order(n);
