@@ -209,6 +209,18 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
   st.box = W;
   if (factored) st.smooth = ddmp_;
 
+  // The nodes of a hat's box (mpm, ddmp), which never reaches past the grid: the first
+  // node plus a fixed step per entry.
+  std::array<int, 1 << Dim> hat_step{};
+  for (int k = 0; k < (1 << Dim); ++k)
+    for (int a = 0; a < Dim; ++a) hat_step[k] += (k >> a & 1) * g.stride[a];
+  auto hat_nodes = [&](const Axis* ax, int* node) {
+    std::array<int, Dim> first;
+    for (int d = 0; d < Dim; ++d) first[d] = ax[d].first;
+    const int base = static_cast<int>(g.index(first));
+    for (int k = 0; k < (1 << Dim); ++k) node[k] = base + hat_step[k];
+  };
+
   // Pass 2: every particle's factors and their products, each particle on its own.
 #pragma omp parallel for schedule(static) num_threads(threads_)
   for (std::size_t q = 0; q < n; ++q) {
@@ -225,10 +237,23 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
       if (factored) std::fill(&st.R[e], &st.R[e] + width, 0.0);
     }
     switch (scheme) {
-      case Scheme::mpm:
+      case Scheme::mpm: {
+        // The products unrolled (the same, in the same order, as separable()).
         for (int d = 0; d < Dim; ++d) shape::hat_axis(xi[d], g.cells[d], g.inv_dx[d], ax[d]);
-        separable<Dim>(ax, W, width, S, G);
-        break;
+        for (int k = 0; k < (1 << Dim); ++k) {
+          double sk = 1.0;
+          for (int a = 0; a < Dim; ++a) sk *= ax[a].S[k >> a & 1];
+          S[k] = sk;
+          for (int d = 0; d < Dim; ++d) {
+            double gd = ax[d].G[k >> d & 1];
+            for (int a = 0; a < Dim; ++a)
+              if (a != d) gd *= ax[a].S[k >> a & 1];
+            G[d][k] = gd;
+          }
+        }
+        hat_nodes(ax, &st.node[e]);
+        continue;
+      }
       case Scheme::ugimp:
       case Scheme::cpgimp:
       case Scheme::cpdi:
@@ -304,7 +329,8 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
           S[k] = s;
         }
         add_ddmp<Dim>(ax, std::array<int, Dim>{}, 1.0, W, opt_.alpha, G, &st.R[e]);
-        break;
+        hat_nodes(ax, &st.node[e]);
+        continue;
       }
       case Scheme::ddmp_subpoints: {
         // The box: the cells of the sub-points (the particle's own lies among them).
