@@ -10,6 +10,13 @@
 
 namespace mpmx::mpm {
 
+// The weights of v^L and v^n in the velocities x and grad v are advanced with:
+// v^{n+1/2} = (v^L + v^n) / 2 (eqs. 3.14, 4.10) or v^L alone.
+struct VelocityWeights {
+  double L, n;
+};
+inline VelocityWeights midpoint_weights(bool midpoint) { return midpoint ? VelocityWeights{0.5, 0.5} : VelocityWeights{1.0, 0.0}; }
+
 template <int Dim>
 struct Grid {
   static constexpr int ghost = 1;
@@ -30,8 +37,9 @@ struct Grid {
   std::array<std::vector<double>, Dim> velocity_L;  // Lagrangian v^L (eq. 3.12)
   std::array<std::vector<double>, Dim> force;       // internal force (eq. 3.9/3.30)
   // The velocities the velocity gradient reads where the small-mass distribution is on
-  // (eq. 7.7, mass_distribution.hpp); empty otherwise.
-  std::array<std::vector<double>, Dim> gradient_velocity, gradient_velocity_L;
+  // (eq. 7.7, mass_distribution.hpp): w_L v^L + w_n v^n (midpoint_weights) through the
+  // distribution's adjoint; empty otherwise.
+  std::array<std::vector<double>, Dim> gradient_velocity;
   // DDMP's smoothed part on the nodes (shape/ddmp_operator.hpp), [a * Dim + d], empty
   // unless the scheme is DDMP: T_j = sum_p V_p sigma_p S_j (1 - alpha_p), zero between
   // steps, and the smoothed velocity gradient H_j = sum_i K_ji v_i.

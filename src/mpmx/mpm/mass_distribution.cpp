@@ -149,17 +149,12 @@ void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& map
 }
 
 template <int Dim>
-void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps, int threads) {
-  for (auto* v : {&g.gradient_velocity, &g.gradient_velocity_L})
-    for (auto& c : *v) c.resize(g.storage);
+void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps, VelocityWeights w, int threads) {
+  for (auto& c : g.gradient_velocity) c.resize(g.storage);
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t i = 0; i < g.storage; ++i)
-    for (int a = 0; a < Dim; ++a) {
-      g.gradient_velocity[a][i] = g.velocity[a][i];
-      g.gradient_velocity_L[a][i] = g.velocity_L[a][i];
-    }
-  for (auto* v : {&g.gradient_velocity, &g.gradient_velocity_L})
-    for (int a = 0; a < Dim; ++a) adjoint_velocity(maps, (*v)[a], threads);
+    for (int a = 0; a < Dim; ++a) g.gradient_velocity[a][i] = w.L * g.velocity_L[a][i] + w.n * g.velocity[a][i];
+  for (int a = 0; a < Dim; ++a) adjoint_velocity(maps, g.gradient_velocity[a], threads);
 }
 
 void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v, int threads) {
@@ -170,8 +165,8 @@ void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v, int thr
 template void distribute_small_mass_forces<1>(Grid<1>&, double, SmallMassMaps&, int);
 template void distribute_small_mass_forces<2>(Grid<2>&, double, SmallMassMaps&, int);
 template void distribute_small_mass_forces<3>(Grid<3>&, double, SmallMassMaps&, int);
-template void gradient_velocities<1>(Grid<1>&, const SmallMassMaps&, int);
-template void gradient_velocities<2>(Grid<2>&, const SmallMassMaps&, int);
-template void gradient_velocities<3>(Grid<3>&, const SmallMassMaps&, int);
+template void gradient_velocities<1>(Grid<1>&, const SmallMassMaps&, VelocityWeights, int);
+template void gradient_velocities<2>(Grid<2>&, const SmallMassMaps&, VelocityWeights, int);
+template void gradient_velocities<3>(Grid<3>&, const SmallMassMaps&, VelocityWeights, int);
 
 }  // namespace mpmx::mpm

@@ -39,10 +39,10 @@ struct SmallMassMaps {
 template <int Dim>
 void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& maps, int threads = 1);
 
-// After the solve: Grid::gradient_velocity and gradient_velocity_L <- A0^T A1^T of
-// velocity and velocity_L.
+// After the solve: Grid::gradient_velocity <- A0^T A1^T (w.L velocity_L + w.n velocity),
+// the velocities the gradient reads (the adjoint is linear: one set, not one per field).
 template <int Dim>
-void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps, int threads = 1);
+void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps, VelocityWeights w, int threads = 1);
 
 // v <- A0^T A1^T v for one nodal velocity component (what a gradient reads).
 void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v, int threads = 1);

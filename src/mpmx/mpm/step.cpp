@@ -48,7 +48,7 @@ void step_stencil(State<Dim>& s, double dt) {
   const bool distribute = s.mass_distribution.on;
   if (distribute) distribute_small_mass_forces(g, s.mass_distribution.threshold, s.mass_distribution.maps, s.threads);  // eqs. 7.4-7.6
   solve_grid(g, s.boundary, s.time, dt, s.tallies, s.threads);  // v^L (eq. 3.12) with boundaries
-  if (distribute) gradient_velocities(g, s.mass_distribution.maps, s.threads);  // eq. 7.7
+  if (distribute) gradient_velocities(g, s.mass_distribution.maps, midpoint_weights(s.midpoint_gradient), s.threads);  // eq. 7.7
   s.finite_check = g2p(g, s.stencil, dt, s.move, s.midpoint_gradient, p, s.threads);  // v_p, x_p, grad v
   if (s.musl)
     musl_gradient(s.stencil, s.boundary, s.time + dt, g, p, distribute ? &s.mass_distribution.maps : nullptr,

@@ -57,16 +57,12 @@ void p2g_kernel(const Particles<Dim>& p, const Stencil<Dim>& st, const std::vect
 
 // Returns the sum of the new velocities and positions: finite unless something blew up
 // (its rounding may depend on the threads; it is only tested for finiteness).
-template <int Dim, int W, bool Smooth>
+template <int Dim, int W, bool Smooth, bool Own>
 double g2p_kernel(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool move, double wl,
                   double wn, Particles<Dim>& p, int threads) {
   const int w = W > 0 ? W : st.width;
   const std::size_t n = p.size();
   double check = 0.0;
-  // The gradient reads the distributed velocities where the small-mass distribution is on.
-  const bool own = !g.gradient_velocity[0].empty();
-  const auto& gvl = own ? g.gradient_velocity_L : g.velocity_L;
-  const auto& gvn = own ? g.gradient_velocity : g.velocity;
 #pragma omp parallel for schedule(static) reduction(+ : check) num_threads(threads) if (threads > 1)
   for (std::size_t q = 0; q < n; ++q) {
     double dv[Dim] = {}, vbar[Dim] = {}, L[Dim][Dim] = {};
@@ -80,7 +76,8 @@ double g2p_kernel(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool mo
         const double vg = wl * vl + wn * vn;
         dv[a] += (vl - vn) * S;
         vbar[a] += vg * S;
-        const double vgrad = wl * gvl[a][i] + wn * gvn[a][i];
+        // The gradient reads the distributed velocities where the small-mass distribution is on.
+        const double vgrad = Own ? g.gradient_velocity[a][i] : vg;
         for (int b = 0; b < Dim; ++b) L[a][b] += vgrad * st.G[b][e];
       }
       if constexpr (Smooth) {  // DDMP: sum_j R_jp H_j
@@ -181,30 +178,29 @@ void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume,
 template <int Dim>
 double g2p(Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool move, bool midpoint,
            Particles<Dim>& p, int threads = 1) {
-  const double wl = midpoint ? 0.5 : 1.0, wn = midpoint ? 0.5 : 0.0;
+  const VelocityWeights vw = midpoint_weights(midpoint);
+  const double wl = vw.L, wn = vw.n;
+  const bool own = !g.gradient_velocity[0].empty();
+  auto run = [&]<bool Smooth, bool Own>() {
+    switch (st.width) {
+      case 2: return detail::g2p_kernel<Dim, 2, Smooth, Own>(g, st, dt, move, wl, wn, p, threads);
+      case 4: return detail::g2p_kernel<Dim, 4, Smooth, Own>(g, st, dt, move, wl, wn, p, threads);
+      case 5: return detail::g2p_kernel<Dim, 5, Smooth, Own>(g, st, dt, move, wl, wn, p, threads);
+      case 8: return detail::g2p_kernel<Dim, 8, Smooth, Own>(g, st, dt, move, wl, wn, p, threads);
+      case 16: return detail::g2p_kernel<Dim, 16, Smooth, Own>(g, st, dt, move, wl, wn, p, threads);
+      default: return detail::g2p_kernel<Dim, 0, Smooth, Own>(g, st, dt, move, wl, wn, p, threads);
+    }
+  };
   if (st.smoothed()) {  // eq. 7.2's smoothed gradient on the nodes, of the velocities the gradient reads
-    const bool own = !g.gradient_velocity[0].empty();
     std::array<const double*, Dim> vl, vn;
     for (int a = 0; a < Dim; ++a) {
-      vl[a] = (own ? g.gradient_velocity_L : g.velocity_L)[a].data();
+      vl[a] = (own ? g.gradient_velocity : g.velocity_L)[a].data();
       vn[a] = (own ? g.gradient_velocity : g.velocity)[a].data();
     }
-    shape::smoothed_gradient(st, vl, wl, vn, wn, g, threads);
-    switch (st.width) {
-      case 2: return detail::g2p_kernel<Dim, 2, true>(g, st, dt, move, wl, wn, p, threads);
-      case 4: return detail::g2p_kernel<Dim, 4, true>(g, st, dt, move, wl, wn, p, threads);
-      case 8: return detail::g2p_kernel<Dim, 8, true>(g, st, dt, move, wl, wn, p, threads);
-      default: return detail::g2p_kernel<Dim, 0, true>(g, st, dt, move, wl, wn, p, threads);
-    }
+    shape::smoothed_gradient(st, vl, own ? 1.0 : wl, vn, own ? 0.0 : wn, g, threads);
+    return own ? run.template operator()<true, true>() : run.template operator()<true, false>();
   }
-  switch (st.width) {
-    case 2: return detail::g2p_kernel<Dim, 2, false>(g, st, dt, move, wl, wn, p, threads);
-    case 4: return detail::g2p_kernel<Dim, 4, false>(g, st, dt, move, wl, wn, p, threads);
-    case 5: return detail::g2p_kernel<Dim, 5, false>(g, st, dt, move, wl, wn, p, threads);
-    case 8: return detail::g2p_kernel<Dim, 8, false>(g, st, dt, move, wl, wn, p, threads);
-    case 16: return detail::g2p_kernel<Dim, 16, false>(g, st, dt, move, wl, wn, p, threads);
-    default: return detail::g2p_kernel<Dim, 0, false>(g, st, dt, move, wl, wn, p, threads);
-  }
+  return own ? run.template operator()<false, true>() : run.template operator()<false, false>();
 }
 
 }  // namespace mpmx::mpm
