@@ -55,11 +55,11 @@ void scatter(const Mat<Dim>& t, std::size_t q, const std::array<double*, Dim * D
 
 // D = sym L and W = skew L; both exactly (anti)symmetric in floating point.
 template <int Dim>
-Mat<Dim> rate_of_deformation(const Mat<Dim>& L) {
+[[gnu::always_inline]] inline Mat<Dim> rate_of_deformation(const Mat<Dim>& L) {
   return 0.5 * (L + L.transpose());
 }
 template <int Dim>
-Mat<Dim> spin(const Mat<Dim>& L) {
+[[gnu::always_inline]] inline Mat<Dim> spin(const Mat<Dim>& L) {
   return 0.5 * (L - L.transpose());
 }
 
@@ -76,7 +76,7 @@ Mat<Dim> rotation_terms(const Mat<Dim>& W, const Mat<Dim>& sigma) {
 // For W = 0 it is the identity exactly, so a run without spin is bit-identical to the
 // unrotated update.
 template <int Dim>
-Mat<Dim> hughes_winget(const Mat<Dim>& W, double dt) {
+[[gnu::always_inline]] inline Mat<Dim> hughes_winget(const Mat<Dim>& W, double dt) {
   const Mat<Dim> A = (0.5 * dt) * W;
   const double theta2 = 0.5 * A.squaredNorm();
   return Mat<Dim>::Identity() + (2.0 / (1.0 + theta2)) * (A + A * A);
@@ -84,13 +84,13 @@ Mat<Dim> hughes_winget(const Mat<Dim>& W, double dt) {
 
 // R S R^T: the co-rotated tensor (stress, strain, a back stress).
 template <int Dim>
-Mat<Dim> corotate(const Mat<Dim>& R, const Mat<Dim>& S) {
+[[gnu::always_inline]] inline Mat<Dim> corotate(const Mat<Dim>& R, const Mat<Dim>& S) {
   return R * S * R.transpose();
 }
 
 // The half-step rotation Rh of one step dt under the spin W.
 template <int Dim>
-Mat<Dim> half_step_rotation(const Mat<Dim>& W, double dt) {
+[[gnu::always_inline]] inline Mat<Dim> half_step_rotation(const Mat<Dim>& W, double dt) {
   return hughes_winget<Dim>(W, 0.5 * dt);
 }
 
@@ -98,7 +98,7 @@ Mat<Dim> half_step_rotation(const Mat<Dim>& W, double dt) {
 // (dt times the rate) taken in the midpoint configuration. Anything that turns with the
 // material (stress, strain, crystal axes Q: Q^{n+1} = Rh Rh Q^n) uses the same Rh.
 template <int Dim>
-Mat<Dim> objective_step(const Mat<Dim>& S, const Mat<Dim>& Rh, const Mat<Dim>& increment) {
+[[gnu::always_inline]] inline Mat<Dim> objective_step(const Mat<Dim>& S, const Mat<Dim>& Rh, const Mat<Dim>& increment) {
   return corotate<Dim>(Rh, corotate<Dim>(Rh, S) + increment);
 }
 
