@@ -115,7 +115,11 @@ void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume,
     for (auto& t : g.smooth_stress)
       if (t.size() != g.storage) t.assign(g.storage, 0.0);
   auto kernel = [&](const std::uint32_t* list, std::size_t count) {
-    if (smooth) return detail::p2g_kernel<Dim, 0, true>(p, st, vol, g, list, count);
+    if (smooth) switch (st.width) {  // DDMP: the hat's 2^d nodes, sub-points wider
+        case 4: return detail::p2g_kernel<Dim, 4, true>(p, st, vol, g, list, count);
+        case 8: return detail::p2g_kernel<Dim, 8, true>(p, st, vol, g, list, count);
+        default: return detail::p2g_kernel<Dim, 0, true>(p, st, vol, g, list, count);
+      }
     switch (st.width) {
       case 2: return detail::p2g_kernel<Dim, 2, false>(p, st, vol, g, list, count);
       case 4: return detail::p2g_kernel<Dim, 4, false>(p, st, vol, g, list, count);

@@ -111,29 +111,72 @@ void list_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std:
   }, st.smooth_reach);
 }
 
+namespace {
+
+// The operator's nonzero entries for a row of the grid's interior (both neighbours on
+// every axis, so every interior row is the same), in the order row_entries visits them:
+// offset c, then d. Skipping the zeros (D's centre) keeps each sum's order and bits.
+template <int Dim>
+struct InteriorRow {
+  std::vector<int> c, d;
+  std::vector<double> K;
+  InteriorRow(const Stencil<Dim>& st, const Grid<Dim>& g, const Neighbourhood<Dim>& nb) {
+    std::array<int, Dim> s;
+    for (int a = 0; a < Dim; ++a) s[a] = Grid<Dim>::ghost + std::min(1, g.cells[a] - 1);  // grid index 1
+    for (int k = 0; k < nb.n; ++k) {
+      double Kd[Dim];
+      row_entries<Dim>(st, s, nb.o[k], Kd);
+      for (int e = 0; e < Dim; ++e)
+        if (Kd[e] != 0.0) c.push_back(k), d.push_back(e), K.push_back(Kd[e]);
+    }
+  }
+};
+
+// Whether grid index t along each axis lies at least `margin` nodes inside the grid.
+template <int Dim>
+bool inside(const Grid<Dim>& g, const std::type_identity_t<std::array<int, Dim>>& s, int margin) {
+  for (int a = 0; a < Dim; ++a) {
+    const int t = s[a] - Grid<Dim>::ghost;
+    if (t < margin || t > g.cells[a] - margin) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 template <int Dim>
 void add_smoothed_force(Grid<Dim>& g, const Stencil<Dim>& st, int threads) {
   const Neighbourhood<Dim> nb(g);
+  const InteriorRow<Dim> row(st, g, nb);
   const auto& T = g.smooth_stress;
   const auto& reach = st.smooth_reach;
   // Each node gathers from its neighbours j = i - o the entry K^d_{j, i}: one writer per
-  // node, the same sum in the same order for any thread count.
+  // node, the same sum in the same order for any thread count. A node two inside the
+  // grid has only interior rows around it.
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t k = 0; k < reach.size(); ++k) {
     const std::size_t i = reach[k];
     const auto si = axis_indices(g, i);
     double f[Dim] = {};
-    for (int c = 0; c < nb.n; ++c) {
-      std::array<int, Dim> sj, o;
-      for (int a = 0; a < Dim; ++a) {
-        o[a] = nb.o[c][a];
-        sj[a] = si[a] - o[a];
+    if (inside(g, si, 2)) {
+      for (std::size_t t = 0; t < row.K.size(); ++t) {
+        const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[row.c[t]]);
+        const int d = row.d[t];
+        for (int a = 0; a < Dim; ++a) f[a] += T[a * Dim + d][j] * row.K[t];
       }
-      const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[c]);
-      double K[Dim];
-      row_entries<Dim>(st, sj, o, K);
-      for (int a = 0; a < Dim; ++a)
-        for (int d = 0; d < Dim; ++d) f[a] += T[a * Dim + d][j] * K[d];
+    } else {
+      for (int c = 0; c < nb.n; ++c) {
+        std::array<int, Dim> sj, o;
+        for (int a = 0; a < Dim; ++a) {
+          o[a] = nb.o[c][a];
+          sj[a] = si[a] - o[a];
+        }
+        const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[c]);
+        double K[Dim];
+        row_entries<Dim>(st, sj, o, K);
+        for (int a = 0; a < Dim; ++a)
+          for (int d = 0; d < Dim; ++d) f[a] += T[a * Dim + d][j] * K[d];
+      }
     }
     for (int a = 0; a < Dim; ++a) g.force[a][i] -= f[a];
   }
@@ -151,6 +194,7 @@ void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::a
   for (auto& h : g.smooth_gradient)
     if (h.size() != g.storage) h.assign(g.storage, 0.0);
   const Neighbourhood<Dim> nb(g);
+  const InteriorRow<Dim> row(st, g, nb);
   const auto& nodes = st.smooth_nodes;
   const std::size_t last = g.storage;
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
@@ -158,14 +202,22 @@ void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::a
     const std::size_t j = nodes[k];
     const auto sj = axis_indices(g, j);
     double H[Dim][Dim] = {};
-    for (int c = 0; c < nb.n; ++c) {
-      const std::ptrdiff_t i = static_cast<std::ptrdiff_t>(j) + nb.step[c];
-      if (i < 0 || static_cast<std::size_t>(i) >= last) continue;  // a clamped ghost's row is zero
-      double K[Dim];
-      row_entries<Dim>(st, sj, nb.o[c], K);
-      for (int a = 0; a < Dim; ++a) {
-        const double v = w1 * v1[a][i] + w2 * v2[a][i];
-        for (int b = 0; b < Dim; ++b) H[a][b] += K[b] * v;
+    if (inside(g, sj, 1)) {  // an interior row
+      for (std::size_t t = 0; t < row.K.size(); ++t) {
+        const std::size_t i = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(j) + nb.step[row.c[t]]);
+        const int b = row.d[t];
+        for (int a = 0; a < Dim; ++a) H[a][b] += row.K[t] * (w1 * v1[a][i] + w2 * v2[a][i]);
+      }
+    } else {
+      for (int c = 0; c < nb.n; ++c) {
+        const std::ptrdiff_t i = static_cast<std::ptrdiff_t>(j) + nb.step[c];
+        if (i < 0 || static_cast<std::size_t>(i) >= last) continue;  // a clamped ghost's row is zero
+        double K[Dim];
+        row_entries<Dim>(st, sj, nb.o[c], K);
+        for (int a = 0; a < Dim; ++a) {
+          const double v = w1 * v1[a][i] + w2 * v2[a][i];
+          for (int b = 0; b < Dim; ++b) H[a][b] += K[b] * v;
+        }
       }
     }
     for (int a = 0; a < Dim; ++a)
