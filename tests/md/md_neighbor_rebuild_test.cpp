@@ -111,3 +111,20 @@ TEST(NeighborRebuild, ListHoldsEveryClosePairUnderAffineFlow) {
   // it was at the build: the old test would have rebuilt on each of them.
   EXPECT_GT(moved_half_skin, holds / 2);
 }
+
+// A box gone non-finite asks for no rebuild (building from it would cast NaN image
+// counts to integers): the run's finiteness check stops it and names the step.
+TEST(NeighborRebuild, NonFiniteBoxAsksForNoRebuild) {
+  Box box;
+  box.lx = box.ly = box.lz = 8.0;
+  Atoms at;
+  at.push_back(1.0, 2.0, 3.0, 0, 0);
+  at.push_back(2.5, 2.0, 3.0, 0, 1);
+  Neighbors nb;
+  nb.build(at, box, 3.0, 0.5);
+  box.lx = std::nan("");
+  EXPECT_FALSE(nb.needs_rebuild(at, box));
+  box.lx = 8.0;
+  at.x[0] = 3.0;  // moved by 2 > skin / 2
+  EXPECT_TRUE(nb.needs_rebuild(at, box));
+}

@@ -226,7 +226,7 @@ bool Neighbors::needs_rebuild(const Atoms& atoms, const Box& box, int threads) c
   const double strain = std::sqrt((a00 - 1) * (a00 - 1) + a01 * a01 + a02 * a02 + (a11 - 1) * (a11 - 1) +
                                   a12 * a12 + (a22 - 1) * (a22 - 1));  // Frobenius, >= the 2-norm
   const double slack = skin - strain * (cutoff + skin);
-  if (!(slack > 0)) return true;
+  if (slack <= 0) return true;  // a non-finite box falls through: the run's finiteness check names it
   double d2max = 0;  // a maximum: the same for any thread count
 #pragma omp parallel for schedule(static) reduction(max : d2max) num_threads(threads) if (threads > 1)
   for (int i = 0; i < nlocal; ++i) {
