@@ -12,40 +12,11 @@
 #include "mpmx/mpm/shape/ddmp_operator.hpp"
 #include "mpmx/mpm/shape/scheme.hpp"
 #include "mpmx/mpm/transfer.hpp"
+#include "shape_test_util.hpp"
 
 using namespace mpmx::mpm;
 
 namespace {
-
-template <int Dim>
-Grid<Dim> grid() {
-  if constexpr (Dim == 1) return Grid<1>({-1.0}, {3.0}, {20});
-  else if constexpr (Dim == 2) return Grid<2>({0.0, -0.5}, {2.0, 0.5}, {8, 5});
-  else return Grid<3>({0.0, -0.5, 1.0}, {2.0, 0.5, 1.6}, {8, 5, 4});
-}
-
-// Points anywhere from half a cell below the grid to half a cell above it, with sheared
-// domains, random stresses and volumes.
-template <int Dim>
-Particles<Dim> particles(const Grid<Dim>& g, std::size_t n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  Particles<Dim> p;
-  p.resize(n);
-  for (std::size_t q = 0; q < n; ++q) {
-    for (int a = 0; a < Dim; ++a) {
-      p.x[a][q] = g.lower[a] + g.dx[a] * ((g.cells[a] + 1.0) * u(rng) - 0.5);
-      p.v[a][q] = u(rng) - 0.5;
-      for (int b = 0; b < Dim; ++b) {
-        p.length[a * Dim + b][q] = a == b ? g.dx[a] * (0.3 + 0.3 * u(rng)) : 0.1 * g.dx[a] * (u(rng) - 0.5);
-        p.stress[a * Dim + b][q] = u(rng) - 0.5;
-      }
-    }
-    p.volume[q] = p.volume0[q] = 0.5 + u(rng);
-    p.mass[q] = 1.0 + u(rng);
-  }
-  return p;
-}
 
 template <int Dim>
 void random_velocities(Grid<Dim>& g, unsigned seed) {
@@ -66,8 +37,8 @@ double scale(const std::vector<double>& v) {
 template <int Dim>
 void compare(Scheme scheme) {
   SCOPED_TRACE(scheme_name(scheme) + " in " + std::to_string(Dim) + "-D");
-  const Grid<Dim> g0 = grid<Dim>();
-  const Particles<Dim> p0 = particles<Dim>(g0, 150, 5);
+  const Grid<Dim> g0 = mpmx::test::uneven_grid<Dim>();
+  const Particles<Dim> p0 = mpmx::test::random_particles<Dim>(g0, 150, 5, -0.5);
   SchemeOptions opt;
   opt.scheme = scheme;
   opt.subpoints = 3;
@@ -87,7 +58,7 @@ void compare(Scheme scheme) {
   p2g(p0, factored, false, c, 2);
   for (int d = 0; d < Dim; ++d) {
     const double f = scale(b.force[d]);
-    ASSERT_GT(f, 0.1);
+    ASSERT_GT(f, 0.1 * scale(p0.volume) * g0.inv_dx[d]);  // forces of a point's size, not round-off
     for (std::size_t i = 0; i < g0.storage; ++i) {
       EXPECT_NEAR(a.force[d][i], b.force[d][i], 1e-13 * f) << "node " << i;
       EXPECT_EQ(a.force[d][i], c.force[d][i]) << "node " << i;
@@ -141,8 +112,8 @@ TEST(DdmpOperator, FactoredEqualsFullIn3D) {
 
 // The factored stencil holds the hat's 2^d nodes per point (the full one 4^d).
 TEST(DdmpOperator, PointsSeeOnlyTheHatsNodes) {
-  const Grid<3> g = grid<3>();
-  const Particles<3> p = particles<3>(g, 40, 2);
+  const Grid<3> g = mpmx::test::uneven_grid<3>();
+  const Particles<3> p = mpmx::test::random_particles<3>(g, 40, 2, -0.5);
   Stencil<3> st;
   ShapeEvaluator<3>({Scheme::ddmp}, g)(g, p, st);
   EXPECT_EQ(st.width, 8);

@@ -4,7 +4,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
+#include <gtest/gtest.h>
 #include <toml++/toml.h>
 
 #include "mpmx/io/mpm_deck.hpp"
@@ -44,6 +46,43 @@ mpm::RunResultOf<Dim> run_dim(const mpm::MpmConfig& c) {
   o.quiet = true;
   o.plot = false;
   return mpm::run_mpm_dim<Dim>(c, o);
+}
+
+// The same particles to the bit: positions, velocities, stresses.
+template <int Dim>
+void expect_same_particles(const mpm::Particles<Dim>& a, const mpm::Particles<Dim>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (int d = 0; d < Dim; ++d) {
+    EXPECT_EQ(a.x[d], b.x[d]);
+    EXPECT_EQ(a.v[d], b.v[d]);
+  }
+  for (int k = 0; k < Dim * Dim; ++k) EXPECT_EQ(a.stress[k], b.stress[k]);
+}
+
+// Runs a 2-D or 3-D deck on one thread and on two and expects the same bits: the
+// particles (positions, velocities, stresses) and the run's tallies. Returns both runs.
+// `continuum_threads`: the continuum has points enough to use the two threads.
+template <int Dim>
+std::pair<mpm::RunResultOf<Dim>, mpm::RunResultOf<Dim>> same_on_one_and_two_threads(const mpm::MpmConfig& c,
+                                                                                    bool continuum_threads = true) {
+  mpm::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  o.threads = 1;
+  auto one = mpm::run_mpm_dim<Dim>(c, o);
+  o.threads = 2;
+  auto two = mpm::run_mpm_dim<Dim>(c, o);
+  if (continuum_threads) {
+    EXPECT_EQ(two.state.threads, 2);
+  }
+  expect_same_particles(one.state.particles, two.state.particles);
+  EXPECT_EQ(one.stress_work, two.stress_work);
+  EXPECT_EQ(one.kinetic_final, two.kinetic_final);
+  EXPECT_EQ(one.stored_final, two.stored_final);
+  EXPECT_EQ(one.boundary_work, two.boundary_work);
+  EXPECT_EQ(one.state.tallies.boundary_impulse, two.state.tallies.boundary_impulse);
+  EXPECT_EQ(one.state.tallies.node_mass, two.state.tallies.node_mass);
+  return {std::move(one), std::move(two)};
 }
 
 // A whole text file.

@@ -12,38 +12,11 @@
 #include "mpmx/mpm/shape/ddmp.hpp"
 #include "mpmx/mpm/shape/ddmp_operator.hpp"
 #include "mpmx/mpm/shape/scheme.hpp"
+#include "shape_test_util.hpp"
 
 using namespace mpmx::mpm;
 
 namespace {
-
-template <int Dim>
-Grid<Dim> grid() {
-  if constexpr (Dim == 2) return Grid<2>({0.0, -0.5}, {2.0, 0.5}, {8, 5});
-  else return Grid<3>({0.0, -0.5, 1.0}, {2.0, 0.5, 1.6}, {8, 5, 4});
-}
-
-// Particles at random places at least two cells inside, domains of about a third of a
-// cell, sheared and rotated a little (CPDI, sub-points).
-template <int Dim>
-Particles<Dim> particles(const Grid<Dim>& g, std::size_t n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  Particles<Dim> p;
-  p.resize(n);
-  for (std::size_t q = 0; q < n; ++q) {
-    double V = 1.0;
-    for (int a = 0; a < Dim; ++a) {
-      p.x[a][q] = g.lower[a] + g.dx[a] * (2.0 + (g.cells[a] - 4) * u(rng));
-      for (int b = 0; b < Dim; ++b)
-        p.length[a * Dim + b][q] = a == b ? g.dx[a] * (0.25 + 0.2 * u(rng)) : 0.05 * g.dx[a] * (u(rng) - 0.5);
-      V *= p.length[a * Dim + a][q];
-    }
-    p.volume[q] = p.volume0[q] = V;
-    p.mass[q] = V;
-  }
-  return p;
-}
 
 struct Case {
   Scheme scheme;
@@ -54,8 +27,8 @@ class EverySchemeND : public ::testing::TestWithParam<Case> {};
 
 template <int Dim>
 void check_consistency(const Case& c) {
-  const Grid<Dim> g = grid<Dim>();
-  const Particles<Dim> p = particles<Dim>(g, 60, 11);
+  const Grid<Dim> g = mpmx::test::uneven_grid<Dim>();
+  const Particles<Dim> p = mpmx::test::random_particles<Dim>(g, 60, 11, 2.0);
   SchemeOptions opt;
   opt.scheme = c.scheme;
   opt.alpha = c.alpha;

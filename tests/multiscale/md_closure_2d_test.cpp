@@ -29,15 +29,6 @@ md::Mat3 gradient(double gxy, double gyx) {
   return g;
 }
 
-void expect_same(const mpm::Particles<2>& a, const mpm::Particles<2>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (int d = 0; d < 2; ++d) {
-    EXPECT_EQ(a.x[d], b.x[d]);
-    EXPECT_EQ(a.v[d], b.v[d]);
-  }
-  for (int k = 0; k < 4; ++k) EXPECT_EQ(a.stress[k], b.stress[k]);
-}
-
 }  // namespace
 
 TEST(MdClosure2d, RestingCrystalAtZeroKelvinHasNoStress) {
@@ -123,14 +114,7 @@ TEST(MdClosure2d, EnergyConsistencyHoldsToRoundOffEachMacroStep) {
 
 TEST(MdClosure2d, SameParticlesOnOneAndTwoThreadsAndResumedBitForBit) {
   const auto c = impact_2d(50.0, 4);
-  mpm::RunOptions o;
-  o.quiet = true;
-  o.plot = false;
-  o.threads = 1;
-  const auto one = mpm::run_mpm_dim<2>(c, o);
-  o.threads = 2;
-  const auto two = mpm::run_mpm_dim<2>(c, o);
-  expect_same(one.state.particles, two.state.particles);
+  const auto [one, two] = test::same_on_one_and_two_threads<2>(c, false);  // the boxes take the threads
   EXPECT_EQ(one.md_atom_steps, 8 * 108 * (400 + 20));
   EXPECT_LT(one.momentum_error(), 1e-12 * one.momentum_scale);
   // The flyer is pushed back by the target.
@@ -139,6 +123,10 @@ TEST(MdClosure2d, SameParticlesOnOneAndTwoThreadsAndResumedBitForBit) {
     if (one.state.particles.x[0][q] < 0.9) v_flyer = std::max(v_flyer, one.state.particles.v[0][q]);
   EXPECT_LT(v_flyer, 0.5);
 
+  mpm::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  o.threads = 2;
   o.out_dir = test::scratch_dir("md_closure_2d_parts");
   o.stop_after = 2;
   const auto first = mpm::run_mpm_dim<2>(c, o);
@@ -147,5 +135,5 @@ TEST(MdClosure2d, SameParticlesOnOneAndTwoThreadsAndResumedBitForBit) {
   o.resume = true;
   const auto rest = mpm::run_mpm_dim<2>(c, o);
   EXPECT_EQ(rest.steps, 4);
-  expect_same(two.state.particles, rest.state.particles);
+  test::expect_same_particles(two.state.particles, rest.state.particles);
 }

@@ -66,6 +66,21 @@ struct Grid {
   }
 
   int nodes(int d) const { return cells[d] + 1; }
+  // Lines of real nodes along x: the unit threads take in passes over the grid.
+  std::size_t lines() const {
+    std::size_t n = 1;
+    for (int d = 1; d < Dim; ++d) n *= static_cast<std::size_t>(cells[d] + 1);
+    return n;
+  }
+  // Grid indices of line l's first node (x = 0), lines counted y fastest.
+  std::array<int, Dim> line_first(std::size_t l) const {
+    std::array<int, Dim> idx{};
+    for (int d = 1; d < Dim; ++d) {
+      idx[d] = static_cast<int>(l % static_cast<std::size_t>(cells[d] + 1));
+      l /= static_cast<std::size_t>(cells[d] + 1);
+    }
+    return idx;
+  }
   // Storage index of the node with grid indices idx (each in [-ghost, cells+ghost]).
   std::size_t index(std::array<int, Dim> idx) const {
     std::size_t s = 0;

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "mpmx/mpm/node_runs.hpp"
+
 namespace mpmx::mpm {
 
 namespace {
@@ -26,23 +28,6 @@ std::vector<std::ptrdiff_t> neighbourhood(const Grid<Dim>& g) {
   return off;
 }
 
-// Lines of real nodes along x: the storage index of line l's first node.
-template <int Dim>
-std::size_t lines(const Grid<Dim>& g) {
-  std::size_t n = 1;
-  for (int d = 1; d < Dim; ++d) n *= static_cast<std::size_t>(g.cells[d] + 1);
-  return n;
-}
-template <int Dim>
-std::size_t line_start(const Grid<Dim>& g, std::size_t l) {
-  std::array<int, Dim> idx{};
-  for (int d = 1; d < Dim; ++d) {
-    idx[d] = static_cast<int>(l % static_cast<std::size_t>(g.cells[d] + 1));
-    l /= static_cast<std::size_t>(g.cells[d] + 1);
-  }
-  return g.index(idx);
-}
-
 // The map of one stage: every source node l (where `source(l)`) with the nodes of mass
 // in its 3^d neighbourhood (itself when `self`) and weights sqrt(m_i) / sum sqrt(m_j).
 // A source with no mass near keeps what it has (no entry). Runs of lines are built
@@ -50,15 +35,10 @@ std::size_t line_start(const Grid<Dim>& g, std::size_t l) {
 template <int Dim, class Source>
 void build(const Grid<Dim>& g, const std::vector<std::ptrdiff_t>& off, Source source, bool self,
            SmallMassMap& map, std::vector<SmallMassMap>& parts, int threads) {
-  const std::size_t L = lines(g);
-  const std::size_t P = std::min<std::size_t>(L, static_cast<std::size_t>(4 * threads));
-  parts.resize(P);
-#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
-  for (std::size_t k = 0; k < P; ++k) {
-    SmallMassMap& part = parts[k];
+  build_in_runs(g.lines(), threads, parts, [&](SmallMassMap& part, std::size_t begin, std::size_t end) {
     part.clear();
-    for (std::size_t l = L * k / P; l < L * (k + 1) / P; ++l) {
-      const std::size_t i0 = line_start(g, l);
+    for (std::size_t l = begin; l < end; ++l) {
+      const std::size_t i0 = g.index(g.line_first(l));
       for (int x = 0; x <= g.cells[0]; ++x) {
         const std::size_t src = i0 + static_cast<std::size_t>(x);
         if (!source(src)) continue;
@@ -77,7 +57,7 @@ void build(const Grid<Dim>& g, const std::vector<std::ptrdiff_t>& off, Source so
         part.start.push_back(static_cast<std::uint32_t>(part.node.size()));
       }
     }
-  }
+  });
   map.clear();
   for (const SmallMassMap& part : parts) {
     const std::uint32_t base = static_cast<std::uint32_t>(map.node.size());
@@ -108,9 +88,7 @@ void gather(const SmallMassMap& map, std::vector<double>& v, int threads) {
   for (std::size_t s = 0; s < map.source.size(); ++s) v[map.source[s]] = mean[s];
 }
 
-// near = the nodes within one node of a node with mass (3^d box), by a dilation along
-// each axis in turn. Ghost nodes carry no mass, so a step that wraps onto a neighbouring
-// line's ghost reads a zero.
+// near = the nodes within one node of a node with mass (3^d box).
 template <int Dim>
 void mark_near(const Grid<Dim>& g, SmallMassMaps& maps, int threads) {
   const std::size_t n = g.storage;
@@ -118,17 +96,7 @@ void mark_near(const Grid<Dim>& g, SmallMassMaps& maps, int threads) {
   maps.spread.resize(n);
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t i = 0; i < n; ++i) maps.spread[i] = g.mass[i] > 0.0;
-  std::vector<char>* in = &maps.spread;
-  std::vector<char>* out = &maps.near;
-  for (int d = 0; d < Dim; ++d) {
-    const std::size_t s = static_cast<std::size_t>(g.stride[d]);
-    const char* a = in->data();
-    char* b = out->data();
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-    for (std::size_t i = 0; i < n; ++i) b[i] = a[i] | (i >= s ? a[i - s] : 0) | (i + s < n ? a[i + s] : 0);
-    std::swap(in, out);
-  }
-  if (in != &maps.near) maps.near.swap(maps.spread);
+  if (dilate_marks(g, maps.spread.data(), maps.near.data(), threads) != maps.near.data()) maps.near.swap(maps.spread);
 }
 
 }  // namespace

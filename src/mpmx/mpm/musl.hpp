@@ -52,23 +52,27 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
   if (smooth) {  // DDMP: eq. 7.2's smoothed gradient on the nodes
     std::array<const double*, Dim> vv;
     for (int a = 0; a < Dim; ++a) vv[a] = v[a].data();
-    shape::smoothed_gradient(st, vv, 1.0, vv, 0.0, g, threads);
+    shape::smoothed_gradient(st, vv, g, threads);
   }
+  auto gradients = [&]<bool Smooth>() {
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::size_t q = 0; q < n; ++q) {
-    double L[Dim][Dim] = {};
-    for (int k = 0; k < w; ++k) {
-      const std::size_t e = q * w + k;
-      const int i = st.node[e];
+    for (std::size_t q = 0; q < n; ++q) {
+      double L[Dim][Dim] = {};
+      for (int k = 0; k < w; ++k) {
+        const std::size_t e = q * w + k;
+        const int i = st.node[e];
+        for (int a = 0; a < Dim; ++a)
+          for (int b = 0; b < Dim; ++b) {
+            L[a][b] += v[a][i] * st.G[b][e];
+            if constexpr (Smooth) L[a][b] += st.R[e] * g.smooth_gradient[a * Dim + b][i];
+          }
+      }
       for (int a = 0; a < Dim; ++a)
-        for (int b = 0; b < Dim; ++b) {
-          L[a][b] += v[a][i] * st.G[b][e];
-          if (smooth) L[a][b] += st.R[e] * g.smooth_gradient[a * Dim + b][i];
-        }
+        for (int b = 0; b < Dim; ++b) p.grad_v[a * Dim + b][q] = L[a][b];
     }
-    for (int a = 0; a < Dim; ++a)
-      for (int b = 0; b < Dim; ++b) p.grad_v[a * Dim + b][q] = L[a][b];
-  }
+  };
+  if (smooth) gradients.template operator()<true>();
+  else gradients.template operator()<false>();
 }
 
 }  // namespace mpmx::mpm

@@ -59,23 +59,13 @@ void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies
   } else {
     // Over lines of nodes along x, taken by threads; each line's sums kept apart and added
     // in line order, so the tallies do not depend on the thread count.
-    std::size_t lines = 1;
-    for (int d = 1; d < Dim; ++d) lines *= static_cast<std::size_t>(g.cells[d] + 1);
+    const std::size_t lines = g.lines();
     const int nx = g.cells[0] + 1;
-    auto line_start = [&](std::size_t l, std::array<int, Dim>& idx) {
-      idx[0] = 0;
-      for (int d = 1; d < Dim; ++d) {
-        idx[d] = static_cast<int>(l % static_cast<std::size_t>(g.cells[d] + 1));
-        l /= static_cast<std::size_t>(g.cells[d] + 1);
-      }
-      return g.index(idx);
-    };
     constexpr int kSums = 1 + 2 * Dim;  // mass, force sum and |force| per component
     std::vector<double> sums(lines * kSums, 0.0);
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
     for (std::size_t l = 0; l < lines; ++l) {
-      std::array<int, Dim> idx;
-      const std::size_t i0 = line_start(l, idx);
+      const std::size_t i0 = g.index(g.line_first(l));
       double* sum = &sums[l * kSums];
       for (int x = 0; x < nx; ++x) {
         const std::size_t i = i0 + static_cast<std::size_t>(x);
@@ -103,8 +93,8 @@ void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies
     std::vector<double> added_by_faces(lines * kFace, 0.0);
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
     for (std::size_t l = 0; l < lines; ++l) {
-      std::array<int, Dim> idx;
-      const std::size_t i0 = line_start(l, idx);
+      std::array<int, Dim> idx = g.line_first(l);
+      const std::size_t i0 = g.index(idx);
       bool line_on_face = false;  // most lines are inside: no face loop for their inner nodes
       for (int d = 1; d < Dim; ++d) line_on_face = line_on_face || idx[d] == 0 || idx[d] == g.cells[d];
       double* face_sum = &added_by_faces[l * kFace];

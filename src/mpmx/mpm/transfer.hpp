@@ -199,9 +199,10 @@ double g2p(Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool move, bool midp
     std::array<const double*, Dim> vl, vn;
     for (int a = 0; a < Dim; ++a) {
       vl[a] = (own ? g.gradient_velocity : g.velocity_L)[a].data();
-      vn[a] = (own ? g.gradient_velocity : g.velocity)[a].data();
+      vn[a] = g.velocity[a].data();
     }
-    shape::smoothed_gradient(st, vl, own ? 1.0 : wl, vn, own ? 0.0 : wn, g, threads);
+    if (own) shape::smoothed_gradient(st, vl, g, threads);
+    else shape::smoothed_gradient(st, vl, vn, vw, g, threads);
     return own ? run.template operator()<true, true>() : run.template operator()<true, false>();
   }
   return own ? run.template operator()<false, true>() : run.template operator()<false, false>();

@@ -71,17 +71,17 @@ inline void domain_axis(double xi, double h, int cells, double inv, bool integra
   }
 }
 
-// DDMP at xi: the hats of nodes c, c+1 and their derivative, times w, written at offset
-// `at` (first = c - at); alpha's factor along the axis. Past the grid ends the point is
+// DDMP at xi: the hats of nodes c, c+1 and their derivative, written at offset `at`
+// (first = c - at); alpha's factor along the axis. Past the grid ends the point is
 // clamped. The smoothed part of eq. 7.2 is the grid's operator (ddmp_operator.hpp).
-inline void ddmp_axis(double xi, int cells, double inv, int at, Axis& ax, double w = 1.0) {
+inline void ddmp_axis(double xi, int cells, double inv, int at, Axis& ax) {
   const auto [c, f] = locate(clamp_to_grid(xi, cells), cells);
   ax.first = c - at;
   ax.q = 4.0 * f * (1.0 - f);
-  ax.S[at] = w * (1.0 - f);
-  ax.S[at + 1] = w * f;
-  ax.G[at] = -w * inv;
-  ax.G[at + 1] = w * inv;
+  ax.S[at] = 1.0 - f;
+  ax.S[at + 1] = f;
+  ax.G[at] = -inv;
+  ax.G[at + 1] = inv;
 }
 inline int ddmp_cell(double xi, int cells) { return locate(clamp_to_grid(xi, cells), cells).cell; }
 

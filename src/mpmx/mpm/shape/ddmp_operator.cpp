@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstddef>
 
+#include "mpmx/mpm/node_runs.hpp"
 #include "mpmx/mpm/shape/ddmp.hpp"
 
 namespace mpmx::mpm::shape {
@@ -74,41 +75,28 @@ void list_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std:
   for (std::size_t e = 0; e < st.node.size(); ++e)
     std::atomic_ref<std::uint8_t>(touched[st.node[e]]).store(1, std::memory_order_relaxed);
   // Lists in storage order, built by runs and joined in order (any thread count, same list).
-  auto collect = [&](const std::uint8_t* flag, std::size_t count, auto node_of, std::vector<std::uint32_t>& list) {
-    const std::size_t P = std::max<std::size_t>(1, std::min<std::size_t>(count, 4 * static_cast<std::size_t>(threads)));
-    std::vector<std::vector<std::uint32_t>> part(P);
-#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
-    for (std::size_t k = 0; k < P; ++k)
-      for (std::size_t r = count * k / P; r < count * (k + 1) / P; ++r) node_of(r, flag, part[k]);
+  std::vector<std::vector<std::uint32_t>> parts;
+  auto join = [&parts](std::vector<std::uint32_t>& list) {
     list.clear();
-    for (const auto& p : part) list.insert(list.end(), p.begin(), p.end());
+    for (const auto& part : parts) list.insert(list.end(), part.begin(), part.end());
   };
-  collect(touched, n, [](std::size_t i, const std::uint8_t* f, std::vector<std::uint32_t>& out) {
-    if (f[i]) out.push_back(static_cast<std::uint32_t>(i));
-  }, st.smooth_nodes);
-  // The reach: the 3^d box around every touched node, by a dilation along each axis in
-  // turn (ghost nodes are never touched, so a step that wraps onto a neighbouring line's
-  // ghost reads a zero); then the real nodes of it, line by line.
-  std::uint8_t* in = touched;
-  std::uint8_t* out = spread;
-  for (int d = 0; d < Dim; ++d) {
-    const std::size_t s = static_cast<std::size_t>(g.stride[d]);
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-    for (std::size_t i = 0; i < n; ++i) out[i] = in[i] | (i >= s ? in[i - s] : 0) | (i + s < n ? in[i + s] : 0);
-    std::swap(in, out);
-  }
-  std::size_t lines = 1;
-  for (int d = 1; d < Dim; ++d) lines *= static_cast<std::size_t>(g.cells[d] + 1);
-  collect(in, lines, [&g](std::size_t l, const std::uint8_t* f, std::vector<std::uint32_t>& list) {
-    std::array<int, Dim> idx{};
-    for (int d = 1; d < Dim; ++d) {
-      idx[d] = static_cast<int>(l % static_cast<std::size_t>(g.cells[d] + 1));
-      l /= static_cast<std::size_t>(g.cells[d] + 1);
+  build_in_runs(n, threads, parts, [&](std::vector<std::uint32_t>& part, std::size_t begin, std::size_t end) {
+    part.clear();
+    for (std::size_t i = begin; i < end; ++i)
+      if (touched[i]) part.push_back(static_cast<std::uint32_t>(i));
+  });
+  join(st.smooth_nodes);
+  // The reach: the 3^d box around every touched node, then its real nodes line by line.
+  const std::uint8_t* reach = dilate_marks(g, touched, spread, threads);
+  build_in_runs(g.lines(), threads, parts, [&](std::vector<std::uint32_t>& part, std::size_t begin, std::size_t end) {
+    part.clear();
+    for (std::size_t l = begin; l < end; ++l) {
+      const std::size_t i0 = g.index(g.line_first(l));
+      for (std::size_t i = i0; i <= i0 + static_cast<std::size_t>(g.cells[0]); ++i)
+        if (reach[i]) part.push_back(static_cast<std::uint32_t>(i));
     }
-    const std::size_t i0 = g.index(idx);
-    for (std::size_t i = i0; i <= i0 + static_cast<std::size_t>(g.cells[0]); ++i)
-      if (f[i]) list.push_back(static_cast<std::uint32_t>(i));
-  }, st.smooth_reach);
+  });
+  join(st.smooth_reach);
 }
 
 namespace {
@@ -181,16 +169,16 @@ void add_smoothed_force(Grid<Dim>& g, const Stencil<Dim>& st, int threads) {
     for (int a = 0; a < Dim; ++a) g.force[a][i] -= f[a];
   }
   const auto& nodes = st.smooth_nodes;
-  for (int c = 0; c < Dim * Dim; ++c) {
-    double* t = g.smooth_stress[c].data();
-    for (const std::uint32_t j : nodes) t[j] = 0.0;
-  }
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    for (int c = 0; c < Dim * Dim; ++c) g.smooth_stress[c][nodes[k]] = 0.0;
 }
 
-template <int Dim>
-void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::array<const double*, Dim>>& v1,
-                       double w1, const std::type_identity_t<std::array<const double*, Dim>>& v2, double w2,
-                       Grid<Dim>& g, int threads) {
+namespace {
+
+// H^{ab}_j = sum_i K^b_ji v(a, i) at the stencil's nodes, one writer per node.
+template <int Dim, class Velocity>
+void smoothed_gradient_of(const Stencil<Dim>& st, Velocity v, Grid<Dim>& g, int threads) {
   for (auto& h : g.smooth_gradient)
     if (h.size() != g.storage) h.assign(g.storage, 0.0);
   const Neighbourhood<Dim> nb(g);
@@ -206,7 +194,7 @@ void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::a
       for (std::size_t t = 0; t < row.K.size(); ++t) {
         const std::size_t i = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(j) + nb.step[row.c[t]]);
         const int b = row.d[t];
-        for (int a = 0; a < Dim; ++a) H[a][b] += row.K[t] * (w1 * v1[a][i] + w2 * v2[a][i]);
+        for (int a = 0; a < Dim; ++a) H[a][b] += row.K[t] * v(a, i);
       }
     } else {
       for (int c = 0; c < nb.n; ++c) {
@@ -215,14 +203,29 @@ void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::a
         double K[Dim];
         row_entries<Dim>(st, sj, nb.o[c], K);
         for (int a = 0; a < Dim; ++a) {
-          const double v = w1 * v1[a][i] + w2 * v2[a][i];
-          for (int b = 0; b < Dim; ++b) H[a][b] += K[b] * v;
+          const double va = v(a, static_cast<std::size_t>(i));
+          for (int b = 0; b < Dim; ++b) H[a][b] += K[b] * va;
         }
       }
     }
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) g.smooth_gradient[a * Dim + b][j] = H[a][b];
   }
+}
+
+}  // namespace
+
+template <int Dim>
+void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::array<const double*, Dim>>& v,
+                       Grid<Dim>& g, int threads) {
+  smoothed_gradient_of(st, [&v](int a, std::size_t i) { return v[a][i]; }, g, threads);
+}
+
+template <int Dim>
+void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::array<const double*, Dim>>& vL,
+                       const std::type_identity_t<std::array<const double*, Dim>>& vn, VelocityWeights w,
+                       Grid<Dim>& g, int threads) {
+  smoothed_gradient_of(st, [&](int a, std::size_t i) { return w.L * vL[a][i] + w.n * vn[a][i]; }, g, threads);
 }
 
 template <int Dim>
@@ -287,8 +290,9 @@ Stencil<Dim> expanded(const Stencil<Dim>& st, const Grid<Dim>& g) {
 #define MPMX_DDMP_OPERATOR(D)                                                                                  \
   template void list_smoothing_nodes<D>(const Grid<D>&, Stencil<D>&, std::vector<std::uint8_t>&, int);             \
   template void add_smoothed_force<D>(Grid<D>&, const Stencil<D>&, int);                                       \
-  template void smoothed_gradient<D>(const Stencil<D>&, const std::array<const double*, D>&, double,           \
-                                     const std::array<const double*, D>&, double, Grid<D>&, int);              \
+  template void smoothed_gradient<D>(const Stencil<D>&, const std::array<const double*, D>&, Grid<D>&, int);   \
+  template void smoothed_gradient<D>(const Stencil<D>&, const std::array<const double*, D>&,                   \
+                                     const std::array<const double*, D>&, VelocityWeights, Grid<D>&, int);     \
   template Stencil<D> expanded<D>(const Stencil<D>&, const Grid<D>&);
 MPMX_DDMP_OPERATOR(1)
 MPMX_DDMP_OPERATOR(2)

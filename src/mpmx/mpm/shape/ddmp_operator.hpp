@@ -27,10 +27,14 @@ void list_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std:
 template <int Dim>
 void add_smoothed_force(Grid<Dim>& g, const Stencil<Dim>& st, int threads);
 
-// H^{ab}_j = sum_i K^b_ji v_ai at the stencil's nodes, v = w1 v1 + w2 v2.
+// H^{ab}_j = sum_i K^b_ji v_ai at the stencil's nodes.
 template <int Dim>
-void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::array<const double*, Dim>>& v1,
-                       double w1, const std::type_identity_t<std::array<const double*, Dim>>& v2, double w2,
+void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::array<const double*, Dim>>& v,
+                       Grid<Dim>& g, int threads);
+// The same of v = w.L vL + w.n vn.
+template <int Dim>
+void smoothed_gradient(const Stencil<Dim>& st, const std::type_identity_t<std::array<const double*, Dim>>& vL,
+                       const std::type_identity_t<std::array<const double*, Dim>>& vn, VelocityWeights w,
                        Grid<Dim>& g, int threads);
 
 // The gradient written out in full, sharp plus smoothed, on each point's box widened by
