@@ -62,6 +62,23 @@ class LinearElastic final : public Material<Dim> {
     return 0.5 * p.volume0[q] * w;
   }
 
+  // In eight lanes by the point's place in the range, added in lane order.
+  double stored_energy_sum(const Points<Dim>& p, std::size_t begin, std::size_t end) const override {
+    constexpr std::size_t kLanes = 8;
+    double lane[kLanes] = {};
+    std::size_t q = begin;
+    for (; q + kLanes <= end; q += kLanes)
+      for (std::size_t l = 0; l < kLanes; ++l) {
+        double w = 0.0;
+        for (int c = 0; c < Dim * Dim; ++c) w += p.stress[c][q + l] * p.strain[c][q + l];
+        lane[l] += 0.5 * p.volume0[q + l] * w;
+      }
+    for (std::size_t l = 0; q < end; ++q, ++l) lane[l] += stored_energy(p, q);
+    double s = 0.0;
+    for (double x : lane) s += x;
+    return s;
+  }
+
   void set_threads(int threads) override { threads_ = threads > 0 ? threads : 1; }
   double youngs_modulus() const { return E_; }
   double shear_modulus() const { return E_ / (2.0 * (1.0 + nu_)); }

@@ -27,6 +27,13 @@ class Material {
   // Energy stored in point q (elastic strain energy, or internal energy), for the
   // energy balance of run.json; zero where the law keeps no such account.
   virtual double stored_energy(const Points<Dim>&, std::size_t) const { return 0.0; }
+  // The sum of stored_energy over points [begin, end), in an order fixed by the range
+  // alone (a law may sum in lanes that vectorise).
+  virtual double stored_energy_sum(const Points<Dim>& p, std::size_t begin, std::size_t end) const {
+    double s = 0.0;
+    for (std::size_t q = begin; q < end; ++q) s += stored_energy(p, q);
+    return s;
+  }
   // The work dt q : D of the artificial viscous stress q, which a law that keeps an
   // energy account (Mie-Gruneisen) adds as heat; nothing by default.
   virtual void add_viscous_heat(const Points<Dim>&, const std::array<double*, Dim * Dim>&, double) {}

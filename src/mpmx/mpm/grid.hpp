@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace mpmx::mpm {
@@ -44,6 +45,13 @@ struct Grid {
   // unless the scheme is DDMP: T_j = sum_p V_p sigma_p S_j (1 - alpha_p), zero between
   // steps, and the smoothed velocity gradient H_j = sum_i K_ji v_i.
   std::array<std::vector<double>, Dim * Dim> smooth_stress, smooth_gradient;
+  // Per node line along x (active_lines.hpp): the x-ranges [lo, hi] of the nodes this
+  // step works on (`active`; empty where lo > hi) and those with the last step's
+  // (`span`). The whole grid until a 2-D or 3-D step has marked them (1-D: always). Nodes outside keep
+  // zero mass, momentum and force; their velocities are not read (a face's prescribed
+  // velocity there is that of the last step that reached them).
+  std::vector<int> active_lo, active_hi, span_lo, span_hi;
+  std::vector<std::uint8_t> box_marks;  // scratch of active_lines.cpp
 
   Grid() = default;
   Grid(std::array<double, Dim> lo, std::array<double, Dim> hi, std::array<int, Dim> n)
@@ -63,6 +71,10 @@ struct Grid {
       velocity_L[d].assign(storage, 0.0);
       force[d].assign(storage, 0.0);
     }
+    active_lo.assign(lines(), 0);
+    active_hi.assign(lines(), cells[0]);
+    span_lo = active_lo;
+    span_hi = active_hi;
   }
 
   int nodes(int d) const { return cells[d] + 1; }

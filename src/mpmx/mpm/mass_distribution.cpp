@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "mpmx/mpm/active_lines.hpp"
 #include "mpmx/mpm/node_runs.hpp"
 
 namespace mpmx::mpm {
@@ -39,7 +40,7 @@ void build(const Grid<Dim>& g, const std::vector<std::ptrdiff_t>& off, Source so
     part.clear();
     for (std::size_t l = begin; l < end; ++l) {
       const std::size_t i0 = g.index(g.line_first(l));
-      for (int x = 0; x <= g.cells[0]; ++x) {
+      for (int x = g.active_lo[l]; x <= g.active_hi[l]; ++x) {  // the rest has no mass near
         const std::size_t src = i0 + static_cast<std::size_t>(x);
         if (!source(src)) continue;
         const std::uint32_t first = static_cast<std::uint32_t>(part.node.size());
@@ -88,26 +89,19 @@ void gather(const SmallMassMap& map, std::vector<double>& v, int threads) {
   for (std::size_t s = 0; s < map.source.size(); ++s) v[map.source[s]] = mean[s];
 }
 
-// near = the nodes within one node of a node with mass (3^d box).
-template <int Dim>
-void mark_near(const Grid<Dim>& g, SmallMassMaps& maps, int threads) {
-  const std::size_t n = g.storage;
-  maps.near.resize(n);
-  maps.spread.resize(n);
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::size_t i = 0; i < n; ++i) maps.spread[i] = g.mass[i] > 0.0;
-  if (dilate_marks(g, maps.spread.data(), maps.near.data(), threads) != maps.near.data()) maps.near.swap(maps.spread);
-}
-
 }  // namespace
 
 template <int Dim>
 void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& maps, int threads) {
   const auto off = neighbourhood(g);
   // C0's sources: the empty nodes next to a node with mass.
-  mark_near(g, maps, threads);
-  build<Dim>(g, off, [&](std::size_t l) { return maps.near[l] && !(g.mass[l] > 0.0); }, false, maps.c0, maps.parts,
-             threads);  // eq. 7.4
+  auto empty_near_mass = [&](std::size_t l) {
+    if (g.mass[l] > 0.0) return false;
+    for (const std::ptrdiff_t o : off)
+      if (g.mass[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(l) + o)] > 0.0) return true;
+    return false;
+  };
+  build<Dim>(g, off, empty_near_mass, false, maps.c0, maps.parts, threads);  // eq. 7.4
   build<Dim>(g, off, [&](std::size_t l) { return g.mass[l] > 0.0 && g.mass[l] <= m_eps; }, true, maps.c1,
              maps.parts, threads);  // eq. 7.5
   for (int a = 0; a < Dim; ++a) {
@@ -119,9 +113,11 @@ void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& map
 template <int Dim>
 void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps, VelocityWeights w, int threads) {
   for (auto& c : g.gradient_velocity) c.resize(g.storage);
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::size_t i = 0; i < g.storage; ++i)
-    for (int a = 0; a < Dim; ++a) g.gradient_velocity[a][i] = w.L * g.velocity_L[a][i] + w.n * g.velocity[a][i];
+  // On the active nodes (active_lines.hpp): the gradients read no other.
+  for_each_range(g, g.active_lo, g.active_hi, threads, [&](std::size_t, std::size_t i0, int lo, int hi) {
+    for (std::size_t i = i0 + static_cast<std::size_t>(lo); i <= i0 + static_cast<std::size_t>(hi); ++i)
+      for (int a = 0; a < Dim; ++a) g.gradient_velocity[a][i] = w.L * g.velocity_L[a][i] + w.n * g.velocity[a][i];
+  });
   for (int a = 0; a < Dim; ++a) adjoint_velocity(maps, g.gradient_velocity[a], threads);
 }
 

@@ -30,7 +30,6 @@ struct SmallMassMap {
 };
 struct SmallMassMaps {
   SmallMassMap c0, c1;  // eqs. 7.4 and 7.5, built from this step's nodal masses
-  std::vector<char> near, spread;  // nodes next to one with mass; scratch of the dilation
   std::vector<SmallMassMap> parts;  // scratch: the maps of runs of node lines, built apart
 };
 

@@ -59,15 +59,15 @@ void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies
   } else {
     // Over lines of nodes along x, taken by threads; each line's sums kept apart and added
     // in line order, so the tallies do not depend on the thread count.
+    // Only the span's nodes (active_lines.hpp): elsewhere mass and force are zero.
     const std::size_t lines = g.lines();
-    const int nx = g.cells[0] + 1;
     constexpr int kSums = 1 + 2 * Dim;  // mass, force sum and |force| per component
     std::vector<double> sums(lines * kSums, 0.0);
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
     for (std::size_t l = 0; l < lines; ++l) {
       const std::size_t i0 = g.index(g.line_first(l));
       double* sum = &sums[l * kSums];
-      for (int x = 0; x < nx; ++x) {
+      for (int x = g.span_lo[l]; x <= g.span_hi[l]; ++x) {
         const std::size_t i = i0 + static_cast<std::size_t>(x);
         sum[0] += g.mass[i];
         for (int a = 0; a < Dim; ++a) {
@@ -98,7 +98,7 @@ void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies
       bool line_on_face = false;  // most lines are inside: no face loop for their inner nodes
       for (int d = 1; d < Dim; ++d) line_on_face = line_on_face || idx[d] == 0 || idx[d] == g.cells[d];
       double* face_sum = &added_by_faces[l * kFace];
-      for (int x = 0; x < nx; ++x) {
+      for (int x = g.span_lo[l]; x <= g.span_hi[l]; ++x) {
         idx[0] = x;
         const std::size_t i = i0 + static_cast<std::size_t>(x);
         const bool on_face = line_on_face || x == 0 || x == g.cells[0];

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "mpmx/mpm/active_lines.hpp"
 #include "mpmx/mpm/grid.hpp"
 #include "mpmx/mpm/particles.hpp"
 #include "mpmx/mpm/shape/ddmp_operator.hpp"
@@ -104,10 +105,14 @@ double g2p_kernel(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool mo
 // strain) instead of the current V.
 template <int Dim>
 void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume, Grid<Dim>& g, int threads = 1) {
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && Dim > 1)
-  for (std::size_t i = 0; i < g.storage; ++i) {
-    g.mass[i] = 0.0;
-    for (int d = 0; d < Dim; ++d) g.momentum[d][i] = g.force[d][i] = 0.0;
+  if constexpr (Dim == 1) {
+    for (std::size_t i = 0; i < g.storage; ++i) {
+      g.mass[i] = 0.0;
+      g.momentum[0][i] = g.force[0][i] = 0.0;
+    }
+  } else {
+    clear_active(g, threads);  // what the last step wrote
+    mark_active_lines(g, st, threads);
   }
   const std::vector<double>& vol = reference_volume ? p.volume0 : p.volume;
   const bool smooth = st.smoothed();
