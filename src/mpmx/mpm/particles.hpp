@@ -73,11 +73,12 @@ struct Stencil {
   std::vector<double> S;                     // [p * width + k]
   std::array<std::vector<double>, Dim> G;    // [d][p * width + k]
   // DDMP's factored gradient (empty otherwise): R [p * width + k], the operator's
-  // factors along each axis, the nodes the points touch (sorted) and the real nodes
-  // within one of them (where the smoothed force lands).
+  // factors along each axis, and per storage node whether a point's box holds it
+  // ([0, storage)) and whether it lies within one node of such a node ([storage,
+  // 2 storage): where the smoothed force lands).
   std::vector<double> R;
   std::shared_ptr<const std::vector<shape::DdmpTable>> smooth;  // one per axis
-  std::vector<std::uint32_t> smooth_nodes, smooth_reach;
+  std::vector<std::uint8_t> smooth_marks;
 
   bool smoothed() const { return !R.empty(); }
 

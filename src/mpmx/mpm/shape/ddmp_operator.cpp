@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstddef>
 
+#include "mpmx/mpm/active_lines.hpp"
 #include "mpmx/mpm/node_runs.hpp"
 #include "mpmx/mpm/shape/ddmp.hpp"
 
@@ -42,6 +43,29 @@ std::array<int, Dim> axis_indices(const Grid<Dim>& g, std::size_t i) {
   return s;
 }
 
+// Storage indices along each axis of line l's nodes (x left to the caller).
+template <int Dim>
+std::array<int, Dim> axis_indices_of_line(const Grid<Dim>& g, std::size_t l) {
+  auto s = g.line_first(l);
+  for (int a = 0; a < Dim; ++a) s[a] += Grid<Dim>::ghost;
+  return s;
+}
+
+// Calls f(storage index, storage indices along each axis) for every marked node of the
+// grid's active lines; lines on the threads, so one writer per node.
+template <int Dim, class F>
+void for_each_marked(const Grid<Dim>& g, const std::uint8_t* mark, int threads, F&& f) {
+  for_each_range(g, g.active_lo, g.active_hi, threads, [&](std::size_t l, std::size_t i0, int lo, int hi) {
+    auto s = axis_indices_of_line(g, l);
+    for (int x = lo; x <= hi; ++x) {
+      const std::size_t i = i0 + static_cast<std::size_t>(x);
+      if (!mark[i]) continue;
+      s[0] = x + Grid<Dim>::ghost;
+      f(i, s);
+    }
+  });
+}
+
 // K^d_{j, j+o} for every d, from node j's axis indices sj: D along d, M / V across.
 template <int Dim>
 void row_entries(const Stencil<Dim>& st, const std::array<int, Dim>& sj, const std::array<int, Dim>& o,
@@ -63,40 +87,23 @@ void row_entries(const Stencil<Dim>& st, const std::array<int, Dim>& sj, const s
 }  // namespace
 
 template <int Dim>
-void list_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std::uint8_t>& mark, int threads) {
+void mark_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std::uint8_t>& scratch, int threads) {
   const std::size_t n = g.storage;
-  mark.resize(2 * n);
-  std::uint8_t* touched = mark.data();
-  std::uint8_t* spread = mark.data() + n;
+  st.smooth_marks.resize(2 * n);
+  scratch.resize(n);
+  std::uint8_t* touched = st.smooth_marks.data();
+  std::uint8_t* reach = touched + n;
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t i = 0; i < n; ++i) touched[i] = 0;
   // Points sharing a node mark it alike: relaxed atomic stores of the same value.
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t e = 0; e < st.node.size(); ++e)
     std::atomic_ref<std::uint8_t>(touched[st.node[e]]).store(1, std::memory_order_relaxed);
-  // Lists in storage order, built by runs and joined in order (any thread count, same list).
-  std::vector<std::vector<std::uint32_t>> parts;
-  auto join = [&parts](std::vector<std::uint32_t>& list) {
-    list.clear();
-    for (const auto& part : parts) list.insert(list.end(), part.begin(), part.end());
-  };
-  build_in_runs(n, threads, parts, [&](std::vector<std::uint32_t>& part, std::size_t begin, std::size_t end) {
-    part.clear();
-    for (std::size_t i = begin; i < end; ++i)
-      if (touched[i]) part.push_back(static_cast<std::uint32_t>(i));
-  });
-  join(st.smooth_nodes);
-  // The reach: the 3^d box around every touched node, then its real nodes line by line.
-  const std::uint8_t* reach = dilate_marks(g, touched, spread, threads);
-  build_in_runs(g.lines(), threads, parts, [&](std::vector<std::uint32_t>& part, std::size_t begin, std::size_t end) {
-    part.clear();
-    for (std::size_t l = begin; l < end; ++l) {
-      const std::size_t i0 = g.index(g.line_first(l));
-      for (std::size_t i = i0; i <= i0 + static_cast<std::size_t>(g.cells[0]); ++i)
-        if (reach[i]) part.push_back(static_cast<std::uint32_t>(i));
-    }
-  });
-  join(st.smooth_reach);
+  // The reach: the 3^d box around every touched node.
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t i = 0; i < n; ++i) reach[i] = touched[i];
+  const std::uint8_t* out = dilate_marks(g, reach, scratch.data(), threads);
+  if (out != reach) std::copy(out, out + n, reach);
 }
 
 namespace {
@@ -137,41 +144,39 @@ void add_smoothed_force(Grid<Dim>& g, const Stencil<Dim>& st, int threads) {
   const Neighbourhood<Dim> nb(g);
   const InteriorRow<Dim> row(st, g, nb);
   const auto& T = g.smooth_stress;
-  const auto& reach = st.smooth_reach;
-  // Each node gathers from its neighbours j = i - o the entry K^d_{j, i}: one writer per
-  // node, the same sum in the same order for any thread count. A node two inside the
-  // grid has only interior rows around it.
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::size_t k = 0; k < reach.size(); ++k) {
-    const std::size_t i = reach[k];
-    const auto si = axis_indices(g, i);
-    double f[Dim] = {};
-    if (inside(g, si, 2)) {
-      for (std::size_t t = 0; t < row.K.size(); ++t) {
-        const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[row.c[t]]);
-        const int d = row.d[t];
-        for (int a = 0; a < Dim; ++a) f[a] += T[a * Dim + d][j] * row.K[t];
-      }
-    } else {
-      for (int c = 0; c < nb.n; ++c) {
-        std::array<int, Dim> sj, o;
-        for (int a = 0; a < Dim; ++a) {
-          o[a] = nb.o[c][a];
-          sj[a] = si[a] - o[a];
+  const std::uint8_t* touched = st.smooth_marks.data();
+  const std::uint8_t* reach = touched + g.storage;
+  // Each node of the reach gathers from its neighbours j = i - o the entry K^d_{j, i}:
+  // one writer per node, the same sum in the same order for any thread count. A node two
+  // inside the grid has only interior rows around it.
+  for_each_marked(g, reach, threads, [&](std::size_t i, const std::array<int, Dim>& si) {
+      double f[Dim] = {};
+      if (inside(g, si, 2)) {
+        for (std::size_t t = 0; t < row.K.size(); ++t) {
+          const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[row.c[t]]);
+          const int d = row.d[t];
+          for (int a = 0; a < Dim; ++a) f[a] += T[a * Dim + d][j] * row.K[t];
         }
-        const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[c]);
-        double K[Dim];
-        row_entries<Dim>(st, sj, o, K);
-        for (int a = 0; a < Dim; ++a)
-          for (int d = 0; d < Dim; ++d) f[a] += T[a * Dim + d][j] * K[d];
+      } else {
+        for (int c = 0; c < nb.n; ++c) {
+          std::array<int, Dim> sj, o;
+          for (int a = 0; a < Dim; ++a) {
+            o[a] = nb.o[c][a];
+            sj[a] = si[a] - o[a];
+          }
+          const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[c]);
+          double K[Dim];
+          row_entries<Dim>(st, sj, o, K);
+          for (int a = 0; a < Dim; ++a)
+            for (int d = 0; d < Dim; ++d) f[a] += T[a * Dim + d][j] * K[d];
+        }
       }
-    }
-    for (int a = 0; a < Dim; ++a) g.force[a][i] -= f[a];
-  }
-  const auto& nodes = st.smooth_nodes;
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::size_t k = 0; k < nodes.size(); ++k)
-    for (int c = 0; c < Dim * Dim; ++c) g.smooth_stress[c][nodes[k]] = 0.0;
+      for (int a = 0; a < Dim; ++a) g.force[a][i] -= f[a];
+  });
+  // T back to zero where the points put it.
+  for_each_marked(g, touched, threads, [&g](std::size_t i, const std::array<int, Dim>&) {
+    for (int c = 0; c < Dim * Dim; ++c) g.smooth_stress[c][i] = 0.0;
+  });
 }
 
 namespace {
@@ -183,34 +188,31 @@ void smoothed_gradient_of(const Stencil<Dim>& st, Velocity v, Grid<Dim>& g, int 
     if (h.size() != g.storage) h.assign(g.storage, 0.0);
   const Neighbourhood<Dim> nb(g);
   const InteriorRow<Dim> row(st, g, nb);
-  const auto& nodes = st.smooth_nodes;
+  const std::uint8_t* touched = st.smooth_marks.data();
   const std::size_t last = g.storage;
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    const std::size_t j = nodes[k];
-    const auto sj = axis_indices(g, j);
-    double H[Dim][Dim] = {};
-    if (inside(g, sj, 1)) {  // an interior row
-      for (std::size_t t = 0; t < row.K.size(); ++t) {
-        const std::size_t i = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(j) + nb.step[row.c[t]]);
-        const int b = row.d[t];
-        for (int a = 0; a < Dim; ++a) H[a][b] += row.K[t] * v(a, i);
-      }
-    } else {
-      for (int c = 0; c < nb.n; ++c) {
-        const std::ptrdiff_t i = static_cast<std::ptrdiff_t>(j) + nb.step[c];
-        if (i < 0 || static_cast<std::size_t>(i) >= last) continue;  // a clamped ghost's row is zero
-        double K[Dim];
-        row_entries<Dim>(st, sj, nb.o[c], K);
-        for (int a = 0; a < Dim; ++a) {
-          const double va = v(a, static_cast<std::size_t>(i));
-          for (int b = 0; b < Dim; ++b) H[a][b] += K[b] * va;
+  for_each_marked(g, touched, threads, [&](std::size_t j, const std::array<int, Dim>& sj) {
+      double H[Dim][Dim] = {};
+      if (inside(g, sj, 1)) {  // an interior row
+        for (std::size_t t = 0; t < row.K.size(); ++t) {
+          const std::size_t i = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(j) + nb.step[row.c[t]]);
+          const int b = row.d[t];
+          for (int a = 0; a < Dim; ++a) H[a][b] += row.K[t] * v(a, i);
+        }
+      } else {
+        for (int c = 0; c < nb.n; ++c) {
+          const std::ptrdiff_t i = static_cast<std::ptrdiff_t>(j) + nb.step[c];
+          if (i < 0 || static_cast<std::size_t>(i) >= last) continue;  // a clamped ghost's row is zero
+          double K[Dim];
+          row_entries<Dim>(st, sj, nb.o[c], K);
+          for (int a = 0; a < Dim; ++a) {
+            const double va = v(a, static_cast<std::size_t>(i));
+            for (int b = 0; b < Dim; ++b) H[a][b] += K[b] * va;
+          }
         }
       }
-    }
-    for (int a = 0; a < Dim; ++a)
-      for (int b = 0; b < Dim; ++b) g.smooth_gradient[a * Dim + b][j] = H[a][b];
-  }
+      for (int a = 0; a < Dim; ++a)
+        for (int b = 0; b < Dim; ++b) g.smooth_gradient[a * Dim + b][j] = H[a][b];
+  });
 }
 
 }  // namespace
@@ -288,7 +290,7 @@ Stencil<Dim> expanded(const Stencil<Dim>& st, const Grid<Dim>& g) {
 }
 
 #define MPMX_DDMP_OPERATOR(D)                                                                                  \
-  template void list_smoothing_nodes<D>(const Grid<D>&, Stencil<D>&, std::vector<std::uint8_t>&, int);             \
+  template void mark_smoothing_nodes<D>(const Grid<D>&, Stencil<D>&, std::vector<std::uint8_t>&, int);             \
   template void add_smoothed_force<D>(Grid<D>&, const Stencil<D>&, int);                                       \
   template void smoothed_gradient<D>(const Stencil<D>&, const std::array<const double*, D>&, Grid<D>&, int);   \
   template void smoothed_gradient<D>(const Stencil<D>&, const std::array<const double*, D>&,                   \

@@ -18,10 +18,12 @@
 
 namespace mpmx::mpm::shape {
 
-// Fills st.smooth_nodes (every node a point's box holds) and st.smooth_reach (the real
-// nodes within one node of them); `mark` is scratch.
+// Fills st.smooth_marks: the nodes a point's box holds and those within one node of
+// them (the reach); `scratch` is scratch.
 template <int Dim>
-void list_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std::uint8_t>& mark, int threads = 1);
+void mark_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std::uint8_t>& scratch, int threads = 1);
+
+// The two below visit the grid's active lines (active_lines.hpp), which p2g marks.
 
 // f_i -= sum_d sum_j T^d_j K^d_ji at the reach, then T back to zero.
 template <int Dim>

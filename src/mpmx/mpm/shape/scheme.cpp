@@ -369,7 +369,7 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
     }
     set_nodes<Dim>(g, ax, W, width, &st.node[e]);
   }
-  if (factored) shape::list_smoothing_nodes(g, st, mark_, threads_);
+  if (factored) shape::mark_smoothing_nodes(g, st, mark_, threads_);
 }
 
 template class ShapeEvaluator<1>;

@@ -67,7 +67,7 @@ class ShapeEvaluator {
   SchemeOptions opt_;
   int threads_ = 1;
   std::shared_ptr<std::vector<shape::DdmpTable>> ddmp_;  // one per axis (DDMP schemes), shared with the stencils
-  mutable std::vector<std::uint8_t> mark_;  // scratch: the nodes DDMP's points touch
+  mutable std::vector<std::uint8_t> mark_;  // scratch of DDMP's node marks
 };
 
 template <class G>
