@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# DDMP-MD of the copper jet in 2-D against the 1-D H2 run, in one invocation (issue 14's
+# speed target: the jet's atom-steps per second on two threads no lower than H2's).
+# The jet: examples/J2_ddmp_md_20x10_1ppc_tiny.toml with the study's 500-atom boxes
+# (`[material.md] cells = 5`), to 0.5 ps (200 points x 20 macro steps x 25 MD steps),
+# on one thread and two; H2: examples/H2_strong_0K_256.toml (400 points x 256 atoms, 1-D)
+# to 2 ps on two. Neither compares with its reference. Prints atom-steps per second of
+# wall time, the jet's two-thread speed-up (target 1.8x) and the jet against H2.
+# Usage: bench/multiscale_jet.sh BUILD_DIR
+set -euo pipefail
+build=$(cd "${1:?usage: multiscale_jet.sh BUILD_DIR}" && pwd)
+src=$(cd "$(dirname "$0")/.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+# (The EAM file is found in /usr/share/lammps/potentials wherever the deck is.)
+sed -e 's/^cells = 3 .*/cells = 5/' -e 's/^end = 1.5 .*/end = 0.5/' -e 's/^times = .*/times = [0.5]/' \
+  -e '/^\[reference\]/,$d' "$src/examples/J2_ddmp_md_20x10_1ppc_tiny.toml" > "$work/jet.toml"
+sed -e 's/^end = 40.0/end = 2.0/' -e 's/^times = .*/times = [2.0]/' -e '/^\[reference\]/,$d' \
+  "$src/examples/H2_strong_0K_256.toml" > "$work/h2.toml"
+grep -q '^cells = 5$' "$work/jet.toml" || { echo "J2 tiny deck: no 'cells = 3' line to widen" >&2; exit 1; }
+run() { "$build/mpmx" run "$work/$1" --out "$work/$2" --threads "$3" --quiet --no-plot > /dev/null; }
+run jet.toml jet1 1
+run jet.toml jet2 2
+run h2.toml h2 2
+same=yes
+diff -rq "$work/jet1/vtk" "$work/jet2/vtk" > /dev/null || same=no
+/usr/bin/python3 - "$work" "$same" <<'PY'
+import json, sys
+work, same = sys.argv[1:]
+rate = lambda d: (lambda j: j["md_atom_steps"] / j["wall_seconds"])(json.load(open(f"{work}/{d}/run.json")))
+j1, j2, h2 = rate("jet1"), rate("jet2"), rate("h2")
+print(f"jet DDMP-MD (2-D, 500-atom boxes), 1 thread : {j1:10.3e} atom-steps/s")
+print(f"jet DDMP-MD (2-D, 500-atom boxes), 2 threads: {j2:10.3e} atom-steps/s  {j2 / j1:.2f}x one (target 1.8x)"
+      f"; particles identical: {same}")
+print(f"H2 DDMP-MD (1-D, 256-atom boxes),  2 threads: {h2:10.3e} atom-steps/s")
+print(f"jet / H2 on two threads: {j2 / h2:.2f} (target >= 1)")
+PY
