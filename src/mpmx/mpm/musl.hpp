@@ -5,15 +5,19 @@
 // velocity gradient is read from these (through the small-mass distribution's adjoint
 // where it is on) rather than from v^L or v^{n+1/2} (`update_velocity = "musl"`). The extra map smooths the gradient the stress sees,
 // which is what keeps colliding bodies' energy (docs/validation.md, N3).
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <type_traits>
 #include <vector>
 
+#include "mpmx/mpm/active_lines.hpp"
 #include "mpmx/mpm/bcs.hpp"
 #include "mpmx/mpm/grid.hpp"
 #include "mpmx/mpm/mass_distribution.hpp"
 #include "mpmx/mpm/particles.hpp"
 #include "mpmx/mpm/shape/ddmp_operator.hpp"
+#include "mpmx/mpm/transfer.hpp"
 
 namespace mpmx::mpm {
 
@@ -23,15 +27,8 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
                    int threads) {
   const int w = st.width;
   const std::size_t n = p.size();
-  for (int a = 0; a < Dim; ++a) v[a].assign(g.storage, 0.0);
-  for (std::size_t q = 0; q < n; ++q) {  // one thread: every node sums in point order
-    for (int k = 0; k < w; ++k) {
-      const std::size_t e = q * w + k;
-      const double mS = p.mass[q] * st.S[e];
-      for (int a = 0; a < Dim; ++a) v[a][st.node[e]] += mS * p.v[a][q];
-    }
-  }
-  g.for_each_node([&](std::size_t i, const std::array<int, Dim>& idx) {
+  // Node i's velocity from the points' momenta, or its face's at t where one holds it.
+  auto node_velocity = [&](std::size_t i, const std::array<int, Dim>& idx) {
     const double m = g.mass[i];
     for (int a = 0; a < Dim; ++a) {
       double vi = m > 0.0 ? v[a][i] / m : 0.0;
@@ -45,7 +42,40 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
       }
       v[a][i] = vi;
     }
-  });
+  };
+  auto scatter = [&](const std::uint32_t* list, std::size_t count) {
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t q = list ? list[k] : k;
+      for (int e = 0; e < w; ++e) {
+        const std::size_t at = q * w + e;
+        const double mS = p.mass[q] * st.S[at];
+        for (int a = 0; a < Dim; ++a) v[a][st.node[at]] += mS * p.v[a][q];
+      }
+    }
+  };
+  if constexpr (Dim == 1) {
+    for (int a = 0; a < Dim; ++a) v[a].assign(g.storage, 0.0);
+    scatter(nullptr, n);
+    g.for_each_node(node_velocity);
+  } else {
+    // On the grid's active lines (active_lines.hpp, where the stencils' nodes lie), the
+    // momenta scattered in slabs as p2g does (the same sums for any thread count), the
+    // velocities over the span (nodes the points left get v = 0).
+    for (auto& c : v)
+      if (c.size() != g.storage) c.assign(g.storage, 0.0);
+    for_each_range(g, g.active_lo, g.active_hi, threads, [&](std::size_t, std::size_t i0, int lo, int hi) {
+      for (int a = 0; a < Dim; ++a)
+        std::fill(&v[a][i0 + static_cast<std::size_t>(lo)], &v[a][i0 + static_cast<std::size_t>(hi)] + 1, 0.0);
+    });
+    detail::scatter_in_slabs(g, st, n, threads, scatter);
+    for_each_range(g, g.span_lo, g.span_hi, threads, [&](std::size_t l, std::size_t i0, int lo, int hi) {
+      auto idx = g.line_first(l);
+      for (int x = lo; x <= hi; ++x) {
+        idx[0] = x;
+        node_velocity(i0 + static_cast<std::size_t>(x), idx);
+      }
+    });
+  }
   if (small_mass)  // the gradient reads the adjoint of the force distribution (eq. 7.7)
     for (int a = 0; a < Dim; ++a) adjoint_velocity(*small_mass, v[a], threads);
   const bool smooth = st.smoothed();

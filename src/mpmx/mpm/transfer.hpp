@@ -97,6 +97,47 @@ double g2p_kernel(const Grid<Dim>& g, const Stencil<Dim>& st, double dt, bool mo
   return check;
 }
 
+// Runs kernel(list, count) over the particles in slabs of box[Dim-1] node rows along the
+// last axis, by the row of each particle's first node: two slabs of the same parity
+// never touch the same node, so the even slabs scatter at once, then the odd ones. Every
+// node sums its particles in the same order (slab by slab, particles in order) for any
+// thread count (2-D, 3-D).
+template <int Dim, class Kernel>
+void scatter_in_slabs(const Grid<Dim>& g, const Stencil<Dim>& st, std::size_t n, int threads, Kernel&& kernel) {
+  const int w = std::max(st.box[Dim - 1], 1);
+  const std::size_t row = static_cast<std::size_t>(g.stride[Dim - 1]);
+  const std::size_t slabs = g.storage / row / static_cast<std::size_t>(w) + 1;
+  // The particles by slab, in index order within each: a counting sort over runs of
+  // particles (each run counts, then writes after the earlier runs of its slab).
+  std::vector<std::uint32_t> start(slabs + 1, 0), order(n);
+  const std::size_t runs = std::max<std::size_t>(1, std::min<std::size_t>(n, static_cast<std::size_t>(threads)));
+  std::vector<std::uint32_t> count(runs * slabs, 0), slab(n);
+  const std::uint32_t per_slab = static_cast<std::uint32_t>(row * static_cast<std::size_t>(w));
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
+  for (std::size_t r = 0; r < runs; ++r)
+    for (std::size_t q = n * r / runs; q < n * (r + 1) / runs; ++q) {
+      slab[q] = static_cast<std::uint32_t>(st.node[q * st.width]) / per_slab;  // node indices fit 32 bits
+      ++count[r * slabs + slab[q]];
+    }
+  for (std::size_t s = 0; s < slabs; ++s) {
+    std::uint32_t at = start[s];
+    for (std::size_t r = 0; r < runs; ++r) {
+      const std::uint32_t c = count[r * slabs + s];
+      count[r * slabs + s] = at;  // where run r's first particle of slab s goes
+      at += c;
+    }
+    start[s + 1] = at;
+  }
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
+  for (std::size_t r = 0; r < runs; ++r)
+    for (std::size_t q = n * r / runs; q < n * (r + 1) / runs; ++q)
+      order[count[r * slabs + slab[q]]++] = static_cast<std::uint32_t>(q);
+  for (std::size_t parity = 0; parity < 2; ++parity) {
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1)
+    for (std::size_t s = parity; s < slabs; s += 2) kernel(order.data() + start[s], start[s + 1] - start[s]);
+  }
+}
+
 }  // namespace detail
 
 // Steps 3-5: nodal mass (eq. 3.11), momentum for the velocity re-mapped from particles
@@ -137,43 +178,7 @@ void p2g(const Particles<Dim>& p, const Stencil<Dim>& st, bool reference_volume,
   if constexpr (Dim == 1) {
     kernel(nullptr, p.size());
   } else {
-    // Slabs of box[Dim-1] node rows along the last axis, by the row of each particle's
-    // first node: two slabs of the same parity never touch the same node, so the even
-    // slabs scatter at once, then the odd ones. Every node sums its particles in the
-    // same order (slab by slab, particles in order) for any thread count.
-    const int w = std::max(st.box[Dim - 1], 1);
-    const std::size_t row = static_cast<std::size_t>(g.stride[Dim - 1]);
-    const std::size_t n = p.size();
-    const std::size_t slabs = g.storage / row / static_cast<std::size_t>(w) + 1;
-    // The particles by slab, in index order within each: a counting sort over runs of
-    // particles (each run counts, then writes after the earlier runs of its slab).
-    std::vector<std::uint32_t> start(slabs + 1, 0), order(n);
-    const std::size_t runs = std::max<std::size_t>(1, std::min<std::size_t>(n, static_cast<std::size_t>(threads)));
-    std::vector<std::uint32_t> count(runs * slabs, 0), slab(n);
-    const std::uint32_t per_slab = static_cast<std::uint32_t>(row * static_cast<std::size_t>(w));
-#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
-    for (std::size_t r = 0; r < runs; ++r)
-      for (std::size_t q = n * r / runs; q < n * (r + 1) / runs; ++q) {
-        slab[q] = static_cast<std::uint32_t>(st.node[q * st.width]) / per_slab;  // node indices fit 32 bits
-        ++count[r * slabs + slab[q]];
-      }
-    for (std::size_t s = 0; s < slabs; ++s) {
-      std::uint32_t at = start[s];
-      for (std::size_t r = 0; r < runs; ++r) {
-        const std::uint32_t c = count[r * slabs + s];
-        count[r * slabs + s] = at;  // where run r's first particle of slab s goes
-        at += c;
-      }
-      start[s + 1] = at;
-    }
-#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
-    for (std::size_t r = 0; r < runs; ++r)
-      for (std::size_t q = n * r / runs; q < n * (r + 1) / runs; ++q)
-        order[count[r * slabs + slab[q]]++] = static_cast<std::uint32_t>(q);
-    for (std::size_t parity = 0; parity < 2; ++parity) {
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1)
-      for (std::size_t s = parity; s < slabs; s += 2) kernel(order.data() + start[s], start[s + 1] - start[s]);
-    }
+    detail::scatter_in_slabs(g, st, p.size(), threads, kernel);
   }
   if (smooth) shape::add_smoothed_force(g, st, threads);  // eq. 7.2's smoothed part
 }
