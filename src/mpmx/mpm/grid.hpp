@@ -47,9 +47,9 @@ struct Grid {
   std::array<std::vector<double>, Dim * Dim> smooth_stress, smooth_gradient;
   // Per node line along x (active_lines.hpp): the x-ranges [lo, hi] of the nodes this
   // step works on (`active`; empty where lo > hi) and those with the last step's
-  // (`span`). The whole grid until a 2-D or 3-D step has marked them (1-D: always). Nodes outside keep
-  // zero mass, momentum and force; their velocities are not read (a face's prescribed
-  // velocity there is that of the last step that reached them).
+  // (`span`). The whole grid until a 2-D or 3-D step has marked them (1-D: always).
+  // Nodes outside keep zero mass, momentum and force; their velocities are not read (a
+  // face's prescribed velocity there is that of the last step that reached them).
   std::vector<int> active_lo, active_hi, span_lo, span_hi;
   std::vector<std::uint8_t> box_marks;  // scratch of active_lines.cpp
 

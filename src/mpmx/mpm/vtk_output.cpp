@@ -69,9 +69,12 @@ void VtkOutput<Dim>::record(const State<Dim>& s) {
   std::array<double, 3> origin{}, spacing{1.0, 1.0, 1.0};
   for (int d = 0; d < Dim; ++d) nodes[d] = g.cells[d] + 1, origin[d] = g.lower[d], spacing[d] = g.dx[d];
   io::vtk::Field gm{"mass", 1, {}}, gv{"velocity", 3, {}};
+  // A node without mass has no velocity of its own: written as zero (the step does not
+  // visit nodes far from the points, active_lines.hpp, so a face's prescribed value there
+  // would be that of the last step that reached them).
   g.for_each_node([&](std::size_t i, const std::array<int, Dim>&) {
     gm.values.push_back(g.mass[i]);
-    for (int a = 0; a < 3; ++a) gv.values.push_back(a < Dim ? g.velocity_L[a][i] : 0.0);
+    for (int a = 0; a < 3; ++a) gv.values.push_back(a < Dim && g.mass[i] > 0.0 ? g.velocity_L[a][i] : 0.0);
   });
   const std::string gname = fmt::format("vtk/grid_{:06d}.vti", s.step);
   io::vtk::write_image(dir_ + "/" + gname, nodes, origin, spacing, {gm, gv});
