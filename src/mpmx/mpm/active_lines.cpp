@@ -12,6 +12,13 @@ namespace mpmx::mpm {
 template <int Dim>
 void mark_active_lines(Grid<Dim>& g, const Stencil<Dim>& st, int threads) {
   static_assert(Dim > 1);
+  if (*std::min_element(st.box.begin(), st.box.end()) < 1) {  // no box widths: the whole grid
+    std::fill(g.active_lo.begin(), g.active_lo.end(), 0);
+    std::fill(g.active_hi.begin(), g.active_hi.end(), g.cells[0]);
+    g.span_lo = g.active_lo;
+    g.span_hi = g.active_hi;
+    return;
+  }
   const std::size_t lines = g.lines();
   const std::size_t n = st.width > 0 ? st.node.size() / static_cast<std::size_t>(st.width) : 0;
   // Every stencil is a box of the same widths W (clamped into the storage); its first
