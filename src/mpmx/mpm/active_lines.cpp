@@ -60,12 +60,12 @@ void mark_active_lines(Grid<Dim>& g, const Stencil<Dim>& st, int threads) {
       }
     if (lo[l] <= hi[l]) lo[l] = std::max(lo[l], 0), hi[l] = std::min(hi[l], g.cells[0]);
   }
+  // An empty range is (INT_MAX, INT_MIN), so the union of two is their min and max.
   g.span_lo.resize(lines);
   g.span_hi.resize(lines);
   for (std::size_t l = 0; l < lines; ++l) {
-    const bool was = g.active_lo[l] <= g.active_hi[l], is = lo[l] <= hi[l];
-    g.span_lo[l] = !was ? lo[l] : !is ? g.active_lo[l] : std::min(g.active_lo[l], lo[l]);
-    g.span_hi[l] = !was ? hi[l] : !is ? g.active_hi[l] : std::max(g.active_hi[l], hi[l]);
+    g.span_lo[l] = std::min(g.active_lo[l], lo[l]);
+    g.span_hi[l] = std::max(g.active_hi[l], hi[l]);
   }
   g.active_lo.swap(lo);
   g.active_hi.swap(hi);

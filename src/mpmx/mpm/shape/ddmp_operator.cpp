@@ -99,11 +99,13 @@ void mark_smoothing_nodes(const Grid<Dim>& g, Stencil<Dim>& st, std::vector<std:
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t e = 0; e < st.node.size(); ++e)
     std::atomic_ref<std::uint8_t>(touched[st.node[e]]).store(1, std::memory_order_relaxed);
-  // The reach: the 3^d box around every touched node.
+  // The reach: the 3^d box around every touched node. The dilation swaps its two arrays
+  // once per axis, so starting from the one that makes the result land in `reach`.
+  std::uint8_t* start = Dim % 2 == 1 ? scratch.data() : reach;
+  std::uint8_t* other = Dim % 2 == 1 ? reach : scratch.data();
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::size_t i = 0; i < n; ++i) reach[i] = touched[i];
-  const std::uint8_t* out = dilate_marks(g, reach, scratch.data(), threads);
-  if (out != reach) std::copy(out, out + n, reach);
+  for (std::size_t i = 0; i < n; ++i) start[i] = touched[i];
+  dilate_marks(g, start, other, threads);
 }
 
 namespace {
@@ -150,28 +152,28 @@ void add_smoothed_force(Grid<Dim>& g, const Stencil<Dim>& st, int threads) {
   // one writer per node, the same sum in the same order for any thread count. A node two
   // inside the grid has only interior rows around it.
   for_each_marked(g, reach, threads, [&](std::size_t i, const std::array<int, Dim>& si) {
-      double f[Dim] = {};
-      if (inside(g, si, 2)) {
-        for (std::size_t t = 0; t < row.K.size(); ++t) {
-          const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[row.c[t]]);
-          const int d = row.d[t];
-          for (int a = 0; a < Dim; ++a) f[a] += T[a * Dim + d][j] * row.K[t];
-        }
-      } else {
-        for (int c = 0; c < nb.n; ++c) {
-          std::array<int, Dim> sj, o;
-          for (int a = 0; a < Dim; ++a) {
-            o[a] = nb.o[c][a];
-            sj[a] = si[a] - o[a];
-          }
-          const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[c]);
-          double K[Dim];
-          row_entries<Dim>(st, sj, o, K);
-          for (int a = 0; a < Dim; ++a)
-            for (int d = 0; d < Dim; ++d) f[a] += T[a * Dim + d][j] * K[d];
-        }
+    double f[Dim] = {};
+    if (inside(g, si, 2)) {
+      for (std::size_t t = 0; t < row.K.size(); ++t) {
+        const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[row.c[t]]);
+        const int d = row.d[t];
+        for (int a = 0; a < Dim; ++a) f[a] += T[a * Dim + d][j] * row.K[t];
       }
-      for (int a = 0; a < Dim; ++a) g.force[a][i] -= f[a];
+    } else {
+      for (int c = 0; c < nb.n; ++c) {
+        std::array<int, Dim> sj, o;
+        for (int a = 0; a < Dim; ++a) {
+          o[a] = nb.o[c][a];
+          sj[a] = si[a] - o[a];
+        }
+        const std::size_t j = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) - nb.step[c]);
+        double K[Dim];
+        row_entries<Dim>(st, sj, o, K);
+        for (int a = 0; a < Dim; ++a)
+          for (int d = 0; d < Dim; ++d) f[a] += T[a * Dim + d][j] * K[d];
+      }
+    }
+    for (int a = 0; a < Dim; ++a) g.force[a][i] -= f[a];
   });
   // T back to zero where the points put it.
   for_each_marked(g, touched, threads, [&g](std::size_t i, const std::array<int, Dim>&) {
@@ -191,27 +193,27 @@ void smoothed_gradient_of(const Stencil<Dim>& st, Velocity v, Grid<Dim>& g, int 
   const std::uint8_t* touched = st.smooth_marks.data();
   const std::size_t last = g.storage;
   for_each_marked(g, touched, threads, [&](std::size_t j, const std::array<int, Dim>& sj) {
-      double H[Dim][Dim] = {};
-      if (inside(g, sj, 1)) {  // an interior row
-        for (std::size_t t = 0; t < row.K.size(); ++t) {
-          const std::size_t i = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(j) + nb.step[row.c[t]]);
-          const int b = row.d[t];
-          for (int a = 0; a < Dim; ++a) H[a][b] += row.K[t] * v(a, i);
-        }
-      } else {
-        for (int c = 0; c < nb.n; ++c) {
-          const std::ptrdiff_t i = static_cast<std::ptrdiff_t>(j) + nb.step[c];
-          if (i < 0 || static_cast<std::size_t>(i) >= last) continue;  // a clamped ghost's row is zero
-          double K[Dim];
-          row_entries<Dim>(st, sj, nb.o[c], K);
-          for (int a = 0; a < Dim; ++a) {
-            const double va = v(a, static_cast<std::size_t>(i));
-            for (int b = 0; b < Dim; ++b) H[a][b] += K[b] * va;
-          }
+    double H[Dim][Dim] = {};
+    if (inside(g, sj, 1)) {  // an interior row
+      for (std::size_t t = 0; t < row.K.size(); ++t) {
+        const std::size_t i = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(j) + nb.step[row.c[t]]);
+        const int b = row.d[t];
+        for (int a = 0; a < Dim; ++a) H[a][b] += row.K[t] * v(a, i);
+      }
+    } else {
+      for (int c = 0; c < nb.n; ++c) {
+        const std::ptrdiff_t i = static_cast<std::ptrdiff_t>(j) + nb.step[c];
+        if (i < 0 || static_cast<std::size_t>(i) >= last) continue;  // a clamped ghost's row is zero
+        double K[Dim];
+        row_entries<Dim>(st, sj, nb.o[c], K);
+        for (int a = 0; a < Dim; ++a) {
+          const double va = v(a, static_cast<std::size_t>(i));
+          for (int b = 0; b < Dim; ++b) H[a][b] += K[b] * va;
         }
       }
-      for (int a = 0; a < Dim; ++a)
-        for (int b = 0; b < Dim; ++b) g.smooth_gradient[a * Dim + b][j] = H[a][b];
+    }
+    for (int a = 0; a < Dim; ++a)
+      for (int b = 0; b < Dim; ++b) g.smooth_gradient[a * Dim + b][j] = H[a][b];
   });
 }
 
