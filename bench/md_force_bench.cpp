@@ -1,8 +1,11 @@
-// Micro-benchmarks of the MD engine: one force evaluation and one leapfrog step of fcc
-// Cu (Cu_mishin1) at 500 and 32,000 atoms, double and mixed precision.
+// Micro-benchmarks of the MD engine: ten leapfrog steps of fcc Cu (Cu_mishin1) at 500
+// and 32,000 atoms, double and mixed precision; and one neighbour-list build of the same
+// crystals (skin 1 A), whose cost against a step's is what a box that rebuilds often
+// (a multiscale box under shear and shock) pays.
 #include <benchmark/benchmark.h>
 
 #include "mpmx/md/lattice.hpp"
+#include "mpmx/md/neighbor.hpp"
 #include "mpmx/md/system.hpp"
 
 using namespace mpmx::md;
@@ -25,7 +28,20 @@ void BM_MdStep(benchmark::State& state) {
   state.counters["atom_steps_per_s"] =
       benchmark::Counter(static_cast<double>(s.atoms().size()) * 10 * state.iterations(), benchmark::Counter::kIsRate);
 }
+
+void BM_NeighborBuild(benchmark::State& state) {
+  const System s = make(static_cast<int>(state.range(0)), false);
+  Neighbors nb;
+  for (auto _ : state) {
+    nb.build(s.atoms(), s.box(), s.potential().cutoff(), 1.0);
+    benchmark::DoNotOptimize(nb.list.data());
+  }
+  state.counters["atoms_per_s"] =
+      benchmark::Counter(static_cast<double>(s.atoms().size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["pairs_per_atom"] = static_cast<double>(nb.list.size()) / s.atoms().size();
+}
 }  // namespace
 
+BENCHMARK(BM_NeighborBuild)->Arg(5)->Arg(20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MdStep)->Args({5, 0})->Args({5, 1})->Args({20, 0})->Args({20, 1})->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -8,50 +8,14 @@
 
 #include <cmath>
 #include <random>
-#include <set>
-#include <tuple>
 
 #include "mpmx/md/neighbor.hpp"
 
+#include "pair_set_util.hpp"
+
 using namespace mpmx::md;
-
-namespace {
-
-using Pair = std::tuple<int, int, int, int, int>;  // i <= j, image of j relative to i
-
-Pair canonical(int i, int j, int a, int b, int c) {
-  if (i > j || (i == j && std::make_tuple(a, b, c) < std::make_tuple(0, 0, 0))) return {j, i, -a, -b, -c};
-  return {i, j, a, b, c};
-}
-
-// Every pair of atoms (any image) closer than rc, by brute force.
-std::set<Pair> pairs_within(const Atoms& at, const Box& box, double rc) {
-  std::set<Pair> out;
-  const int n = static_cast<int>(at.size());
-  for (int i = 0; i < n; ++i)
-    for (int j = i; j < n; ++j)
-      for (int a = -3; a <= 3; ++a)
-        for (int b = -3; b <= 3; ++b)
-          for (int c = -3; c <= 3; ++c) {
-            if (i == j && a == 0 && b == 0 && c == 0) continue;
-            const auto s = box.shift(a, b, c);
-            const double dx = at.x[j] + s[0] - at.x[i], dy = at.y[j] + s[1] - at.y[i], dz = at.z[j] + s[2] - at.z[i];
-            if (dx * dx + dy * dy + dz * dz < rc * rc) out.insert(canonical(i, j, a, b, c));
-          }
-  return out;
-}
-
-std::set<Pair> listed(const Neighbors& nb) {
-  std::set<Pair> out;
-  for (int i = 0; i < nb.nlocal; ++i)
-    for (int s = nb.first[i]; s < nb.first[i + 1]; ++s) {
-      const int k = nb.list[s];
-      out.insert(canonical(i, nb.owner[k], nb.n1[k], nb.n2[k], nb.n3[k]));
-    }
-  return out;
-}
-
-}  // namespace
+using mpmx::test::listed;
+using mpmx::test::pairs_within;
 
 TEST(NeighborRebuild, ListHoldsEveryClosePairUnderAffineFlow) {
   std::mt19937 rng(4);

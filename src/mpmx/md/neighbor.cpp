@@ -1,11 +1,13 @@
 #include "mpmx/md/neighbor.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/md/neighbor_search.hpp"
 
 namespace mpmx::md {
 
@@ -13,12 +15,38 @@ namespace {
 // Lexicographic sign of an image shift: picks one of (i, image n of j) and
 // (j, image -n of i) when i == j.
 bool positive(int a, int b, int c) { return a > 0 || (a == 0 && (b > 0 || (b == 0 && c > 0))); }
+
+// Sorts a[0..n), values in [0, 2^bits), by least-significant-digit radix passes of at
+// most 8 bits (tmp holds n): an atom's few dozen entries without the mispredicted
+// comparisons of a comparison sort.
+void radix_sort(int* a, int n, int* tmp, int bits) {
+  const int passes = std::max(1, (bits + 7) / 8);
+  const int digit = (bits + passes - 1) / passes;
+  const int buckets = 1 << digit;
+  int count[256];
+  int* from = a;
+  int* to = tmp;
+  for (int p = 0, shift = 0; p < passes; ++p, shift += digit) {
+    std::fill_n(count, buckets, 0);
+    for (int k = 0; k < n; ++k) ++count[(from[k] >> shift) & (buckets - 1)];
+    for (int b = 0, sum = 0; b < buckets; ++b) {
+      const int c = count[b];
+      count[b] = sum;
+      sum += c;
+    }
+    for (int k = 0; k < n; ++k) to[count[(from[k] >> shift) & (buckets - 1)]++] = from[k];
+    std::swap(from, to);
+  }
+  if (from != a) std::copy_n(from, n, a);
+}
 }  // namespace
 
 void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk, int threads) {
   cutoff = rc;
   skin = sk;
   const double rs = rc + sk;
+  if (atoms.size() >= (1u << 30))  // the search's keys are 2 x an atom's index, in an int
+    throw RunError(fmt::format("{} atoms in one system: at most 2^30 - 1", atoms.size()));
   nlocal = static_cast<int>(atoms.size());
   x.assign(atoms.x.begin(), atoms.x.end());
   y.assign(atoms.y.begin(), atoms.y.end());
@@ -112,44 +140,50 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk, 
   for (int b = 0; b < nbins; ++b) bin_start_[b + 1] += bin_start_[b];
   // The entries in bin order, with their positions and owners beside them (the search
   // reads each bin's as one run).
-  bin_atoms_.resize(nall);
-  bin_owner_.resize(nall);
-  bin_xyz_.resize(3 * static_cast<std::size_t>(nall));
+  // Each entry's key is 2 owner + (1 if its image shift is positive): the half list
+  // keeps (i, k) iff owner(k) > i, or owner(k) == i and k's shift is positive, that is
+  // iff key(k) > 2 i (one comparison, no branch in the search).
+  const std::size_t padded = static_cast<std::size_t>(nall) + kSearchPad;  // the search reads past a run
+  bin_atoms_.assign(padded, 0);
+  bin_key_.assign(padded, 0);
+  bin_x_.assign(padded, 0.0);
+  bin_y_.assign(padded, 0.0);
+  bin_z_.assign(padded, 0.0);
   {
     std::vector<int> fill(bin_start_.begin(), bin_start_.end() - 1);
     for (int k = 0; k < nall; ++k) {
       const int s = fill[bin[k]]++;
       bin_atoms_[s] = k;
-      bin_owner_[s] = owner[k];
-      bin_xyz_[3 * s] = x[k], bin_xyz_[3 * s + 1] = y[k], bin_xyz_[3 * s + 2] = z[k];
+      bin_key_[s] = 2 * owner[k] + (k >= nlocal && positive(n1[k], n2[k], n3[k]));
+      bin_x_[s] = x[k], bin_y_[s] = y[k], bin_z_[s] = z[k];
     }
   }
 
-  // Half list: keep (i, k) iff owner(k) > i, or owner(k) == i and k's image shift is
-  // positive, so each physical pair appears exactly once. Each atom's entries ascending
-  // (locals first, then ghosts): deterministic, whoever builds it.
+  // Half list: each physical pair exactly once (the keys above). Each atom's entries
+  // ascending (locals first, then ghosts): deterministic, whoever builds it. The search
+  // (neighbor_search.hpp) tests the rows of bins around the atom without a branch on the
+  // unpredictable in/out decisions.
   const double rs2 = rs * rs;
-  auto list_of = [&](int i, std::vector<int>& out) {
-    const std::size_t start = out.size();
+  const int entry_bits = std::bit_width(static_cast<unsigned>(std::max(1, nall - 1)));
+  const BinnedEntries binned{bin_x_.data(), bin_y_.data(), bin_z_.data(), bin_key_.data(), bin_atoms_.data()};
+  auto list_of = [&](int i, std::vector<int>& cand, std::vector<int>& out) {
     const int bx = bin_of(i, 0), by = bin_of(i, 1), bz = bin_of(i, 2);
-    const double xi = x[i], yi = y[i], zi = z[i];
+    const int x0 = std::max(0, bx - 2), x1 = std::min(nb[0] - 1, bx + 2);
+    // Each row of up to five bins along x is one run of entries.
+    int runs[2 * 25], nrun = 0, most = kSearchPad;
     for (int cz = std::max(0, bz - 2); cz <= std::min(nb[2] - 1, bz + 2); ++cz)
       for (int cy = std::max(0, by - 2); cy <= std::min(nb[1] - 1, by + 2); ++cy) {
-        // One row of up to five bins is one run of entries.
         const int row = (cz * nb[1] + cy) * nb[0];
-        const int s0 = bin_start_[row + std::max(0, bx - 2)], s1 = bin_start_[row + std::min(nb[0] - 1, bx + 2) + 1];
-        for (int s = s0; s < s1; ++s) {
-          const int o = bin_owner_[s];
-          if (o < i) continue;
-          const double dx = xi - bin_xyz_[3 * s], dy = yi - bin_xyz_[3 * s + 1], dz = zi - bin_xyz_[3 * s + 2];
-          if (dx * dx + dy * dy + dz * dz >= rs2) continue;
-          const int k = bin_atoms_[s];
-          if (o == i && !positive(n1[k], n2[k], n3[k])) continue;
-          out.push_back(k);
-        }
+        runs[2 * nrun] = bin_start_[row + x0];
+        runs[2 * nrun + 1] = bin_start_[row + x1 + 1];
+        most += runs[2 * nrun + 1] - runs[2 * nrun];
+        ++nrun;
       }
-    std::sort(out.begin() + static_cast<std::ptrdiff_t>(start), out.end());
-    return static_cast<int>(out.size() - start);
+    if (cand.size() < 2 * static_cast<std::size_t>(most)) cand.resize(2 * static_cast<std::size_t>(most));
+    const int n = search_runs(binned, runs, nrun, x[i], y[i], z[i], rs2, 2 * i, cand.data());
+    radix_sort(cand.data(), n, cand.data() + most, entry_bits);
+    out.insert(out.end(), cand.begin(), cand.begin() + n);
+    return n;
   };
   // Fixed chunks of atoms, each listed into its own part by whichever thread takes it,
   // then laid end to end in chunk order.
@@ -161,8 +195,9 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk, 
 #pragma omp parallel for schedule(dynamic) num_threads(nt) if (nt > 1)
   for (int c = 0; c < nchunk; ++c) {
     std::vector<int>& mine = part_[c];
+    std::vector<int> cand;
     mine.clear();
-    for (int i = c * kChunk; i < std::min(nlocal, (c + 1) * kChunk); ++i) first[i + 1] = list_of(i, mine);
+    for (int i = c * kChunk; i < std::min(nlocal, (c + 1) * kChunk); ++i) first[i + 1] = list_of(i, cand, mine);
   }
   for (int i = 0; i < nlocal; ++i) first[i + 1] += first[i];
   list.resize(static_cast<std::size_t>(first[nlocal]));

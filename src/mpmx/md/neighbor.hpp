@@ -18,8 +18,8 @@ namespace mpmx::md {
 
 class Neighbors {
  public:
-  // Atoms must lie in the fundamental box along periodic axes (System wraps them
-  // first); along an open axis they may lie anywhere. `threads` > 1 spreads the list
+  // Atoms must lie in [0, L) along periodic axes (the fundamental domain System::wrap
+  // and Box::image_of use, tilted box or not); along an open axis they may lie anywhere. `threads` > 1 spreads the list
   // over atoms (each atom's list is the same for any count, so is the whole).
   void build(const Atoms& atoms, const Box& box, double cutoff, double skin, int threads = 1);
   // Positions of locals and ghosts for the current atoms and box (every step).
@@ -69,8 +69,8 @@ class Neighbors {
   bool built_ = false;
   std::vector<double> x0_, y0_, z0_;  // local positions at build
   Box box0_;                          // box at build
-  std::vector<int> bin_start_, bin_atoms_, bin_owner_;
-  std::vector<double> bin_xyz_;
+  std::vector<int> bin_start_, bin_atoms_, bin_key_;  // bin order: entry, half-list key
+  std::vector<double> bin_x_, bin_y_, bin_z_;
   std::vector<std::vector<int>> part_;    // the lists of chunks of atoms (build)
   std::vector<std::vector<int>> tile_part_;  // each tile's entries (build_tiles)
   void pack();
