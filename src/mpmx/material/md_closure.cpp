@@ -37,8 +37,9 @@ MdClosureProperties properties(const md::FccEquilibrium& eq, const units::UnitSy
   return r;
 }
 
-// The record a point's box returns to every rank: its stress (GPa) and its box.
-constexpr int kRecord = 15;
+// The record a point's box returns to every rank: its stress (GPa), its box and its
+// neighbour-list builds.
+constexpr int kRecord = 16;
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -236,6 +237,7 @@ void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure>
     const md::Box& b = boxes_[k].box();
     int i = 9;
     for (const double v : {b.lx, b.ly, b.lz, b.xy, b.xz, b.yz}) r[i++] = v;
+    r[i] = static_cast<double>(boxes_[k].neighbor_builds());
     for (int c = 0; c < 9; ++c)
       if (!std::isfinite(stress_[k][c]))
         failed = ranks::Failure{ranks::Failure::run,
@@ -248,6 +250,8 @@ void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure>
     ranks::raise(*f);
   }
   all_stress_.resize(p.size());
+  neighbor_builds_ = 0;
+  for (std::size_t q = 0; q < p.size(); ++q) neighbor_builds_ += static_cast<std::int64_t>(all[q * kRecord + 15]);
   const double l0 = cfg_.cells * props_.equilibrium.lattice_constant;
   for (std::size_t q = 0; q < p.size(); ++q) {
     for (int c = 0; c < 9; ++c) all_stress_[q][c] = all[q * kRecord + c];

@@ -104,6 +104,9 @@ class MdClosure final : public Material<Dim> {
   // and what could not be taken from a box with too little thermal energy.
   double energy_injected_ev() const { return injected_ev_; }
   double energy_shortfall_ev() const { return shortfall_ev_; }
+  // Neighbour-list builds of every box since it was made (all ranks, at the last step):
+  // against the MD steps, how often the boxes' atoms outran the skin.
+  std::int64_t neighbor_builds() const { return neighbor_builds_; }
 
  private:
   md::SystemOptions box_options() const;
@@ -125,6 +128,7 @@ class MdClosure final : public Material<Dim> {
   double md_seconds_ = 0.0;
   std::vector<double> box_seconds_;  // each box's cost since the last rebalance check
   double injected_ev_ = 0.0, shortfall_ev_ = 0.0;
+  std::int64_t neighbor_builds_ = 0;
   // MPMX_TEST_NAN_POINT: the point whose box reports a NaN stress (tests only).
   std::optional<std::size_t> nan_point_;
 };

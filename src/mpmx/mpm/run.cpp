@@ -652,6 +652,7 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
     rec.set("md.density", closure->density());
     rec.set("md.energy_injected_eV", closure->energy_injected_ev());   // eq. 7.11, running total
     rec.set("md.energy_shortfall_eV", closure->energy_shortfall_ev());
+    rec.set("md.neighbor_builds", closure->neighbor_builds());
   }
   rec.set("rank_imbalance", r.rank_imbalance);
   if (r.ranks > 1) rec.set("rebalances", static_cast<std::int64_t>(r.rebalances));
