@@ -108,8 +108,11 @@ TEST(MdClosure2d, EnergyConsistencyHoldsToRoundOffEachMacroStep) {
                           before.thermal_kinetic_energy();
     EXPECT_NEAR(change, work, 1e-9 * (std::abs(after.potential_energy()) + 1.0)) << step;
     EXPECT_GT(std::abs(work), 1e-3);  // eV: a real exchange
+    // The closure's tally of list builds is the box's own.
+    EXPECT_EQ(m.neighbor_builds(), m.boxes()[0].neighbor_builds()) << step;
   }
   EXPECT_EQ(m.energy_shortfall_ev(), 0.0);
+  EXPECT_GE(m.neighbor_builds(), 1);
 }
 
 TEST(MdClosure2d, SameParticlesOnOneAndTwoThreadsAndResumedBitForBit) {
