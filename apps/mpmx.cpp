@@ -15,7 +15,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/ranks.hpp"
 #include "mpmx/md/potential/eam_one_type.hpp"
-#include "mpmx/mpm/fused1d/isa.hpp"
+#include "mpmx/core/isa.hpp"
 #include "mpmx/core/exit_codes.hpp"
 
 namespace {
@@ -67,7 +67,7 @@ int run(int argc, char** argv) {
   // With the vector paths of the 1-D and MD kernels (those built in, those this machine
   // runs, the one taken) and the MPI library the ranks use.
   app.set_version_flag("--version", [] {
-    return std::string("mpmx ") + MPMX_VERSION + "\n" + mpmx::mpm::shape::isa_summary() + "\n" +
+    return std::string("mpmx ") + MPMX_VERSION + "\n" + mpmx::isa_summary() + "\n" +
            mpmx::md::eam_isa_summary() + "\nMPI: " + mpmx::ranks::library();
   });
   app.require_subcommand(1);
@@ -104,7 +104,7 @@ int run(int argc, char** argv) {
                                   argv[i]));
       }
   try {
-    mpmx::mpm::shape::isa_chosen();  // a bad MPMX_ISA stops here, before any command writes
+    mpmx::isa_chosen();  // a bad MPMX_ISA stops here, before any command writes
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help and --version: CLI11 prints them and says 0.

@@ -19,7 +19,7 @@
 #include "mpmx/md/potential/eam_one_type.hpp"
 #include "mpmx/md/rng.hpp"
 #include "mpmx/md/system.hpp"
-#include "mpmx/mpm/fused1d/isa.hpp"
+#include "mpmx/core/isa.hpp"
 
 #include "md_test_util.hpp"
 
@@ -60,7 +60,7 @@ md::Crystal shaken(int nx, int ny, int nz, std::uint64_t seed) {
 }
 
 Bits run(const std::string& path, bool mixed, bool per_atom, Form form = {}) {
-  mpm::shape::isa_use(path);
+  mpmx::isa_use(path);
   EXPECT_EQ(md::eam_isa_dispatched(), path);
   const md::Crystal c = form.threaded ? shaken(8, 8, 6, 11) : shaken(4, 4, 4, 11);
   md::SystemOptions o;
@@ -88,12 +88,12 @@ long first_difference(const Bits& a, const Bits& b) {
 
 class EamPath : public ::testing::TestWithParam<std::string> {
  protected:
-  void TearDown() override { mpm::shape::isa_use(mpm::shape::isa_supported().front()); }
+  void TearDown() override { mpmx::isa_use(mpmx::isa_supported().front()); }
 };
 
 }  // namespace
 
-INSTANTIATE_TEST_SUITE_P(Isa, EamPath, ::testing::ValuesIn(mpm::shape::isa_supported()),
+INSTANTIATE_TEST_SUITE_P(Isa, EamPath, ::testing::ValuesIn(mpmx::isa_supported()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 TEST_P(EamPath, SameBitsAsTheScalarPath) {
@@ -120,7 +120,7 @@ TEST_P(EamPath, TiledSameBitsAsTheScalarPath) {
 // 3 threads give the same bits, forces, energies and virials included.
 TEST(EamTiled, SameBitsForAnyThreadCount) {
   for (const bool per_atom : {false, true}) {
-    const std::string path = mpm::shape::isa_supported().front();
+    const std::string path = mpmx::isa_supported().front();
     const Bits one = run(path, false, per_atom, {true, 1});
     EXPECT_EQ(first_difference(run(path, false, per_atom, {true, 2}), one), -1) << "per_atom " << per_atom;
     EXPECT_EQ(first_difference(run(path, false, per_atom, {true, 3}), one), -1) << "per_atom " << per_atom;
@@ -153,7 +153,7 @@ TEST(EamTiled, AgreesWithTheWholeListToRoundOff) {
   for (int c6 = 0; c6 < 6; ++c6) EXPECT_NEAR(a.virial()[c6], b.virial()[c6], 1e-9);
   const std::vector<double>&va = a.per_atom_virial(), &vb = b.per_atom_virial();
   for (std::size_t k = 0; k < 6 * a.atoms().size(); ++k) EXPECT_NEAR(va[k], vb[k], 1e-11);
-  mpm::shape::isa_use(mpm::shape::isa_supported().front());
+  mpmx::isa_use(mpmx::isa_supported().front());
 }
 
 // The paths differ from one another only in how they get there: the scalar path of
@@ -161,13 +161,13 @@ TEST(EamTiled, AgreesWithTheWholeListToRoundOff) {
 // like).
 TEST(EamPathSanity, MixedPrecisionDiffersFromDouble) {
   EXPECT_NE(first_difference(run("scalar", true, false), run("scalar", false, false)), -1);
-  mpm::shape::isa_use(mpm::shape::isa_supported().front());
+  mpmx::isa_use(mpmx::isa_supported().front());
 }
 
 // MPMX_ISA picks the MD kernel's path as it does the 1-D kernels', and `mpmx --version`
 // says which it took.
 TEST(EamPathSanity, VersionNamesTheChosenPath) {
-  for (const std::string& path : mpm::shape::isa_supported()) {
+  for (const std::string& path : mpmx::isa_supported()) {
     const std::string cmd = "MPMX_ISA=" + path + " " + std::string(MPMX_BINARY) + " --version 2>&1";
     FILE* p = popen(cmd.c_str(), "r");
     ASSERT_NE(p, nullptr);

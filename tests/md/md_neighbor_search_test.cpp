@@ -13,7 +13,7 @@
 
 #include "mpmx/md/lattice.hpp"
 #include "mpmx/md/neighbor.hpp"
-#include "mpmx/mpm/fused1d/isa.hpp"
+#include "mpmx/core/isa.hpp"
 
 #include "pair_set_util.hpp"
 
@@ -45,12 +45,12 @@ std::pair<Atoms, Box> random_box(std::uint32_t seed, bool far) {
 
 class SearchPath : public ::testing::TestWithParam<std::string> {
  protected:
-  void TearDown() override { mpm::shape::isa_use(mpm::shape::isa_supported().front()); }
+  void TearDown() override { mpmx::isa_use(mpmx::isa_supported().front()); }
 };
 
 Neighbors build_on(const std::string& path, const Atoms& at, const Box& box, double rc, double skin,
                    std::array<bool, 3> periodic) {
-  mpm::shape::isa_use(path);
+  mpmx::isa_use(path);
   Neighbors nb;
   nb.periodic = periodic;
   nb.build(at, box, rc, skin);
@@ -59,7 +59,7 @@ Neighbors build_on(const std::string& path, const Atoms& at, const Box& box, dou
 
 }  // namespace
 
-INSTANTIATE_TEST_SUITE_P(Isa, SearchPath, ::testing::ValuesIn(mpm::shape::isa_supported()),
+INSTANTIATE_TEST_SUITE_P(Isa, SearchPath, ::testing::ValuesIn(mpmx::isa_supported()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 TEST_P(SearchPath, EveryPairWithinTheListRadiusOnceAndTheScalarPathsList) {

@@ -12,7 +12,8 @@
 
 #include "mpm_test_util.hpp"
 #include "mpmx/core/error.hpp"
-#include "mpmx/mpm/fused1d/isa.hpp"
+#include "mpmx/core/isa.hpp"
+#include "mpmx/mpm/fused1d/linear_fused.hpp"
 #include "mpmx/mpm/setup.hpp"
 #include "mpmx/mpm/step.hpp"
 
@@ -97,15 +98,15 @@ const std::pair<const char*, int> kFused[] = {{"mpm", 0}, {"ddmp", 0}, {"ddmp_su
 class FusedPath : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
-    mpm::shape::isa_use(GetParam());
+    mpmx::isa_use(GetParam());
     ASSERT_EQ(mpm::shape::isa_dispatched(), GetParam());
   }
-  void TearDown() override { mpm::shape::isa_use(mpm::shape::isa_supported().front()); }
+  void TearDown() override { mpmx::isa_use(mpmx::isa_supported().front()); }
 };
 
 }  // namespace
 
-INSTANTIATE_TEST_SUITE_P(Isa, FusedPath, ::testing::ValuesIn(mpm::shape::isa_supported()),
+INSTANTIATE_TEST_SUITE_P(Isa, FusedPath, ::testing::ValuesIn(mpmx::isa_supported()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 // A driven elastic bar, small strain (the ADMPM bench's fast path) and finite strain; 2
@@ -198,15 +199,15 @@ TEST_P(FusedPath, OrderLostBetweenStepsMatchesStencil) {
 // The paths by name (as MPMX_ISA names them): each this machine has can be taken, and an
 // unknown one is an input error that leaves the path as it was.
 TEST(FusedIsa, PathsByName) {
-  const std::vector<std::string> paths = mpm::shape::isa_supported();
+  const std::vector<std::string> paths = mpmx::isa_supported();
   ASSERT_FALSE(paths.empty());
   for (const std::string& name : paths) {
-    mpm::shape::isa_use(name);
-    EXPECT_EQ(mpm::shape::isa_chosen(), name);
+    mpmx::isa_use(name);
+    EXPECT_EQ(mpmx::isa_chosen(), name);
     EXPECT_EQ(mpm::shape::isa_dispatched(), name);
   }
-  EXPECT_THROW(mpm::shape::isa_use("avx1024"), InputError);
-  EXPECT_EQ(mpm::shape::isa_chosen(), paths.back());
+  EXPECT_THROW(mpmx::isa_use("avx1024"), InputError);
+  EXPECT_EQ(mpmx::isa_chosen(), paths.back());
   EXPECT_EQ(mpm::shape::isa_dispatched(), paths.back());
-  mpm::shape::isa_use(paths.front());
+  mpmx::isa_use(paths.front());
 }

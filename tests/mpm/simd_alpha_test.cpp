@@ -4,7 +4,7 @@
 // is itself within about 3 ulp), and the same on every path.
 
 // clang-format off
-#include "mpmx/mpm/fused1d/targets.hpp"  // first: the kernels' paths
+#include "mpmx/core/simd_targets.hpp"  // first: the kernels' paths
 // clang-format on
 
 #include <gtest/gtest.h>

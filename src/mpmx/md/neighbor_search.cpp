@@ -1,12 +1,12 @@
 // The neighbour-list build's candidate filter, compiled once per vector path of
-// targets.hpp (hwy/foreach_target.h includes this file again for each). Each vector
-// tests a vector's worth of one run's candidates (a partial one at the run's end, the
-// rest masked off) and writes the kept entries packed (Highway's CompressStore), so no
+// core/simd_targets.hpp (hwy/foreach_target.h includes this file again for each). Each
+// vector tests a vector's worth of one run's candidates (a partial one at the run's end,
+// the rest masked off) and writes the kept entries packed (Highway's CompressStore), so no
 // branch depends on the in/out decisions. Compiled with -ffp-contract=off
 // (CMakeLists.txt): r^2 has the scalar path's bits on every path.
 
 // clang-format off
-#include "mpmx/mpm/fused1d/targets.hpp"  // first: the paths to compile
+#include "mpmx/core/simd_targets.hpp"  // first: the paths to compile
 // clang-format on
 
 #include "mpmx/md/neighbor_search.hpp"
@@ -14,7 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "mpmx/mpm/fused1d/isa.hpp"
+#include "mpmx/core/isa.hpp"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "mpmx/md/neighbor_search.cpp"
@@ -64,7 +64,7 @@ HWY_EXPORT(search_runs_path);
 
 int search_runs(const BinnedEntries& b, const int* run, int nrun, double xi, double yi, double zi, double rs2,
                 int twice_i, int* out) {
-  mpm::shape::isa_prepare();
+  isa_prepare();
   return HWY_DYNAMIC_DISPATCH(search_runs_path)(b, run, nrun, xi, yi, zi, rs2, twice_i, out);
 }
 

@@ -2,7 +2,7 @@
 // The candidate filter of the neighbour-list build (Neighbors::build): of the entries in
 // runs of bins, those within the list radius of an atom and after it in the half list's
 // order. A path per instruction set (Google Highway), chosen at run time as the EAM
-// kernel's (mpm/fused1d/isa.hpp); every path writes the entries the scalar path writes.
+// kernel's (core/isa.hpp); every path writes the entries the scalar path writes.
 
 namespace mpmx::md {
 

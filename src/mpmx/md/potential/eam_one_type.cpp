@@ -1,4 +1,4 @@
-// The one-element EAM kernel, compiled once per vector path of targets.hpp
+// The one-element EAM kernel, compiled once per vector path of core/simd_targets.hpp
 // (hwy/foreach_target.h includes this file again for each); the entry points at the end
 // dispatch to the path the 1-D kernels take. On the scalar path the vector helpers are
 // absent and the scalar loops do everything: that path is the reference the others
@@ -8,7 +8,7 @@
 // nor the vector code are contracted on any path, in any build.
 
 // clang-format off
-#include "mpmx/mpm/fused1d/targets.hpp"  // first: the paths to compile
+#include "mpmx/core/simd_targets.hpp"  // first: the paths to compile
 // clang-format on
 
 #include "mpmx/md/potential/eam_one_type.hpp"
@@ -19,7 +19,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "mpmx/mpm/fused1d/isa.hpp"
+#include "mpmx/core/isa.hpp"
 
 #ifndef MPMX_MD_EAM_ONE_TYPE_SCRATCH_
 #define MPMX_MD_EAM_ONE_TYPE_SCRATCH_
@@ -702,18 +702,18 @@ HWY_EXPORT(one_type_float);
 HWY_EXPORT(dispatched_target);
 
 ForceSums eam_one_type(const EamOneType<double>& t, const Neighbors& nb, ForceWork& w) {
-  mpm::shape::isa_prepare();
+  isa_prepare();
   return HWY_DYNAMIC_DISPATCH(one_type_double)(t, nb, w);
 }
 
 ForceSums eam_one_type(const EamOneType<float>& t, const Neighbors& nb, ForceWork& w) {
-  mpm::shape::isa_prepare();
+  isa_prepare();
   return HWY_DYNAMIC_DISPATCH(one_type_float)(t, nb, w);
 }
 
 std::string eam_isa_dispatched() {
-  mpm::shape::isa_prepare();
-  return mpm::shape::isa_name(HWY_DYNAMIC_DISPATCH(dispatched_target)());
+  isa_prepare();
+  return isa_name(HWY_DYNAMIC_DISPATCH(dispatched_target)());
 }
 
 std::string eam_isa_summary() {
@@ -722,8 +722,8 @@ std::string eam_isa_summary() {
     if (!list.empty()) list += ' ';
     list += name;
   };
-  for (int64_t mask = HWY_TARGETS; mask != 0; mask &= mask - 1) add(paths, mpm::shape::isa_name(mask & -mask));
-  for (const std::string& name : mpm::shape::isa_supported()) add(machine, name);
+  for (int64_t mask = HWY_TARGETS; mask != 0; mask &= mask - 1) add(paths, isa_name(mask & -mask));
+  for (const std::string& name : isa_supported()) add(machine, name);
   return "MD kernels: paths " + paths + "; this machine: " + machine + "; chosen: " + eam_isa_dispatched();
 }
 

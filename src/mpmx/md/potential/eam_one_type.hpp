@@ -1,7 +1,7 @@
 #pragma once
 // The EAM force loop for one element (the common case: pure metals), with its vector
 // forms written once (Google Highway) and compiled for every path of the 1-D kernels'
-// targets (mpm/fused1d/targets.hpp); each call takes the path the 1-D kernels take (the
+// targets (core/simd_targets.hpp); each call takes the path the 1-D kernels take (the
 // best this machine has, or MPMX_ISA's). Every path gives the scalar loop's bits.
 #include <string>
 

@@ -1,10 +1,10 @@
 // The fused 1-D kernels, written once with Google Highway and compiled for every vector
-// path of targets.hpp; the entry points at the end dispatch to the best this machine has
-// (or MPMX_ISA's). Everything above them is compiled once per path: hwy/foreach_target.h
-// includes this file again for each.
+// path of core/simd_targets.hpp; the entry points at the end dispatch to the best this
+// machine has (or MPMX_ISA's). Everything above them is compiled once per path:
+// hwy/foreach_target.h includes this file again for each.
 
 // clang-format off
-#include "mpmx/mpm/fused1d/targets.hpp"  // first: the paths to compile
+#include "mpmx/core/simd_targets.hpp"  // first: the paths to compile
 // clang-format on
 
 #include "mpmx/mpm/fused1d/linear_fused.hpp"
@@ -13,6 +13,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "mpmx/core/isa.hpp"
 #include "mpmx/mpm/fused1d/linear_fused_detail.hpp"
 #include "mpmx/mpm/shape/ddmp.hpp"
 #include "mpmx/mpm/shape/hat.hpp"
@@ -807,31 +808,33 @@ HWY_EXPORT(g2p_ddmp);
 HWY_EXPORT(dispatched_target);
 
 int64_t fused::dispatched_target() {
-  fused::isa_prepare();
+  isa_prepare();
   return HWY_DYNAMIC_DISPATCH(dispatched_target)();
 }
 
+std::string isa_dispatched() { return isa_name(fused::dispatched_target()); }
+
 void p2g_linear(const Grid<1>& g0, const Particles<1>& p, bool reference_volume, bool no_viscous_pressure,
                 LinearCells& lc, Grid<1>& g) {
-  fused::isa_prepare();
+  isa_prepare();
   HWY_DYNAMIC_DISPATCH(p2g_linear)(g0, p, reference_volume, no_viscous_pressure, lc, g);
 }
 
 double g2p_linear(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint, Particles<1>& p,
                   ElasticUpdate* update) {
-  fused::isa_prepare();
+  isa_prepare();
   return HWY_DYNAMIC_DISPATCH(g2p_linear)(g, lc, dt, move, midpoint, p, update);
 }
 
 void p2g_ddmp(const Grid<1>& g0, const Particles<1>& p, bool reference_volume, int subpoints, LinearCells& lc,
               Grid<1>& g) {
-  fused::isa_prepare();
+  isa_prepare();
   HWY_DYNAMIC_DISPATCH(p2g_ddmp)(g0, p, reference_volume, subpoints, lc, g);
 }
 
 double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint, int subpoints,
                 Particles<1>& p, ElasticUpdate* update) {
-  fused::isa_prepare();
+  isa_prepare();
   return HWY_DYNAMIC_DISPATCH(g2p_ddmp)(g, lc, dt, move, midpoint, subpoints, p, update);
 }
 

@@ -3,7 +3,8 @@
 // 3.31, 6.1-6.3): no stencil is stored, and consecutive particles of one cell accumulate
 // in registers before touching the nodes. Same algorithm as shape/{linear,ddmp} +
 // transfer; the sums are regrouped per cell, so results agree to round-off. Each call runs
-// the best vector path of the machine (isa.hpp).
+// the best vector path of the machine (core/isa.hpp).
+#include <string>
 #include <vector>
 
 #include "mpmx/mpm/grid.hpp"
@@ -66,5 +67,9 @@ void p2g_ddmp(const Grid<1>& g, const Particles<1>& p, bool reference_volume, in
 // `update` (may be null): the elastic update to do in the same pass where it can.
 double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool midpoint,
                 int subpoints, Particles<1>& p, ElasticUpdate* update = nullptr);
+
+// The path these kernels' dispatch takes now, as the kernels themselves report it
+// (tests; MPMX_ISA and isa_use in core/isa.hpp choose it).
+std::string isa_dispatched();
 
 }  // namespace mpmx::mpm::shape

@@ -56,8 +56,6 @@ void subpoint_weights(std::size_t n, const double* __restrict x, const double* _
                       double* __restrict W, double* __restrict Wx, std::vector<int>& mixed,
                       std::vector<int>& stray);
 
-// Applies MPMX_ISA once; every kernel entry calls it before it dispatches (isa.cpp).
-void isa_prepare();
 // The Highway target the kernels' dispatch takes now (linear_fused.cpp).
 int64_t dispatched_target();
 

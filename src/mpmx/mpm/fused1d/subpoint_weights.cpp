@@ -11,7 +11,7 @@
 // particle, so the results do not depend on the width.
 
 // clang-format off
-#include "mpmx/mpm/fused1d/targets.hpp"  // first: the paths to compile
+#include "mpmx/core/simd_targets.hpp"  // first: the paths to compile
 // clang-format on
 
 #include <algorithm>

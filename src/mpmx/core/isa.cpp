@@ -1,7 +1,7 @@
-#include "mpmx/mpm/fused1d/isa.hpp"
+#include "mpmx/core/isa.hpp"
 
 // clang-format off
-#include "mpmx/mpm/fused1d/targets.hpp"  // first: the same targets as the kernels
+#include "mpmx/core/simd_targets.hpp"  // first: the same targets as the kernels
 // clang-format on
 
 #include <cctype>
@@ -12,9 +12,8 @@
 #include <hwy/targets.h>
 
 #include "mpmx/core/error.hpp"
-#include "mpmx/mpm/fused1d/linear_fused_detail.hpp"
 
-namespace mpmx::mpm::shape {
+namespace mpmx {
 
 namespace {
 
@@ -94,10 +93,6 @@ void from_environment() {
 
 }  // namespace
 
-namespace fused {
-void isa_prepare() { from_environment(); }
-}  // namespace fused
-
 void isa_prepare() { from_environment(); }
 
 std::string isa_name(int64_t target) { return name_of(target); }
@@ -124,12 +119,10 @@ void isa_use(const std::string& name) {
   force(target_named(name, ""));
 }
 
-std::string isa_dispatched() { return name_of(fused::dispatched_target()); }
-
 std::string isa_summary() {
   const char* env = std::getenv("MPMX_ISA");
   return "1-D kernels: paths " + names(HWY_TARGETS) + "; this machine: " + names(machine_targets()) +
          "; chosen: " + isa_chosen() + (env && *env ? std::string(" (MPMX_ISA=") + env + ")" : "");
 }
 
-}  // namespace mpmx::mpm::shape
+}  // namespace mpmx

@@ -1,15 +1,15 @@
 #pragma once
-// Which vector path the fused 1-D kernels (and the MD kernels, md/potential/eam_one_type)
-// take. One build holds a path per instruction set
-// (Google Highway's dynamic dispatch) and runs the best this machine has, or the one
-// named by the environment variable MPMX_ISA (read once, at the first kernel call): a
-// Highway target in lower case, "avx512" for AVX3. Paths are named widest first:
-// "avx512", "avx2", "sse4", "scalar" on x86.
+// Which vector path the vector kernels take (the 1-D continuum's, mpm/fused1d; the MD
+// engine's, md/potential/eam_one_type and md/neighbor_search). One build holds a path
+// per instruction set (Google Highway's dynamic dispatch) and runs the best this machine
+// has, or the one named by the environment variable MPMX_ISA (read once, at the first
+// kernel call): a Highway target in lower case, "avx512" for AVX3. Paths are named
+// widest first: "avx512", "avx2", "sse4", "scalar" on x86.
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace mpmx::mpm::shape {
+namespace mpmx {
 
 std::vector<std::string> isa_compiled();   // the paths in this build
 std::vector<std::string> isa_supported();  // those this machine can run
@@ -18,8 +18,6 @@ std::vector<std::string> isa_supported();  // those this machine can run
 std::string isa_chosen();
 // Takes the named path from now on (tests, benches); InputError as for MPMX_ISA.
 void isa_use(const std::string& name);
-// The path the kernels' dispatch takes now, as the kernels themselves report it (tests).
-std::string isa_dispatched();
 // Applies MPMX_ISA (once, InputError as above at every call): each kernel entry point
 // that dispatches calls it first, so that its first dispatch already takes that path.
 void isa_prepare();
@@ -29,4 +27,4 @@ std::string isa_name(int64_t target);
 // for `mpmx --version`.
 std::string isa_summary();
 
-}  // namespace mpmx::mpm::shape
+}  // namespace mpmx
