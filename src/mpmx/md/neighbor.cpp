@@ -138,11 +138,10 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk, 
     ++bin_start_[bin[k] + 1];
   }
   for (int b = 0; b < nbins; ++b) bin_start_[b + 1] += bin_start_[b];
-  // The entries in bin order, with their positions and owners beside them (the search
-  // reads each bin's as one run).
-  // Each entry's key is 2 owner + (1 if its image shift is positive): the half list
-  // keeps (i, k) iff owner(k) > i, or owner(k) == i and k's shift is positive, that is
-  // iff key(k) > 2 i (one comparison, no branch in the search).
+  // The entries in bin order, their positions and keys beside them (the search reads
+  // each row of bins as one run). An entry's key is 2 owner + (1 if its image shift is
+  // positive): the half list keeps (i, k) iff owner(k) > i, or owner(k) == i and k's
+  // shift is positive, that is iff key(k) > 2 i (one comparison, no branch).
   const std::size_t padded = static_cast<std::size_t>(nall) + kSearchPad;  // the search reads past a run
   bin_atoms_.assign(padded, 0);
   bin_key_.assign(padded, 0);
@@ -154,7 +153,7 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk, 
     for (int k = 0; k < nall; ++k) {
       const int s = fill[bin[k]]++;
       bin_atoms_[s] = k;
-      bin_key_[s] = 2 * owner[k] + (k >= nlocal && positive(n1[k], n2[k], n3[k]));
+      bin_key_[s] = 2 * owner[k] + positive(n1[k], n2[k], n3[k]);  // a local's shift is zero
       bin_x_[s] = x[k], bin_y_[s] = y[k], bin_z_[s] = z[k];
     }
   }

@@ -1,8 +1,8 @@
 // The neighbour-list build's candidate filter, compiled once per vector path of
 // core/simd_targets.hpp (hwy/foreach_target.h includes this file again for each). Each
 // vector tests a vector's worth of one run's candidates (a partial one at the run's end,
-// the rest masked off) and writes the kept entries packed (Highway's CompressStore), so no
-// branch depends on the in/out decisions. Compiled with -ffp-contract=off
+// the rest masked off) and writes the kept entries packed (Highway's CompressBitsStore):
+// no branch depends on the in/out decisions. Compiled with -ffp-contract=off
 // (CMakeLists.txt): r^2 has the scalar path's bits on every path.
 
 // clang-format off
