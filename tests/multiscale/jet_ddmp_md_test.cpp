@@ -55,6 +55,20 @@ TEST(JetHistory, EachPointReadsTheBinThatHoldsIt) {
   EXPECT_TRUE(std::isnan(h.sxx(0.1, 25.0, 6.0)));  // an empty bin
   EXPECT_TRUE(std::isnan(h.sxx(0.1, 1.0, 1.0)));   // outside the bins
   EXPECT_THROW(reference::JetHistory::read(test::scratch_dir("not_a_jet")), InputError);
+  // A run.json without one of the jet's numbers (or with a key but no number) is named.
+  const fs::path d = fake_jet_run();
+  for (const std::string& text : {std::string("{ \"jet\" : { \"length_A\" : 30.0, \"ly_A\" : 10.0, "
+                                              "\"piston_face_A\" : 4.0 } }\n"),
+                                  std::string("{ \"jet\" : { \"length_A\" : 30.0, \"ly_A\" : 10.0, "
+                                              "\"piston_face_A\" : 4.0, \"x0_A\" : null } }\n")}) {
+    std::ofstream(d / "run.json") << text;
+    try {
+      reference::JetHistory::read(d.string());
+      ADD_FAILURE() << "read a run.json without x0_A";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("jet.x0_A"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(J2Tiny, DdmpMdFollowsTheDirectMdJet) {

@@ -1,11 +1,11 @@
 #include "mpmx/reference/jet_history.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <regex>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -78,11 +78,17 @@ JetHistory JetHistory::read(const std::string& dir) {
   // The piston's face from run.json (our own flat key; no JSON library needed for one number).
   const std::string run = slurp(d / "run.json");
   auto number = [&](const std::string& key) {
-    std::smatch m;
-    const std::regex re("\"" + key + "\"\\s*:\\s*([-+0-9.eE]+)");
-    if (!std::regex_search(run, m, re))
-      throw InputError(fmt::format("{}/run.json: no jet.{} (not a jet run?)", dir, key));
-    return std::stod(m[1].str());
+    const std::string quoted = "\"" + key + "\"";
+    const char* const white = " \t\r\n";
+    std::size_t at = run.find(quoted);
+    if (at != std::string::npos) at = run.find_first_not_of(white, at + quoted.size());
+    if (at != std::string::npos && run[at] == ':') {
+      at = run.find_first_not_of(white, at + 1);
+      double v = 0;
+      if (at != std::string::npos && std::from_chars(run.data() + at, run.data() + run.size(), v).ec == std::errc())
+        return v;
+    }
+    throw InputError(fmt::format("{}/run.json: no jet.{} (not a jet run?)", dir, key));
   };
   h.piston_face_ = number("piston_face_A");
   const double x0 = number("x0_A"), length = number("length_A"), ly = number("ly_A");
