@@ -1,7 +1,7 @@
 // `mpmx dpd DECK --out DIR [--threads N] [--check]`: deck errors name the key, the value
 // and the reason (exit status 2, nothing written); a run writes run.json, thermo.csv and
 // the LAMMPS dump; --threads 2 writes the same thermo table as --threads 1; rigid
-// groups and the Berendsen equilibration from the deck.
+// groups and the Berendsen equilibration from the deck; --still starts them at rest.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,8 +11,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -140,6 +142,63 @@ TEST(DpdCli, TwoThreadsWriteTheSameThermoTable) {
   ASSERT_EQ(run("dpd " + d.string() + " --out " + (dir() / "t2").string() + " --quiet --threads 2").status, 0);
   EXPECT_EQ(slurp(dir() / "t1" / "thermo.csv"), slurp(dir() / "t2" / "thermo.csv"));
   EXPECT_EQ(slurp(dir() / "t1" / "dump.lammpstrj"), slurp(dir() / "t2" / "dump.lammpstrj"));
+}
+
+// Mean x (Angstrom) over frames of the dump of the particles with x < 3 in the first
+// frame (the grip of kGood), one value per frame.
+std::vector<double> grip_mean_x(const std::string& dump) {
+  std::vector<double> out;
+  std::vector<long> grip;
+  std::istringstream ss(dump);
+  std::string line;
+  while (std::getline(ss, line)) {
+    if (line != "ITEM: ATOMS id type mass x y z vx vy vz u") continue;
+    std::map<long, double> x;
+    std::streampos at = ss.tellg();
+    while (std::getline(ss, line) && line.rfind("ITEM:", 0) != 0) {
+      std::istringstream ls(line);
+      long id, type;
+      double mass, xi;
+      ls >> id >> type >> mass >> xi;
+      x[id] = xi;
+      at = ss.tellg();
+    }
+    ss.clear();
+    ss.seekg(at);
+    if (grip.empty())
+      for (const auto& [id, xi] : x)
+        if (xi < 3.0) grip.push_back(id);
+    double sum = 0;
+    for (long id : grip) sum += x.at(id);
+    out.push_back(sum / static_cast<double>(grip.size()));
+  }
+  return out;
+}
+
+TEST(DpdCli, StillTwinStartsTheRigidGroupsAtRest) {
+  const fs::path d = deck("still.toml", kGood);
+  ASSERT_EQ(run("dpd " + d.string() + " --out " + (dir() / "driven").string() + " --quiet").status, 0);
+  const Result r = run("dpd " + d.string() + " --out " + (dir() / "still").string() + " --quiet --still");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(slurp(dir() / "still" / "run.json").find("\"still\" : true"), std::string::npos);
+  EXPECT_NE(slurp(dir() / "driven" / "run.json").find("\"still\" : false"), std::string::npos);
+  // The run's first row (after the same equilibration) has the same potential energy (its
+  // kinetic columns count the grip's velocity); the grip then moves at -0.5 Angstrom/ps in
+  // the driven run (60 steps of 0.005 ps) and not at all in the twin.
+  auto first_run_row = [](const std::string& thermo) {  // phase, step, time, potential energy
+    const auto at = thermo.find("\nrun,");
+    std::string row = thermo.substr(at + 1, thermo.find('\n', at + 1) - at - 1);
+    std::size_t cut = 0;
+    for (int k = 0; k < 4; ++k) cut = row.find(',', cut + 1);
+    return row.substr(0, cut);
+  };
+  EXPECT_EQ(first_run_row(slurp(dir() / "still" / "thermo.csv")), first_run_row(slurp(dir() / "driven" / "thermo.csv")));
+  const auto still = grip_mean_x(slurp(dir() / "still" / "dump.lammpstrj"));
+  const auto driven = grip_mean_x(slurp(dir() / "driven" / "dump.lammpstrj"));
+  ASSERT_EQ(still.size(), 4u);
+  ASSERT_EQ(driven.size(), 4u);
+  EXPECT_EQ(still.back(), still.front());
+  EXPECT_NEAR(driven.back() - driven.front(), -0.5 * 60 * 0.005, 1e-9);
 }
 
 TEST(DpdCli, CheckValidatesWithoutRunning) {

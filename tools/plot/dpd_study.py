@@ -7,7 +7,11 @@ compare: wave speeds (and their difference from the first run's), initial slopes
 stresses, and, for a concurrent run beside its all-DPD reference (a run whose deck id ends
 in "reference_dpd_only"), the reflection at the interface: the largest difference of the
 'interface' track's displacement from the reference's, before the wave reflected at the
-far free end returns, over the reference's largest displacement there.
+far free end returns, over the reference's largest displacement there. With the runs'
+undriven twins (`mpmx dpd DECK --still`: the same deck, its flyer at rest) among the
+directories, each run's tracks minus its twin's are the wave alone (the two share their
+random streams, so they agree to round-off until the wave arrives), and the reflection is
+also measured on those: fig. `wave_response.png`.
 
 Usage: dpd_study.py --out FIG_DIR RUN_DIR [RUN_DIR ...]
 """
@@ -27,6 +31,12 @@ def table(path):
     with open(path) as f:
         rows = list(csv.DictReader(f))
     return {k: [float(r[k]) for r in rows] for k in rows[0]} if rows else {}
+
+
+def interface_note(run):
+    """' (interface X)' for a concurrent run, else ''."""
+    face = run.get("model", {}).get("interface")
+    return f" (interface {face})" if face else ""
 
 
 def label(run):
@@ -54,22 +64,85 @@ def reflection(conc, ref, onset):
         return None
     ua, ub = a["interface_ux_A"], b["interface_ux_A"]
     du_b = [ub[k] - ub[k0] for k in range(k0, n)]
-    # the reference's first peak: where its gain stops growing in magnitude for 0.5 ps
-    step = t[1] - t[0]
-    hold = max(1, round(0.5 / step))
-    end = len(du_b)
-    best = 0
-    for k in range(len(du_b)):
-        if abs(du_b[k]) > abs(du_b[best]):
-            best = k
-        elif k - best > hold:
-            end = best + 1
-            break
+    end = first_peak_end(du_b, t[1] - t[0])  # the reference's first peak
     du_a = [ua[k0 + k] - ua[k0] for k in range(end)]
     umax = max(abs(v) for v in du_b[:end])
     if umax <= 0:
         return None
     return max(abs(x - y) for x, y in zip(du_a, du_b[:end])) / umax, t[k0], t[k0 + end - 1]
+
+
+def first_peak_end(u, step, start=0):
+    """One past the index where |u| reaches its first peak after `start`: it stops growing
+    for 0.5 ps."""
+    hold = max(1, round(0.5 / step))
+    best = start
+    for k in range(start, len(u)):
+        if abs(u[k]) > abs(u[best]):
+            best = k
+        elif k - best > hold:
+            return best + 1
+    return len(u)
+
+
+def wave_reflection(conc, ref):
+    """The reflection on the wave alone: the 'interface' track's response (the run's
+    displacement minus its still twin's) against the reference's, from the impact to the
+    reference response's first peak: max |w_conc - w_ref| over max |w_ref|."""
+    a, b = conc.get("wave"), ref.get("wave")
+    if not a or not b or "interface_ux_A" not in a or "interface_ux_A" not in b:
+        return None
+    t = b["time_ps"]
+    n = min(len(a["time_ps"]), len(t))
+    wa, wb = a["interface_ux_A"][:n], b["interface_ux_A"][:n]
+    big = max(abs(v) for v in wb)
+    if big <= 0:
+        return None
+    start = next(k for k in range(n) if abs(wb[k]) > 0.1 * big)  # the wave has arrived
+    end = first_peak_end(wb, t[1] - t[0], start)
+    umax = max(abs(v) for v in wb[:end])
+    if umax <= 0:
+        return None
+    return max(abs(x - y) for x, y in zip(wa[:end], wb[:end])) / umax, t[end - 1]
+
+
+def wave_speed_alone(run):
+    """m/s between the deck's two `wave_speed` tracks from the onsets of their responses
+    (the first time a response has moved `onset` Angstrom along `onset_direction`)."""
+    deck, w = run.get("deck", {}), run.get("wave")
+    a = deck.get("analysis", {})
+    names = a.get("wave_speed")
+    if not w or not names or len(names) != 2:
+        return None
+    rise, sign = a.get("onset", 0.3), a.get("onset_direction", 1)
+    centre, onset = {}, {}
+    for tr in deck.get("track", []):
+        if tr.get("name") in names:
+            centre[tr["name"]] = 0.5 * (tr["x"][0] + tr["x"][1])
+            u = w.get(tr["name"] + "_ux_A", [])
+            onset[tr["name"]] = next((w["time_ps"][k] for k in range(len(u)) if sign * u[k] >= rise), None)
+    if any(onset.get(n) is None or n not in centre for n in names) or onset[names[1]] == onset[names[0]]:
+        return None
+    return 100 * abs(centre[names[1]] - centre[names[0]]) / abs(onset[names[1]] - onset[names[0]])
+
+
+def attach_waves(runs):
+    """Pairs each driven run with its still twin (the same deck echo) and stores the
+    difference of their tracks as run["wave"]; returns the driven runs."""
+    key = lambda r: json.dumps(r.get("deck", {}), sort_keys=True)  # noqa: E731
+    stills = {key(r): r for r in runs if r.get("still")}
+    driven = [r for r in runs if not r.get("still")]
+    for r in driven:
+        twin = stills.get(key(r))
+        if twin is None or not r.get("tracks") or not twin.get("tracks"):
+            continue
+        a, b = r["tracks"], twin["tracks"]
+        n = min(len(a["time_ps"]), len(b["time_ps"]))
+        r["wave"] = {"time_ps": a["time_ps"][:n]}
+        for name in a:
+            if name.endswith("_ux_A") and name in b:
+                r["wave"][name] = [x - y for x, y in zip(a[name][:n], b[name][:n])]
+    return driven
 
 
 def finish(fig, ax, xlabel, ylabel, title, path, legend=8, ncol=1):
@@ -141,18 +214,26 @@ def main():
             if os.path.exists(p):
                 r[name] = table(p)
         runs.append(r)
+    runs = attach_waves(runs)
 
     styles = ["-", "--", "-.", ":", (0, (5, 1)), (0, (1, 1))]
-    with_tracks = [r for r in runs if r.get("tracks")]
-    if with_tracks:
+    def plot_tracks(key, ylabel, title, name, note):
+        """Every run's '_ux_A' series of run[key] overlaid: a colour per track, a line style per run."""
+        have = [r for r in runs if r.get(key)]
+        if not have:
+            return
         fig, ax = plt.subplots(figsize=(6.2, 4.2))
-        for i, r in enumerate(with_tracks):
-            t = r["tracks"]
-            for k, name in enumerate(n for n in t if n.endswith("_ux_A")):
-                ax.plot(t["time_ps"], t[name], linestyle=styles[i % len(styles)], color=f"C{k}",
-                        label=f"{label(r)}: {name[:-5]}")
-        finish(fig, ax, "time after impact (ps)", "mean x displacement (Angstrom)",
-               "Region displacement histories (seed 004 fig. 3)", os.path.join(args.out, "fig3_tracks.png"), legend=7)
+        for i, r in enumerate(have):
+            t = r[key]
+            for k, col in enumerate(n for n in t if n.endswith("_ux_A")):
+                ax.plot(t["time_ps"], t[col], linestyle=styles[i % len(styles)], color=f"C{k}",
+                        label=f"{label(r)}{note(r)}: {col[:-5]}")
+        finish(fig, ax, "time after impact (ps)", ylabel, title, os.path.join(args.out, name), legend=7)
+
+    plot_tracks("wave", "displacement minus the still twin's (Angstrom)",
+                "The wave alone: each run less its undriven twin", "wave_response.png", interface_note)
+    plot_tracks("tracks", "mean x displacement (Angstrom)", "Region displacement histories (seed 004 fig. 3)",
+                "fig3_tracks.png", lambda r: "")
     with_ss = [r for r in runs if r.get("stress_strain")]
     if with_ss:
         fig, ax = plt.subplots(figsize=(5.6, 4.2))
@@ -202,8 +283,19 @@ def main():
             onset = refs[0].get("analysis", {}).get("tracks", {}).get("interface", {}).get("onset_ps")
             q = reflection(r, refs[0], onset if onset and onset > 0 else None)
             if q is not None:
-                print(f"interface reflection of {r.get('case')}: {100 * q[0]:.2f}% of the reference's displacement "
-                      f"gain ({q[1]:.2f}-{q[2]:.2f} ps)")
+                print(f"interface reflection of {r.get('case')}{interface_note(r)}: {100 * q[0]:.2f}% of the "
+                      f"reference's displacement gain ({q[1]:.2f}-{q[2]:.2f} ps)")
+    for r in runs:
+        v = wave_speed_alone(r)
+        if v is not None:
+            print(f"wave speed of {r.get('case')}{interface_note(r)} from the responses (still twin subtracted): "
+                  f"{v:.0f} m/s")
+    for r in runs:
+        if r.get("model", {}).get("name") == "dpd_mpm_concurrent" and refs:
+            w = wave_reflection(r, refs[0])
+            if w is not None:
+                print(f"interface reflection of {r.get('case')}{interface_note(r)}, the wave alone (still twins "
+                      f"subtracted): {100 * w[0]:.2f}% of the reference's response (0-{w[1]:.2f} ps)")
     return 0
 
 

@@ -1,4 +1,4 @@
-// `mpmx dpd DECK --out DIR [--threads N] [--check] [--quiet]`: a DPD(E)-only run
+// `mpmx dpd DECK --out DIR [--threads N] [--check] [--quiet] [--still]`: a DPD(E)-only run
 // (seed 004 sec. 2.2; issue 16); `mpmx fit-dpd DECK --out DIR [--threads N] [--check]`:
 // the MD-to-DPD fit of D0.
 #include <filesystem>
@@ -23,7 +23,7 @@ void add_dpd_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
     int threads = 1;
-    bool check = false, quiet = false, no_plot = false;
+    bool check = false, quiet = false, no_plot = false, still = false;
   };
   auto args = std::make_shared<Args>();
   dpd->add_option("deck", args->deck, "DPD deck (TOML)")->required();
@@ -33,9 +33,13 @@ void add_dpd_commands(CLI::App& app) {
   dpd->add_flag("--check", args->check, "validate the deck and exit");
   dpd->add_flag("--quiet", args->quiet, "no progress line");
   dpd->add_flag("--no-plot", args->no_plot, "no figures (tools/plot/dpd_study.py) after the run");
+  dpd->add_flag("--still", args->still,
+                "the rigid groups (flyer, grips) start at rest: the undriven twin of the run, which "
+                "tools/plot/dpd_study.py subtracts to leave the wave alone");
   dpd->callback([args] {
     auto deck = io::Deck::from_file(args->deck);
-    const dpd::DpdConfig config = dpd::read_dpd_config(deck);
+    dpd::DpdConfig config = dpd::read_dpd_config(deck);
+    config.still = args->still;
     if (args->check) {
       fmt::print("{}: ok\n", args->deck);
       return;

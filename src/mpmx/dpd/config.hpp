@@ -79,6 +79,11 @@ struct DpdConfig {
   GridSpec grid;
   ContinuumSpec continuum;
   std::string deck_file;
+  // `mpmx dpd --still`: the run's rigid groups (flyer, grips) start at rest instead of at
+  // their velocity, all else the same: the twin whose tracks, subtracted from the driven
+  // run's, leave the response to the drive alone (the same random streams, so the two
+  // agree to round-off until the drive's wave arrives).
+  bool still = false;
 };
 
 // Reads and validates; throws InputError listing every problem (Deck::finish()).

@@ -170,10 +170,11 @@ DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml
   for (const BlockSpec& s : c.blocks) {
     if (s.group.empty()) continue;
     const int g = sys.group_index(s.group);
-    sys.set_group_velocity(g, s.velocity);
+    sys.set_group_velocity(g, c.still ? md::Vec3{} : s.velocity);
     if (s.free) sys.release_group(g);
   }
-  for (const RegionGroupSpec& s : c.regions) sys.set_group_velocity(sys.group_index(s.name), s.velocity);
+  for (const RegionGroupSpec& s : c.regions)
+    sys.set_group_velocity(sys.group_index(s.name), c.still ? md::Vec3{} : s.velocity);
   if (c.continuum.on) {
     // The concurrent model's continuum: the equilibrated particles of the region.
     std::vector<std::int64_t> ids;
@@ -229,6 +230,7 @@ DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml
                   {"deck_file", c.deck_file},
                   {"deck", deck_echo},
                   {"case", c.id},
+                  {"still", c.still},
                   {"potential", describe(c.potential)},
                   {"particles", static_cast<std::int64_t>(r.particles)},
                   {"steps", static_cast<std::int64_t>(r.steps)},
