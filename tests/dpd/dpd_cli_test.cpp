@@ -144,33 +144,32 @@ TEST(DpdCli, TwoThreadsWriteTheSameThermoTable) {
   EXPECT_EQ(slurp(dir() / "t1" / "dump.lammpstrj"), slurp(dir() / "t2" / "dump.lammpstrj"));
 }
 
-// Mean x (Angstrom) over frames of the dump of the particles with x < 3 in the first
-// frame (the grip of kGood), one value per frame.
+// Mean x (Angstrom), frame by frame, of the dump's particles with x < 3 in the first frame
+// (the grip of kGood).
 std::vector<double> grip_mean_x(const std::string& dump) {
-  std::vector<double> out;
-  std::vector<long> grip;
+  std::vector<std::map<long, double>> frames;
   std::istringstream ss(dump);
-  std::string line;
-  while (std::getline(ss, line)) {
-    if (line != "ITEM: ATOMS id type mass x y z vx vy vz u") continue;
-    std::map<long, double> x;
-    std::streampos at = ss.tellg();
-    while (std::getline(ss, line) && line.rfind("ITEM:", 0) != 0) {
-      std::istringstream ls(line);
-      long id, type;
-      double mass, xi;
-      ls >> id >> type >> mass >> xi;
-      x[id] = xi;
-      at = ss.tellg();
+  bool atoms = false;
+  for (std::string line; std::getline(ss, line);) {
+    if (line.rfind("ITEM:", 0) == 0) {
+      atoms = line == "ITEM: ATOMS id type mass x y z vx vy vz u";
+      if (atoms) frames.emplace_back();
+      continue;
     }
-    ss.clear();
-    ss.seekg(at);
-    if (grip.empty())
-      for (const auto& [id, xi] : x)
-        if (xi < 3.0) grip.push_back(id);
+    if (!atoms) continue;
+    std::istringstream ls(line);
+    long id, type;
+    double mass, x;
+    ls >> id >> type >> mass >> x;
+    frames.back()[id] = x;
+  }
+  std::vector<double> out;
+  for (const auto& f : frames) {
     double sum = 0;
-    for (long id : grip) sum += x.at(id);
-    out.push_back(sum / static_cast<double>(grip.size()));
+    long n = 0;
+    for (const auto& [id, x0] : frames.front())
+      if (x0 < 3.0) sum += f.at(id), ++n;
+    out.push_back(sum / static_cast<double>(n));
   }
   return out;
 }

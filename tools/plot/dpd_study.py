@@ -85,24 +85,41 @@ def first_peak_end(u, step, start=0):
     return len(u)
 
 
+def onset_time(t, u, rise, sign):
+    """The run's onset rule (dpd/analysis.cpp, Recorder::onset_time): the first time u has
+    risen `rise` along `sign` above its lowest value so far, interpolated in the record."""
+    lowest = sign * u[0] if u else 0.0
+    for r in range(1, len(u)):
+        a = sign * u[r - 1] - lowest
+        lowest = min(lowest, sign * u[r - 1])
+        b = sign * u[r] - lowest
+        if b >= rise:
+            return t[r - 1] + (t[r] - t[r - 1]) * (rise - a) / (b - a) if a < rise and b > a else t[r]
+    return None
+
+
+def onset_rule(run):
+    """The deck's (rise, direction) of the onset rule, with the run's defaults."""
+    a = run.get("deck", {}).get("analysis", {})
+    return a.get("onset", 0.3), a.get("onset_direction", 1)
+
+
 def wave_reflection(conc, ref):
     """The reflection on the wave alone: the 'interface' track's response (the run's
     displacement minus its still twin's) against the reference's, from the impact to the
-    reference response's first peak: max |w_conc - w_ref| over max |w_ref|."""
+    reference response's first peak after its onset: max |w_conc - w_ref| over max |w_ref|
+    (the responses are zero before the wave, so the window starts at the impact)."""
     a, b = conc.get("wave"), ref.get("wave")
     if not a or not b or "interface_ux_A" not in a or "interface_ux_A" not in b:
         return None
     t = b["time_ps"]
     n = min(len(a["time_ps"]), len(t))
     wa, wb = a["interface_ux_A"][:n], b["interface_ux_A"][:n]
-    big = max(abs(v) for v in wb)
-    if big <= 0:
+    arrival = onset_time(t[:n], wb, *onset_rule(ref))
+    if arrival is None:
         return None
-    start = next(k for k in range(n) if abs(wb[k]) > 0.1 * big)  # the wave has arrived
-    end = first_peak_end(wb, t[1] - t[0], start)
+    end = first_peak_end(wb, t[1] - t[0], next(k for k in range(n) if t[k] >= arrival))
     umax = max(abs(v) for v in wb[:end])
-    if umax <= 0:
-        return None
     return max(abs(x - y) for x, y in zip(wa[:end], wb[:end])) / umax, t[end - 1]
 
 
@@ -110,17 +127,14 @@ def wave_speed_alone(run):
     """m/s between the deck's two `wave_speed` tracks from the onsets of their responses
     (the first time a response has moved `onset` Angstrom along `onset_direction`)."""
     deck, w = run.get("deck", {}), run.get("wave")
-    a = deck.get("analysis", {})
-    names = a.get("wave_speed")
+    names = deck.get("analysis", {}).get("wave_speed")
     if not w or not names or len(names) != 2:
         return None
-    rise, sign = a.get("onset", 0.3), a.get("onset_direction", 1)
     centre, onset = {}, {}
     for tr in deck.get("track", []):
         if tr.get("name") in names:
             centre[tr["name"]] = 0.5 * (tr["x"][0] + tr["x"][1])
-            u = w.get(tr["name"] + "_ux_A", [])
-            onset[tr["name"]] = next((w["time_ps"][k] for k in range(len(u)) if sign * u[k] >= rise), None)
+            onset[tr["name"]] = onset_time(w["time_ps"], w.get(tr["name"] + "_ux_A", []), *onset_rule(run))
     if any(onset.get(n) is None or n not in centre for n in names) or onset[names[1]] == onset[names[0]]:
         return None
     return 100 * abs(centre[names[1]] - centre[names[0]]) / abs(onset[names[1]] - onset[names[0]])
@@ -295,7 +309,7 @@ def main():
             w = wave_reflection(r, refs[0])
             if w is not None:
                 print(f"interface reflection of {r.get('case')}{interface_note(r)}, the wave alone (still twins "
-                      f"subtracted): {100 * w[0]:.2f}% of the reference's response (0-{w[1]:.2f} ps)")
+                      f"subtracted): {100 * w[0]:.2f}% of the reference's response (impact to {w[1]:.2f} ps)")
     return 0
 
 
