@@ -6,34 +6,48 @@
 # (docs/performance.md: 2-D 1.50-2.05, 3-D 0.85-0.93 million particle-steps/s, one rank),
 # and two threads against one. The runs end at t = 1 (BENCH_FULL=1: at 3.5, the whole run),
 # before the bodies touch: 800 steps in 2-D, 200 in 3-D, long enough for steady figures.
+# Each run on one thread and on two alternates REPEAT times (default 2) and the best of each
+# counts: on a shared machine whose speed drifts by tens of percent over minutes, a pair
+# of runs side by side sees the same conditions more nearly than single runs. With the
+# rates, the two-thread ratio of each phase of the step (run.json "phases") of those runs.
 set -euo pipefail
 BUILD=${1:-build-bench}
 MPMX="$BUILD/mpmx"
+REPEAT=${REPEAT:-2}
 cd "$(dirname "$0")/.."
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-rate() { /usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['particle_steps_per_second'] / 1e6)" "$1"; }
 for case in disks_2d:1.50:2.05 spheres_3d:0.85:0.93; do
   IFS=: read -r name klo khi <<<"$case"
   for scheme in mpm ddmp ddmp_subpoints; do
     deck="$tmp/$name-$scheme.toml"
     sed "s/^name = \"mpm\"/name = \"$scheme\"$([ "$scheme" = ddmp_subpoints ] && echo '\nsubpoints = 2')/" "bench/$name.toml" > "$deck"
     [ "${BENCH_FULL:-0}" = 1 ] || sed -i 's/^end = 3.5/end = 1.0/' "$deck"
-    for t in 1 2; do
-      # Exit 3: the physics stopped the run (BENCH_FULL: ddmp_subpoints keeps the disks'
-      # energy, so one reaches the grid's edge before t = 3.5); the rate of the steps run
-      # is in its partial run.json.
-      rc=0
-      "$MPMX" run "$deck" --out "$tmp/$name-$scheme-$t" --threads "$t" --quiet --no-plot > /dev/null 2> "$tmp/err" || rc=$?
-      if [ "$rc" = 3 ]; then echo "   ($name $scheme, $t thread(s): $(tail -n 1 "$tmp/err"); rate of the steps run)"
-      elif [ "$rc" != 0 ]; then cat "$tmp/err" >&2; exit "$rc"; fi
+    for r in $(seq "$REPEAT"); do
+      for t in 1 2; do
+        # Exit 3: the physics stopped the run (BENCH_FULL: ddmp_subpoints keeps the disks'
+        # energy, so one reaches the grid's edge before t = 3.5); the rate of the steps run
+        # is in its partial run.json.
+        rc=0
+        "$MPMX" run "$deck" --out "$tmp/$name-$scheme-$t-$r" --threads "$t" --quiet --no-plot > /dev/null 2> "$tmp/err" || rc=$?
+        if [ "$rc" = 3 ] && [ "$r" = 1 ]; then echo "   ($name $scheme, $t thread(s): $(tail -n 1 "$tmp/err"); rate of the steps run)"
+        elif [ "$rc" != 0 ] && [ "$rc" != 3 ]; then cat "$tmp/err" >&2; exit "$rc"; fi
+      done
     done
-    r1=$(rate "$tmp/$name-$scheme-1/run.json")
-    r2=$(rate "$tmp/$name-$scheme-2/run.json")
-    /usr/bin/python3 -c "
-import sys
-r1, r2, lo, hi = map(float, sys.argv[1:5])
-print(f'{sys.argv[5]:>11} {sys.argv[6]:<15} 1 thread {r1:6.2f} M/s ({r1/hi:4.1f}-{r1/lo:4.1f}x Karamelo), 2 threads {r2:6.2f} M/s ({r2/r1:4.2f}x one)')
-" "$r1" "$r2" "$klo" "$khi" "$name" "$scheme"
+    /usr/bin/python3 - "$tmp" "$name" "$scheme" "$REPEAT" "$klo" "$khi" <<'PY'
+import json, sys
+tmp, name, scheme, repeat = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
+lo, hi = map(float, sys.argv[5:7])
+def best(t):
+    runs = [json.load(open(f"{tmp}/{name}-{scheme}-{t}-{r}/run.json")) for r in range(1, repeat + 1)]
+    return max(runs, key=lambda j: j["particle_steps_per_second"])
+one, two = best(1), best(2)
+r1, r2 = one["particle_steps_per_second"] / 1e6, two["particle_steps_per_second"] / 1e6
+print(f"{name:>11} {scheme:<15} 1 thread {r1:6.2f} M/s ({r1/hi:4.1f}-{r1/lo:4.1f}x Karamelo), "
+      f"2 threads {r2:6.2f} M/s ({r2/r1:4.2f}x one)")
+phases = one.get("phases", {})
+print(" " * 28 + "two threads by phase: " + ", ".join(
+    f"{k} {phases[k] / two['phases'][k]:.2f}x ({100 * phases[k] / one['wall_seconds']:.0f}%)" for k in phases))
+PY
   done
 done

@@ -53,6 +53,15 @@ TEST(NdOutput, VtkFilesReadBackWithVtkAndRunJsonHasTheKeys) {
   for (const char* key : {"\"dim\" : 2", "\"particles\"", "\"steps\" : 50", "\"wall_seconds\"",
                           "\"particle_steps_per_second\"", "\"mass\"", "\"momentum\"", "\"energy\""})
     EXPECT_NE(json.find(key), std::string::npos) << key;
+  // The step's wall time by phase: every phase timed, together within the run's wall time.
+  EXPECT_NE(json.find("\"phases\""), std::string::npos);
+  for (std::size_t k = 0; k < mpm::kPhaseNames.size(); ++k) {
+    std::string quoted(1, '"');
+    quoted.append(mpm::kPhaseNames[k]).push_back('"');
+    EXPECT_NE(json.find(quoted), std::string::npos) << quoted;
+    EXPECT_GT(r.state.phases.seconds[k], 0.0) << mpm::kPhaseNames[k];
+  }
+  EXPECT_LE(r.state.phases.total(), r.wall_seconds);
   const std::string pvd = test::slurp(dir / "particles.pvd");
   EXPECT_NE(pvd.find("vtk/particles_000050.vtu"), std::string::npos);
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "mpmx/core/error.hpp"
 #include "mpmx/mpm/shape/axis.hpp"
 #include "mpmx/mpm/shape/ddmp.hpp"
 #include "mpmx/mpm/shape/ddmp_operator.hpp"
@@ -69,8 +70,46 @@ void check_consistency(const Case& c) {
 
 }  // namespace
 
+// Threads share the stencil's passes: the same entries for one thread and two, and a
+// point off the grid (past the cell beyond it) stops the run naming the first such point.
+template <int Dim>
+void check_threads_and_off_grid(const Case& c) {
+  const Grid<Dim> g = mpmx::test::uneven_grid<Dim>();
+  Particles<Dim> p = mpmx::test::random_particles<Dim>(g, 600, 5, 2.0);
+  SchemeOptions opt;
+  opt.scheme = c.scheme;
+  opt.alpha = c.alpha;
+  opt.subpoints_axes = {2, 3, 2};
+  ShapeEvaluator<Dim> eval(opt, g);
+  Stencil<Dim> one, two;
+  eval(g, p, one);
+  eval.set_threads(2);
+  eval(g, p, two);
+  ASSERT_EQ(one.width, two.width);
+  EXPECT_EQ(one.box, two.box);
+  EXPECT_EQ(one.node, two.node);
+  EXPECT_EQ(one.S, two.S);
+  EXPECT_EQ(one.R, two.R);
+  for (int a = 0; a < Dim; ++a) EXPECT_EQ(one.G[a], two.G[a]);
+  const double past = g.upper[Dim - 1] + 1.5 * (g.upper[Dim - 1] - g.lower[Dim - 1]) / g.cells[Dim - 1];
+  p.x[Dim - 1][517] = past;
+  p.x[0][431] = std::nan("");
+  p.x[Dim - 1][598] = past;
+  for (int threads : {1, 2}) {
+    eval.set_threads(threads);
+    try {
+      eval(g, p, two);
+      ADD_FAILURE() << "no error on " << threads << " thread(s)";
+    } catch (const mpmx::RunError& e) {
+      EXPECT_NE(std::string(e.what()).find("particle 431 left the grid"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST_P(EverySchemeND, ConsistentIn2D) { check_consistency<2>(GetParam()); }
 TEST_P(EverySchemeND, ConsistentIn3D) { check_consistency<3>(GetParam()); }
+TEST_P(EverySchemeND, ThreadsAndOffGridIn2D) { check_threads_and_off_grid<2>(GetParam()); }
+TEST_P(EverySchemeND, ThreadsAndOffGridIn3D) { check_threads_and_off_grid<3>(GetParam()); }
 
 INSTANTIATE_TEST_SUITE_P(Schemes, EverySchemeND,
                          ::testing::Values(Case{Scheme::mpm, DdmpAlpha::eq_7_3}, Case{Scheme::ugimp, DdmpAlpha::eq_7_3},

@@ -59,13 +59,26 @@ void build(const Grid<Dim>& g, const std::vector<std::ptrdiff_t>& off, Source so
       }
     }
   });
-  map.clear();
-  for (const SmallMassMap& part : parts) {
-    const std::uint32_t base = static_cast<std::uint32_t>(map.node.size());
-    map.source.insert(map.source.end(), part.source.begin(), part.source.end());
-    for (std::size_t s = 1; s < part.start.size(); ++s) map.start.push_back(base + part.start[s]);
-    map.node.insert(map.node.end(), part.node.begin(), part.node.end());
-    map.weight.insert(map.weight.end(), part.weight.begin(), part.weight.end());
+  // Joined: each part copied to its place (the counts before it) on the threads.
+  const std::size_t P = parts.size();
+  std::vector<std::size_t> sources(P + 1, 0), entries(P + 1, 0);
+  for (std::size_t k = 0; k < P; ++k) {
+    sources[k + 1] = sources[k] + parts[k].source.size();
+    entries[k + 1] = entries[k] + parts[k].node.size();
+  }
+  map.source.resize(sources[P]);
+  map.start.resize(sources[P] + 1);
+  map.start[0] = 0;
+  map.node.resize(entries[P]);
+  map.weight.resize(entries[P]);
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
+  for (std::size_t k = 0; k < P; ++k) {
+    const SmallMassMap& part = parts[k];
+    const std::uint32_t base = static_cast<std::uint32_t>(entries[k]);
+    std::copy(part.source.begin(), part.source.end(), map.source.begin() + sources[k]);
+    for (std::size_t s = 1; s < part.start.size(); ++s) map.start[sources[k] + s] = base + part.start[s];
+    std::copy(part.node.begin(), part.node.end(), map.node.begin() + entries[k]);
+    std::copy(part.weight.begin(), part.weight.end(), map.weight.begin() + entries[k]);
   }
 }
 
@@ -86,7 +99,8 @@ void gather(const SmallMassMap& map, std::vector<double>& v, int threads) {
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t s = 0; s < map.source.size(); ++s)
     for (std::uint32_t k = map.start[s]; k < map.start[s + 1]; ++k) mean[s] += map.weight[k] * v[map.node[k]];
-  for (std::size_t s = 0; s < map.source.size(); ++s) v[map.source[s]] = mean[s];
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t s = 0; s < map.source.size(); ++s) v[map.source[s]] = mean[s];  // sources are distinct nodes
 }
 
 }  // namespace
@@ -104,6 +118,8 @@ void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& map
   build<Dim>(g, off, empty_near_mass, false, maps.c0, maps.parts, threads);  // eq. 7.4
   build<Dim>(g, off, [&](std::size_t l) { return g.mass[l] > 0.0 && g.mass[l] <= m_eps; }, true, maps.c1,
              maps.parts, threads);  // eq. 7.5
+  // The components on the threads, each in its own array: the same sums for any count.
+#pragma omp parallel for schedule(static, 1) num_threads(threads) if (threads > 1)
   for (int a = 0; a < Dim; ++a) {
     scatter(maps.c0, g.force[a]);
     scatter(maps.c1, g.force[a]);

@@ -664,6 +664,8 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   rec.set("particles", static_cast<std::int64_t>(s.particles.size()));
   rec.set("particle_steps_per_second",
           r.wall_seconds > 0 ? static_cast<double>(s.particles.size()) * r.steps / r.wall_seconds : 0.0);
+  if (s.phases.total() > 0)  // the stencil step's phases, seconds of this invocation (not the fused 1-D step's)
+    for (std::size_t k = 0; k < kPhaseNames.size(); ++k) rec.set(fmt::format("phases.{}", kPhaseNames[k]), s.phases.seconds[k]);
   for (const auto& [f, e] : r.errors) {
     rec.set(fmt::format("errors.{}.l1", f), e.l1);
     rec.set(fmt::format("errors.{}.l2", f), e.l2);

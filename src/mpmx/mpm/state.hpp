@@ -11,6 +11,7 @@
 #include "mpmx/mpm/manufactured.hpp"
 #include "mpmx/mpm/mass_distribution.hpp"
 #include "mpmx/mpm/particles.hpp"
+#include "mpmx/mpm/phase_times.hpp"
 #include "mpmx/mpm/fused1d/linear_fused.hpp"
 #include "mpmx/mpm/shape/scheme.hpp"
 
@@ -63,6 +64,7 @@ struct State {
   std::int64_t step = 0;
   int threads = 1;            // over particles (2-D, 3-D); results do not depend on it
   Tallies tallies;
+  PhaseTimes phases;  // the stencil step's wall time by phase (this invocation's)
 };
 
 }  // namespace mpmx::mpm

@@ -42,18 +42,25 @@ template <int Dim>
 void step_stencil(State<Dim>& s, double dt) {
   auto& g = s.grid;
   auto& p = s.particles;
-  (*s.shape)(g, p, s.stencil);                      // nearest nodes afresh, S_ip, G_ip
+  auto& clock = s.phases;
+  clock.start();
+  (*s.shape)(g, p, s.stencil);  // nearest nodes afresh, S_ip, G_ip
+  clock.lap(Phase::stencil);
   p2g(p, s.stencil, s.small_strain, g, s.threads);  // m_i, v_i^n (eq. 3.16), f_i
   if (s.manufactured) s.manufactured->add_body_force(p, s.stencil, s.time, g);
+  clock.lap(Phase::p2g);
   const bool distribute = s.mass_distribution.on;
   if (distribute) distribute_small_mass_forces(g, s.mass_distribution.threshold, s.mass_distribution.maps, s.threads);  // eqs. 7.4-7.6
   solve_grid(g, s.boundary, s.time, dt, s.tallies, s.threads);  // v^L (eq. 3.12) with boundaries
   if (distribute) gradient_velocities(g, s.mass_distribution.maps, midpoint_weights(s.midpoint_gradient), s.threads);  // eq. 7.7
+  clock.lap(Phase::grid);
   s.finite_check = g2p(g, s.stencil, dt, s.move, s.midpoint_gradient, p, s.threads);  // v_p, x_p, grad v
   if (s.musl)
     musl_gradient(s.stencil, s.boundary, s.time + dt, g, p, distribute ? &s.mass_distribution.maps : nullptr,
                   s.musl_velocity, s.threads);
+  clock.lap(Phase::g2p);
   finish(s, dt);
+  clock.lap(Phase::material);
 }
 
 template <int Dim>

@@ -74,14 +74,17 @@ inline void domain_axis(double xi, double h, int cells, double inv, bool integra
 // DDMP at xi: the hats of nodes c, c+1 and their derivative, written at offset `at`
 // (first = c - at); alpha's factor along the axis. Past the grid ends the point is
 // clamped. The smoothed part of eq. 7.2 is the grid's operator (ddmp_operator.hpp).
-inline void ddmp_axis(double xi, int cells, double inv, int at, Axis& ax) {
-  const auto [c, f] = locate(clamp_to_grid(xi, cells), cells);
+inline void ddmp_axis(CellPos cp, double inv, int at, Axis& ax) {
+  const auto [c, f] = cp;
   ax.first = c - at;
   ax.q = 4.0 * f * (1.0 - f);
   ax.S[at] = 1.0 - f;
   ax.S[at + 1] = f;
   ax.G[at] = -inv;
   ax.G[at + 1] = inv;
+}
+inline void ddmp_axis(double xi, int cells, double inv, int at, Axis& ax) {
+  ddmp_axis(locate(clamp_to_grid(xi, cells), cells), inv, at, ax);
 }
 inline int ddmp_cell(double xi, int cells) { return locate(clamp_to_grid(xi, cells), cells).cell; }
 

@@ -66,22 +66,18 @@ std::array<double, Dim> cell_coords(const Grid<Dim>& g, const Particles<Dim>& p,
   return xi;
 }
 
-// Entry k of a stencil box of widths W, x fastest: the offset along each axis.
+// The offsets of the entry after o in a stencil box of widths W, x fastest (an odometer:
+// no division per entry, which in the wide boxes of sub-points took a good part of the step).
 template <int Dim>
-std::array<int, Dim> offsets(int k, const std::array<int, Dim>& W) {
-  std::array<int, Dim> o;
-  for (int d = 0; d < Dim; ++d) {
-    o[d] = k % W[d];
-    k /= W[d];
-  }
-  return o;
+void next_entry(std::array<int, Dim>& o, const std::array<int, Dim>& W) {
+  for (int a = 0; a < Dim && ++o[a] == W[a]; ++a) o[a] = 0;
 }
 
 // The stencil's node indices for the box starting at ax[d].first.
 template <int Dim>
 void set_nodes(const Grid<Dim>& g, const Axis* ax, const std::array<int, Dim>& W, int width, int* node) {
-  for (int k = 0; k < width; ++k) {
-    const auto o = offsets<Dim>(k, W);
+  std::array<int, Dim> o{};
+  for (int k = 0; k < width; ++k, next_entry<Dim>(o, W)) {
     std::array<int, Dim> idx;
     for (int d = 0; d < Dim; ++d) idx[d] = ax[d].first + o[d];
     node[k] = static_cast<int>(g.index_clamped(idx));
@@ -103,7 +99,7 @@ void separable(const Axis* ax, const std::array<int, Dim>& W, int width, double*
         if (a != d) gd *= ax[a].S[o[a]];
       G[d][k] = gd;
     }
-    for (int a = 0; a < Dim && ++o[a] == W[a]; ++a) o[a] = 0;  // next entry
+    next_entry<Dim>(o, W);
   }
 }
 
@@ -151,54 +147,64 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
   auto half = [&](std::size_t q, int d) { return 0.5 * p.length[d * Dim + d][q] * g.inv_dx[d]; };
   // Position of corner or sub-point `c` of particle q in cell units, from its domain
   // vectors: x + sum_b r_b u_b with u_b = s_b / 2 (corners) or (s_b + 1/2) / n - 1/2.
-  auto place = [&](std::size_t q, const std::array<double, Dim>& xi, int c, bool corner) {
-    std::array<double, Dim> u, at = xi;
-    for (int b = 0; b < Dim; ++b) {
-      const int s = corner ? c >> b & 1 : c % nsub[b];
-      if (!corner) c /= nsub[b];
-      u[b] = corner ? (s ? 0.5 : -0.5) : (s + 0.5) / nsub[b] - 0.5;
+  int points = 1;  // corners or sub-points per particle
+  for (int d = 0; d < Dim; ++d) points *= corners ? 2 : nsub[d];
+  std::vector<std::array<double, Dim>> unit(points);  // the u_b of each, once per step
+  for (int c = 0; c < points; ++c)
+    for (int b = 0, rest = c; b < Dim; ++b) {
+      const int s = corners ? c >> b & 1 : rest % nsub[b];
+      rest /= nsub[b];
+      unit[c][b] = corners ? (s ? 0.5 : -0.5) : (s + 0.5) / nsub[b] - 0.5;
     }
+  auto place = [&](std::size_t q, const std::array<double, Dim>& xi, int c) {
+    std::array<double, Dim> at = xi;
+    const std::array<double, Dim>& u = unit[c];
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) at[a] += p.length[a * Dim + b][q] * g.inv_dx[a] * u[b];
     return at;
   };
-  int points = 1;  // corners or sub-points per particle
-  for (int d = 0; d < Dim; ++d) points *= corners ? 2 : nsub[d];
 
-  // Pass 1: the box width along each axis, the widest particle's.
-  std::array<int, Dim> W;
-  W.fill(2);
-  if (scheme == Scheme::mpm || scheme == Scheme::ddmp) {
-    // Every point on the grid (or a cell past it): the first one that is not is named.
-    std::size_t off_grid = n;
-#pragma omp parallel for schedule(static) reduction(min : off_grid) num_threads(threads_) if (threads_ > 1)
-    for (std::size_t q = 0; q < n; ++q)
-      for (int d = 0; d < Dim; ++d) {
-        const double xi = (p.x[d][q] - g.lower[d]) * g.inv_dx[d];
-        if (!(xi >= -1.0 && xi <= g.cells[d] + 1.0)) off_grid = std::min(off_grid, q);
-      }
-    if (off_grid < n) cell_coords(g, p, off_grid);  // throws with its number and position
-  } else {
-    for (std::size_t q = 0; q < n; ++q) {
-      const auto xi = cell_coords(g, p, q);
-      if (scheme == Scheme::ugimp || scheme == Scheme::cpgimp || (scheme == Scheme::cpdi && Dim == 1)) {
-        for (int d = 0; d < Dim; ++d) W[d] = std::max(W[d], shape::domain_width(xi[d], half(q, d), g.cells[d]));
-        continue;
-      }
-      std::array<int, Dim> lo, hi;
-      lo.fill(1 << 30);
-      hi.fill(-(1 << 30));
-      for (int c = 0; c < points; ++c) {
-        const auto at = place(q, xi, c, corners);
-        for (int d = 0; d < Dim; ++d) {
-          const int cell = shape::ddmp_cell(at[d], g.cells[d]);
-          lo[d] = std::min(lo[d], cell);
-          hi[d] = std::max(hi[d], cell + 1);
-        }
-      }
-      for (int d = 0; d < Dim; ++d) W[d] = std::max(W[d], hi[d] - lo[d] + 1);
+  // Pass 1: every point on the grid (or a cell past it: the first one that is not is
+  // named), and the box width along each axis, the widest particle's. A minimum and
+  // maxima: the same for any thread count.
+  const bool hat = scheme == Scheme::mpm || scheme == Scheme::ddmp;
+  const bool domain = scheme == Scheme::ugimp || scheme == Scheme::cpgimp || (scheme == Scheme::cpdi && Dim == 1);
+  std::size_t off_grid = n;
+  int widest[Dim];
+  std::fill_n(widest, Dim, 2);
+#pragma omp parallel for schedule(static) reduction(min : off_grid) reduction(max : widest) num_threads(threads_) if (threads_ > 1)
+  for (std::size_t q = 0; q < n; ++q) {
+    std::array<double, Dim> xi;
+    bool inside = true;
+    for (int d = 0; d < Dim; ++d) {
+      xi[d] = (p.x[d][q] - g.lower[d]) * g.inv_dx[d];
+      inside = inside && xi[d] >= -1.0 && xi[d] <= g.cells[d] + 1.0;
     }
+    if (!inside) {
+      off_grid = std::min(off_grid, q);
+      continue;
+    }
+    if (hat) continue;
+    if (domain) {
+      for (int d = 0; d < Dim; ++d) widest[d] = std::max(widest[d], shape::domain_width(xi[d], half(q, d), g.cells[d]));
+      continue;
+    }
+    std::array<int, Dim> lo, hi;
+    lo.fill(1 << 30);
+    hi.fill(-(1 << 30));
+    for (int c = 0; c < points; ++c) {
+      const auto at = place(q, xi, c);
+      for (int d = 0; d < Dim; ++d) {
+        const int cell = shape::ddmp_cell(at[d], g.cells[d]);
+        lo[d] = std::min(lo[d], cell);
+        hi[d] = std::max(hi[d], cell + 1);
+      }
+    }
+    for (int d = 0; d < Dim; ++d) widest[d] = std::max(widest[d], hi[d] - lo[d] + 1);
   }
+  if (off_grid < n) cell_coords(g, p, off_grid);  // throws with its number and position
+  std::array<int, Dim> W;
+  for (int d = 0; d < Dim; ++d) W[d] = widest[d];
   int width = 1;
   for (int d = 0; d < Dim; ++d) {
     shape::require_width(W[d]);
@@ -270,14 +276,14 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
           std::array<int, Dim> lo;
           lo.fill(1 << 30);
           for (int c = 0; c < points; ++c) {
-            const auto at = place(q, xi, c, true);
+            const auto at = place(q, xi, c);
             for (int d = 0; d < Dim; ++d) lo[d] = std::min(lo[d], shape::ddmp_cell(at[d], g.cells[d]));
           }
           for (int d = 0; d < Dim; ++d) ax[d].first = lo[d];
           std::array<std::vector<double>, Dim> gxi;
           for (auto& v : gxi) v.assign(width, 0.0);
           for (int c = 0; c < points; ++c) {
-            const auto at = place(q, xi, c, true);
+            const auto at = place(q, xi, c);
             Axis cx[Dim];
             for (int d = 0; d < Dim; ++d) {
               cx[d].clear(W[d]);
@@ -287,8 +293,8 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
                 cx[d].S[cell - lo[d] + k] = shape::hat_ext(at[d], i, g.cells[d]);
               }
             }
-            for (int k = 0; k < width; ++k) {
-              const auto o = offsets<Dim>(k, W);
+            std::array<int, Dim> o{};
+            for (int k = 0; k < width; ++k, next_entry<Dim>(o, W)) {
               double s = 1.0;
               for (int a = 0; a < Dim; ++a) s *= cx[a].S[o[a]];
               S[k] += s / points;
@@ -333,12 +339,18 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
         continue;
       }
       case Scheme::ddmp_subpoints: {
-        // The box: the cells of the sub-points (the particle's own lies among them).
+        // The box: the cells of the sub-points (the particle's own lies among them); each
+        // sub-point located once, kept for the gradient below.
+        thread_local std::vector<std::array<shape::CellPos, Dim>> sub;
+        sub.resize(static_cast<std::size_t>(points));
         std::array<int, Dim> lo;
         lo.fill(1 << 30);
         for (int c = 0; c < points; ++c) {
-          const auto at = place(q, xi, c, false);
-          for (int d = 0; d < Dim; ++d) lo[d] = std::min(lo[d], shape::ddmp_cell(at[d], g.cells[d]));
+          const auto at = place(q, xi, c);
+          for (int d = 0; d < Dim; ++d) {
+            sub[c][d] = shape::locate(shape::clamp_to_grid(at[d], g.cells[d]), g.cells[d]);
+            lo[d] = std::min(lo[d], sub[c][d].cell);
+          }
         }
         // S: the hat at the particle itself.
         Axis px[Dim];
@@ -346,8 +358,8 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
           px[d].clear(W[d]);
           shape::ddmp_axis(xi[d], g.cells[d], g.inv_dx[d], shape::ddmp_cell(xi[d], g.cells[d]) - lo[d], px[d]);
         }
-        for (int k = 0; k < width; ++k) {
-          const auto o = offsets<Dim>(k, W);
+        std::array<int, Dim> o{};
+        for (int k = 0; k < width; ++k, next_entry<Dim>(o, W)) {
           double s = 1.0;
           for (int a = 0; a < Dim; ++a) s *= px[a].S[o[a]];
           S[k] = s;
@@ -355,11 +367,10 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
         // G, R: the volume-weighted mean of eq. 7.2 over the sub-points (eqs. 4.5-4.6).
         const double w = 1.0 / points;
         for (int c = 0; c < points; ++c) {
-          const auto at = place(q, xi, c, false);
           std::array<int, Dim> off;
           for (int d = 0; d < Dim; ++d) {
-            off[d] = shape::ddmp_cell(at[d], g.cells[d]) - lo[d];
-            shape::ddmp_axis(at[d], g.cells[d], g.inv_dx[d], off[d], ax[d]);
+            off[d] = sub[c][d].cell - lo[d];
+            shape::ddmp_axis(sub[c][d], g.inv_dx[d], off[d], ax[d]);
           }
           add_ddmp<Dim>(ax, off, w, W, opt_.alpha, G, &st.R[e]);
         }
