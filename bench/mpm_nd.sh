@@ -9,7 +9,11 @@
 # Each run on one thread and on two alternates REPEAT times (default 2) and the best of each
 # counts: on a shared machine whose speed drifts by tens of percent over minutes, a pair
 # of runs side by side sees the same conditions more nearly than single runs. With the
-# rates, the two-thread ratio of each phase of the step (run.json "phases") of those runs.
+# rates, the two-thread ratio of each phase of the step (run.json "phases") of those runs,
+# and, as the machine's own ceiling, two one-thread runs at once: their summed rate is
+# what the two cores deliver together in those minutes (2x one on an idle machine with
+# two free cores, less where the second core is shared or slower), and the two-thread
+# run's rate over it is the code's share of that ceiling.
 set -euo pipefail
 BUILD=${1:-build-bench}
 MPMX="$BUILD/mpmx"
@@ -33,6 +37,11 @@ for case in disks_2d:1.50:2.05 spheres_3d:0.85:0.93; do
         if [ "$rc" = 3 ] && [ "$r" = 1 ]; then echo "   ($name $scheme, $t thread(s): $(tail -n 1 "$tmp/err"); rate of the steps run)"
         elif [ "$rc" != 0 ] && [ "$rc" != 3 ]; then cat "$tmp/err" >&2; exit "$rc"; fi
       done
+      # The ceiling: two one-thread runs side by side (exit 3 as above).
+      for k in a b; do
+        "$MPMX" run "$deck" --out "$tmp/$name-$scheme-pair$k-$r" --threads 1 --quiet --no-plot > /dev/null 2>&1 &
+      done
+      for k in a b; do wait -n || [ $? = 3 ] || { echo "$name $scheme: a side-by-side run failed" >&2; exit 1; }; done
     done
     /usr/bin/python3 - "$tmp" "$name" "$scheme" "$REPEAT" "$klo" "$khi" <<'PY'
 import json, sys
@@ -43,8 +52,11 @@ def best(t):
     return max(runs, key=lambda j: j["particle_steps_per_second"])
 one, two = best(1), best(2)
 r1, r2 = one["particle_steps_per_second"] / 1e6, two["particle_steps_per_second"] / 1e6
+pair = max(sum(json.load(open(f"{tmp}/{name}-{scheme}-pair{k}-{r}/run.json"))["particle_steps_per_second"]
+               for k in "ab") for r in range(1, repeat + 1)) / 1e6
 print(f"{name:>11} {scheme:<15} 1 thread {r1:6.2f} M/s ({r1/hi:4.1f}-{r1/lo:4.1f}x Karamelo), "
-      f"2 threads {r2:6.2f} M/s ({r2/r1:4.2f}x one)")
+      f"2 threads {r2:6.2f} M/s ({r2/r1:4.2f}x one); two one-thread runs at once {pair:6.2f} M/s together "
+      f"({pair/r1:4.2f}x one): two threads reach {r2/pair:4.2f} of it")
 phases = one.get("phases", {})
 print(" " * 28 + "two threads by phase: " + ", ".join(
     f"{k} {phases[k] / two['phases'][k]:.2f}x ({100 * phases[k] / one['wall_seconds']:.0f}%)" for k in phases))
