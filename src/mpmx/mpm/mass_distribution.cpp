@@ -93,14 +93,23 @@ void scatter(const SmallMassMap& map, std::vector<double>& f) {
     for (std::uint32_t k = map.start[s]; k < map.start[s + 1]; ++k) f[map.node[k]] += given[s] * map.weight[k];
 }
 
-// v <- A^T v: each source takes the weighted mean of its neighbours (read before the stage).
-void gather(const SmallMassMap& map, std::vector<double>& v, int threads) {
-  std::vector<double> mean(map.source.size(), 0.0);
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::size_t s = 0; s < map.source.size(); ++s)
-    for (std::uint32_t k = map.start[s]; k < map.start[s + 1]; ++k) mean[s] += map.weight[k] * v[map.node[k]];
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::size_t s = 0; s < map.source.size(); ++s) v[map.source[s]] = mean[s];  // sources are distinct nodes
+// v <- A^T v for every component: each source takes the weighted mean of its neighbours
+// (read before the stage). One parallel region per map, the map read once for all
+// components; each component's sum in the map's order, as one component alone.
+template <int Dim>
+void gather(const SmallMassMap& map, std::array<std::vector<double>, Dim>& v, int threads) {
+  const std::size_t n = map.source.size();
+  std::vector<double> mean(n * Dim, 0.0);
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+#pragma omp for schedule(static)
+    for (std::size_t s = 0; s < n; ++s)
+      for (std::uint32_t k = map.start[s]; k < map.start[s + 1]; ++k)
+        for (int a = 0; a < Dim; ++a) mean[s * Dim + a] += map.weight[k] * v[a][map.node[k]];
+#pragma omp for schedule(static)
+    for (std::size_t s = 0; s < n; ++s)  // sources are distinct nodes
+      for (int a = 0; a < Dim; ++a) v[a][map.source[s]] = mean[s * Dim + a];
+  }
 }
 
 }  // namespace
@@ -134,12 +143,13 @@ void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps, VelocityWeight
     for (std::size_t i = i0 + static_cast<std::size_t>(lo); i <= i0 + static_cast<std::size_t>(hi); ++i)
       for (int a = 0; a < Dim; ++a) g.gradient_velocity[a][i] = w.L * g.velocity_L[a][i] + w.n * g.velocity[a][i];
   });
-  for (int a = 0; a < Dim; ++a) adjoint_velocity(maps, g.gradient_velocity[a], threads);
+  adjoint_velocity<Dim>(maps, g.gradient_velocity, threads);
 }
 
-void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v, int threads) {
-  gather(maps.c1, v, threads);  // A1^T
-  gather(maps.c0, v, threads);  // A0^T
+template <int Dim>
+void adjoint_velocity(const SmallMassMaps& maps, std::array<std::vector<double>, Dim>& v, int threads) {
+  gather<Dim>(maps.c1, v, threads);  // A1^T
+  gather<Dim>(maps.c0, v, threads);  // A0^T
 }
 
 template void distribute_small_mass_forces<1>(Grid<1>&, double, SmallMassMaps&, int);
@@ -148,5 +158,8 @@ template void distribute_small_mass_forces<3>(Grid<3>&, double, SmallMassMaps&, 
 template void gradient_velocities<1>(Grid<1>&, const SmallMassMaps&, VelocityWeights, int);
 template void gradient_velocities<2>(Grid<2>&, const SmallMassMaps&, VelocityWeights, int);
 template void gradient_velocities<3>(Grid<3>&, const SmallMassMaps&, VelocityWeights, int);
+template void adjoint_velocity<1>(const SmallMassMaps&, std::array<std::vector<double>, 1>&, int);
+template void adjoint_velocity<2>(const SmallMassMaps&, std::array<std::vector<double>, 2>&, int);
+template void adjoint_velocity<3>(const SmallMassMaps&, std::array<std::vector<double>, 3>&, int);
 
 }  // namespace mpmx::mpm

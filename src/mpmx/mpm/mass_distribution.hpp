@@ -12,6 +12,7 @@
 // pair is adjoint: the power of the distributed forces on v equals that of the
 // original forces on v~, sum f.v~ = sum (A f).v, which keeps the energy balance
 // (eq. 4.11) of the step; momentum is kept because the particle update reads v itself.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -43,7 +44,8 @@ void distribute_small_mass_forces(Grid<Dim>& g, double m_eps, SmallMassMaps& map
 template <int Dim>
 void gradient_velocities(Grid<Dim>& g, const SmallMassMaps& maps, VelocityWeights w, int threads = 1);
 
-// v <- A0^T A1^T v for one nodal velocity component (what a gradient reads).
-void adjoint_velocity(const SmallMassMaps& maps, std::vector<double>& v, int threads = 1);
+// v <- A0^T A1^T v for every nodal velocity component (what a gradient reads).
+template <int Dim>
+void adjoint_velocity(const SmallMassMaps& maps, std::array<std::vector<double>, Dim>& v, int threads = 1);
 
 }  // namespace mpmx::mpm

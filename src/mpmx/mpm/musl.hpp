@@ -76,8 +76,7 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
       }
     });
   }
-  if (small_mass)  // the gradient reads the adjoint of the force distribution (eq. 7.7)
-    for (int a = 0; a < Dim; ++a) adjoint_velocity(*small_mass, v[a], threads);
+  if (small_mass) adjoint_velocity<Dim>(*small_mass, v, threads);  // the gradient reads the adjoint of the force distribution (eq. 7.7)
   const bool smooth = st.smoothed();
   if (smooth) {  // DDMP: eq. 7.2's smoothed gradient on the nodes
     std::array<const double*, Dim> vv;
