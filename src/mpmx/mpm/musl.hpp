@@ -76,7 +76,8 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
       }
     });
   }
-  if (small_mass) adjoint_velocity<Dim>(*small_mass, v, threads);  // the gradient reads the adjoint of the force distribution (eq. 7.7)
+  if (small_mass)  // the gradient reads the adjoint of the force distribution (eq. 7.7)
+    adjoint_velocity<Dim>(*small_mass, v, threads);
   const bool smooth = st.smoothed();
   if (smooth) {  // DDMP: eq. 7.2's smoothed gradient on the nodes
     std::array<const double*, Dim> vv;

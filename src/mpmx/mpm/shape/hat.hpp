@@ -39,8 +39,9 @@ inline CellPos locate(double xi, int cells) {
 // at most one cell beyond, further stops the run with its number and position.
 inline double clamp_to_grid(double xi, int cells) { return std::clamp(xi, 0.0, double(cells)); }
 
+inline bool within_reach(double xi, int cells) { return xi >= -1.0 && xi <= cells + 1.0; }  // false for NaN
 inline void require_inside(double xi, int cells, std::size_t p, double x) {
-  if (!(xi >= -1.0 && xi <= cells + 1.0))
+  if (!within_reach(xi, cells))
     throw RunError(fmt::format("particle {} left the grid (x = {})", p, x));
 }
 

@@ -178,7 +178,7 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
     bool inside = true;
     for (int d = 0; d < Dim; ++d) {
       xi[d] = (p.x[d][q] - g.lower[d]) * g.inv_dx[d];
-      inside = inside && xi[d] >= -1.0 && xi[d] <= g.cells[d] + 1.0;
+      inside = inside && shape::within_reach(xi[d], g.cells[d]);
     }
     if (!inside) {
       off_grid = std::min(off_grid, q);
@@ -356,7 +356,8 @@ void ShapeEvaluator<Dim>::operator()(const Grid<Dim>& g, const Particles<Dim>& p
         Axis px[Dim];
         for (int d = 0; d < Dim; ++d) {
           px[d].clear(W[d]);
-          shape::ddmp_axis(xi[d], g.cells[d], g.inv_dx[d], shape::ddmp_cell(xi[d], g.cells[d]) - lo[d], px[d]);
+          const shape::CellPos own = shape::locate(shape::clamp_to_grid(xi[d], g.cells[d]), g.cells[d]);
+          shape::ddmp_axis(own, g.inv_dx[d], own.cell - lo[d], px[d]);
         }
         std::array<int, Dim> o{};
         for (int k = 0; k < width; ++k, next_entry<Dim>(o, W)) {
