@@ -3,9 +3,11 @@
 // Rankine-Hugoniot jump in copper, uniaxial compression against the integrated work
 // (-p dv along the path), the von Mises cap, e equal to the stress work, the sound
 // speed, the run-time limit 1 - s eta > 0, save/load, the viscous work, the deck table.
+#include <array>
 #include <cmath>
 #include <random>
 #include <sstream>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -265,22 +267,78 @@ TEST(MieGruneisen, InternalEnergyIsTheStressWork) {
 
 TEST(MieGruneisen, CompressionPastOneOverSStopsTheRun) {
   const auto m = copper();
-  PointSet<2> pts(4, m.eos.rho0);
-  MieGruneisen<2> law(m);
-  auto p = pts.view();
-  law.initialize(p);
-  pts.volume[2] *= 1 - 0.7;  // eta = 0.7 > 1 / s = 0.671
-  try {
-    law.update_stress(p, 1e-3);
-    FAIL() << "no RunError";
-  } catch (const RunError& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("point 2"), std::string::npos) << what;
-    EXPECT_NE(what.find("eta = 1 - rho0 / rho = 0.7"), std::string::npos) << what;
-    EXPECT_NE(what.find("rho / rho0 = 3.33333"), std::string::npos) << what;
+  for (int threads : {1, 2}) {
+    PointSet<2> pts(4, m.eos.rho0);
+    MieGruneisen<2> law(m);
+    law.set_threads(threads);
+    auto p = pts.view();
+    law.initialize(p);
+    Eigen::Matrix2d L;
+    L << -1.0, 0.3, 0.2, 0.5;
+    pts.set_grad_v(L);  // the others would change if they were updated
+    pts.volume[2] *= 1 - 0.7;   // eta = 0.7 > 1 / s = 0.671
+    pts.volume[3] *= 1 - 0.75;  // past it as well: the lowest is named
+    try {
+      law.update_stress(p, 1e-3);
+      ADD_FAILURE() << "no RunError";
+    } catch (const RunError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("point 2"), std::string::npos) << what;
+      EXPECT_NE(what.find("eta = 1 - rho0 / rho = 0.7"), std::string::npos) << what;
+      EXPECT_NE(what.find("rho / rho0 = 3.33333"), std::string::npos) << what;
+    }
+    // No point was updated: the state is the start's.
+    for (std::size_t q = 0; q < 4; ++q) {
+      EXPECT_EQ(law.internal_energy(q), 0.0) << q;
+      for (int k = 0; k < 4; ++k) EXPECT_EQ(pts.sig[k][q], 0.0) << q << " " << k;
+    }
+    MieGruneisen<2> fresh(m);
+    EXPECT_THROW(fresh.initialize(p), RunError);
   }
-  MieGruneisen<2> fresh(m);
-  EXPECT_THROW(fresh.initialize(p), RunError);
+}
+
+// Each point's update is its own: one thread and three give the same bits, the viscous
+// work included.
+template <int Dim>
+void same_bits_on_threads() {
+  const auto m = copper();
+  constexpr std::size_t n = 1000;
+  std::array<PointSet<Dim>, 2> pts{PointSet<Dim>(n, m.eos.rho0), PointSet<Dim>(n, m.eos.rho0)};
+  std::array<MieGruneisen<Dim>, 2> law{MieGruneisen<Dim>(m), MieGruneisen<Dim>(m)};
+  std::array<std::array<std::vector<double>, Dim * Dim>, 2> qv;
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> n01;
+  std::vector<double> L(n * Dim * Dim), shrink(n);
+  for (double& x : L) x = 0.5 * n01(rng);
+  for (double& x : shrink) x = 1.0 - 0.01 * std::abs(n01(rng));
+  for (int k = 0; k < 2; ++k) {
+    law[k].set_threads(k == 0 ? 1 : 3);
+    auto p = pts[k].view();
+    law[k].initialize(p);
+    for (auto& c : qv[k]) c.assign(n, 0.0);
+    for (int step = 0; step < 5; ++step) {
+      for (std::size_t q = 0; q < n; ++q) {
+        for (int c = 0; c < Dim * Dim; ++c) {
+          pts[k].L[c][q] = L[q * Dim * Dim + c];
+          qv[k][c][q] = -0.1 * std::abs(L[q * Dim * Dim + c]);
+        }
+        pts[k].volume[q] *= shrink[q];
+      }
+      law[k].update_stress(p, 1e-3);
+      std::array<const double*, Dim * Dim> ptr;
+      for (int c = 0; c < Dim * Dim; ++c) ptr[c] = qv[k][c].data();
+      law[k].add_viscous_work(p, ptr, 1e-3);
+    }
+  }
+  for (std::size_t q = 0; q < n; ++q) {
+    EXPECT_EQ(law[0].internal_energy(q), law[1].internal_energy(q)) << q;
+    for (int c = 0; c < Dim * Dim; ++c) EXPECT_EQ(pts[0].sig[c][q], pts[1].sig[c][q]) << q << " " << c;
+  }
+}
+
+TEST(MieGruneisen, SameBitsOnOneThreadAndThree) {
+  same_bits_on_threads<2>();
+  same_bits_on_threads<3>();
 }
 
 TEST(MieGruneisen, SaveAndLoadContinueBitForBit) {

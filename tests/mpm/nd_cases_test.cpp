@@ -249,7 +249,8 @@ TEST(N5, SameResultOnOneAndTwoThreads) {
 }
 
 // The same in 2-D through every threaded piece of the step: DDMP's grid operator, MUSL's
-// re-mapped gradient, the small-mass maps, the solve's face tallies, the energy sums.
+// re-mapped gradient, the small-mass maps, the solve's face tallies, the energy sums, and
+// (N6) the Mie-Gruneisen update, its viscous heat and the tensor viscosity.
 TEST(N3N6, SameResultOnOneAndTwoThreadsIn2D) {
   for (const char* name : {"N3_two_disks_ddmp.toml", "N6_copper_planar_impact.toml"}) {
     SCOPED_TRACE(name);

@@ -81,6 +81,7 @@ void Composite<Dim>::add_viscous_heat(const Points<Dim>& p, const std::array<dou
 
 template <int Dim>
 void Composite<Dim>::set_threads(int threads) {
+  Material<Dim>::set_threads(threads);
   for (auto& part : parts_) part.law->set_threads(threads);
 }
 

@@ -73,7 +73,9 @@ void CubicElastic<Dim>::update_stress(const Points<Dim>& p, double dt) {
       throw RunError(fmt::format("cubic_elastic: {} points, but the crystal axes of {} (the points "
                                  "must keep their number and order)",
                                  p.size(), axes_.size() / (Dim * Dim)));
-    for (std::size_t q = 0; q < p.size(); ++q) {
+    const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) num_threads(this->threads_) if (this->threads_ > 1)
+    for (std::size_t q = 0; q < n; ++q) {
       const Mat L = jaumann::gather<Dim>(p.grad_v, q);
       const Mat Rh = jaumann::half_step_rotation<Dim>(jaumann::spin<Dim>(L), dt);
       const Mat eps = jaumann::objective_step<Dim>(jaumann::gather<Dim>(p.strain, q), Rh,

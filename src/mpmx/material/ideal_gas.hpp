@@ -35,7 +35,9 @@ class IdealGas final : public Material<Dim> {
   }
 
   void update_stress(const Points<Dim>& p, double dt) override {
-    for (std::size_t q = 0; q < p.size(); ++q) {
+    const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) num_threads(this->threads_) if (this->threads_ > 1)
+    for (std::size_t q = 0; q < n; ++q) {
       for (int a = 0; a < Dim; ++a) p.strain[a * Dim + a][q] += dt * p.grad_v[a * Dim + a][q];
       set_pressure(p, q);
     }

@@ -36,7 +36,7 @@ class LinearElastic final : public Material<Dim> {
       }
     } else {
       const double mu = shear_modulus(), lambda = lame_lambda();
-#pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
+#pragma omp parallel for schedule(static) num_threads(this->threads_) if (this->threads_ > 1)
       for (std::size_t q = 0; q < n; ++q) {
         const jaumann::Mat<Dim> L = jaumann::gather<Dim>(p.grad_v, q);
         const jaumann::Mat<Dim> D = jaumann::rate_of_deformation<Dim>(L);
@@ -79,7 +79,6 @@ class LinearElastic final : public Material<Dim> {
     return s;
   }
 
-  void set_threads(int threads) override { threads_ = threads > 0 ? threads : 1; }
   double youngs_modulus() const { return E_; }
   double shear_modulus() const { return E_ / (2.0 * (1.0 + nu_)); }
   double lame_lambda() const { return E_ * nu_ / ((1.0 + nu_) * (1.0 - 2.0 * nu_)); }
@@ -103,7 +102,6 @@ class LinearElastic final : public Material<Dim> {
   }
 
   double E_, nu_;
-  int threads_ = 1;
 };
 
 }  // namespace mpmx::material

@@ -37,8 +37,9 @@ class Material {
   // The work dt q : D of the artificial viscous stress q, which a law that keeps an
   // energy account (Mie-Gruneisen) adds as heat; nothing by default.
   virtual void add_viscous_heat(const Points<Dim>&, const std::array<double*, Dim * Dim>&, double) {}
-  // Threads a law may spread its points over (results never depend on them).
-  virtual void set_threads(int) {}
+  // Threads a law spreads its points over (results never depend on them: every point's
+  // update is its own).
+  virtual void set_threads(int threads) { threads_ = threads > 0 ? threads : 1; }
   // Under MPI: spread the per-point state anew over the ranks from its measured cost
   // when the slowest rank's time since the last call exceeds `threshold` x the mean
   // (collective; called at checkpoints). True when state moved. Results never depend
@@ -50,6 +51,9 @@ class Material {
   // The points the per-point state is for (after load, checked against the deck's), or
   // -1 when the law keeps none.
   virtual long long state_points() const { return -1; }
+
+ protected:
+  int threads_ = 1;
 };
 
 }  // namespace mpmx::material

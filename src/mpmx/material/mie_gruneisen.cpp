@@ -52,8 +52,8 @@ void MieGruneisen<Dim>::set_stress(const Points<Dim>& p, std::size_t q) const {
 
 template <int Dim>
 double MieGruneisen<Dim>::checked_eta(std::size_t q, double v) const {
-  const double eta = 1.0 - m_.eos.rho0 * v;
-  if (!(v > 0.0) || !m_.eos.admissible(eta))
+  const double eta = eta_of(v);
+  if (!admissible_volume(v))
     throw RunError(fmt::format(
         "mie_gruneisen: point {} is compressed to rho / rho0 = {:.6g} (eta = 1 - rho0 / rho = {:.6g}): "
         "1 - s eta = {:.3g} is not positive, past the Hugoniot reference's limit eta = 1 / s = {:.6g} "
@@ -89,7 +89,17 @@ void MieGruneisen<Dim>::update_stress(const Points<Dim>& p, double dt) {
   const auto& eos = m_.eos;
   const double G = m_.shear_modulus, Y = m_.yield_stress;
   const double B = eos.gamma0 * eos.rho0;  // dp / de at constant volume
-  for (std::size_t q = 0; q < p.size(); ++q) {
+  const std::size_t n = p.size();
+  // Every point's new volume is checked before any point changes, so a point past the
+  // Hugoniot reference's limit stops the run with the state whole, named by the lowest
+  // index on any thread count.
+  std::size_t past = n;
+#pragma omp parallel for schedule(static) reduction(min : past) num_threads(this->threads_) if (this->threads_ > 1)
+  for (std::size_t q = 0; q < n; ++q)
+    if (!admissible_volume(p.volume[q] / p.mass[q])) past = std::min(past, q);
+  if (past < n) checked_eta(past, p.volume[past] / p.mass[past]);  // throws, naming it
+#pragma omp parallel for schedule(static) num_threads(this->threads_) if (this->threads_ > 1)
+  for (std::size_t q = 0; q < n; ++q) {
     const MatD L = jaumann::gather<Dim>(p.grad_v, q);
     const MatD D = jaumann::rate_of_deformation<Dim>(L);
     const MatD Rh = jaumann::half_step_rotation<Dim>(jaumann::spin<Dim>(L), dt);
@@ -110,7 +120,7 @@ void MieGruneisen<Dim>::update_stress(const Points<Dim>& p, double dt) {
     // Energy and pressure, implicit in p^{n+1} = A(eta^{n+1}) + B e^{n+1}.
     const double v_old = v_[q];
     const double v_new = p.volume[q] / p.mass[q];
-    const double eta_new = checked_eta(q, v_new);
+    const double eta_new = eta_of(v_new);  // admissible: checked above
     const double p_old = eos.pressure(1.0 - eos.rho0 * v_old, e_[q]);
     const double A_new = eos.reference_pressure(eta_new);
     const double dv = v_new - v_old;

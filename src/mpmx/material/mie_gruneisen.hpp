@@ -125,6 +125,9 @@ class MieGruneisen final : public Material<Dim> {
   void set_deviator(std::size_t q, const Mat3& s);
   void set_stress(const Points<Dim>& p, std::size_t q) const;
   double checked_eta(std::size_t q, double v) const;
+  // eta = 1 - rho0 v of the volume per mass v, and whether the EOS holds there.
+  double eta_of(double v) const { return 1.0 - m_.eos.rho0 * v; }
+  bool admissible_volume(double v) const { return v > 0.0 && m_.eos.admissible(eta_of(v)); }
 
   MieGruneisenParams m_;
   std::vector<double> e_, v_;
@@ -139,7 +142,9 @@ template <int Dim>
 template <class Ptr>
 void MieGruneisen<Dim>::add_viscous_work(const Points<Dim>& p, const std::array<Ptr, Dim * Dim>& qv,
                                          double dt) {
-  for (std::size_t q = 0; q < p.size(); ++q) {
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) num_threads(this->threads_) if (this->threads_ > 1)
+  for (std::size_t q = 0; q < n; ++q) {
     double w = 0.0;
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) w += qv[a * Dim + b][q] * 0.5 * (p.L(q, a, b) + p.L(q, b, a));

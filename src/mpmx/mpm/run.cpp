@@ -134,14 +134,16 @@ void check_finite(const State<Dim>& s) {
 }
 
 // The CFL step of the current state: cfl x the smallest cell side / max over points of
-// (sound speed + speed).
+// (sound speed + speed); a maximum, so the same for any thread count.
 template <int Dim>
 double stable_dt(const State<Dim>& s, double cfl) {
   const auto& p = s.particles;
   const auto view = points(p);
   double dx = s.grid.dx[0], fastest = 0.0;
   for (int d = 1; d < Dim; ++d) dx = std::min(dx, s.grid.dx[d]);
-  for (std::size_t q = 0; q < p.size(); ++q) {
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) reduction(max : fastest) num_threads(s.threads) if (s.threads > 1)
+  for (std::size_t q = 0; q < n; ++q) {
     double v2 = 0.0;
     for (int a = 0; a < Dim; ++a) v2 += p.v[a][q] * p.v[a][q];
     fastest = std::max(fastest, s.material->sound_speed(view, q) + std::sqrt(v2));

@@ -25,11 +25,11 @@ void finish(State<Dim>& s, double dt) {
   work_and_volumes(p, dt, s.small_strain, tracks_domain(s.shape->options().scheme), s.tallies, s.threads);
   const auto view = points(p);
   s.material->update_stress(view, dt);
-  artificial_viscosity(*s.material, s.viscosity, p);
+  artificial_viscosity(*s.material, s.viscosity, p, s.threads);
   if (s.tensor_viscosity.on) {
     std::array<double*, Dim * Dim> q;
     for (int c = 0; c < Dim * Dim; ++c) q[c] = p.viscous[c].data();
-    tensor_viscosity<Dim>(view, *s.material, s.tensor_viscosity.c_L, s.tensor_viscosity.c_q, q);
+    tensor_viscosity<Dim>(view, *s.material, s.tensor_viscosity.c_L, s.tensor_viscosity.c_q, q, s.threads);
     s.material->add_viscous_heat(view, q, dt);
   }
   s.time += dt;

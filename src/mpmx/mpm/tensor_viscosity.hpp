@@ -22,6 +22,7 @@
 // (Landshoff + von Neumann-Richtmyer) viscosity
 //   q = -(c_L rho a l |L| + c_q rho l^2 L^2)   for L < 0,   0 for L >= 0,
 // with l |L| the velocity jump across the point.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -43,12 +44,43 @@ Eigen::Matrix<double, Dim, Dim> tensor_viscosity_of(const Eigen::Matrix<double, 
     Mat q;
     q(0, 0) = lambda < 0.0 ? rho * l * lambda * (c_L * a - c_q * l * lambda) : 0.0;
     return q;
+  } else if constexpr (Dim == 2) {
+    // In closed form: an iterative eigensolver here took most of a 2-D step. D's
+    // eigenvalues are m -+ r; the eigenvector of m + r is (h + r, D01) or (D01, r - h),
+    // whichever adds like signs; the other is its normal. ||L||_2^2 is the larger
+    // eigenvalue of L^T L, by the same formula.
+    const double m = 0.5 * (L(0, 0) + L(1, 1)), h = 0.5 * (L(0, 0) - L(1, 1)), b = 0.5 * (L(0, 1) + L(1, 0));
+    const double r = std::sqrt(h * h + b * b);
+    const double lambda[2] = {m - r, m + r};
+    if (lambda[0] >= 0.0) return Mat::Zero();  // expansion or rest
+    const double x = h >= 0.0 ? h + r : b, y = h >= 0.0 ? b : r - h, len = std::sqrt(x * x + y * y);
+    const double c = len > 0.0 ? x / len : 1.0, s = len > 0.0 ? y / len : 0.0;  // len = 0: D = m I
+    const double g[2][2] = {{-s, c}, {c, s}};
+    const Mat M = L.transpose() * L;
+    const double mm = 0.5 * (M(0, 0) + M(1, 1)), mh = 0.5 * (M(0, 0) - M(1, 1));
+    const double norm = std::sqrt(mm + std::sqrt(mh * mh + M(0, 1) * M(0, 1)));
+    const double tau0 = norm > 0.0 ? std::abs(L.trace()) / norm : 0.0;
+    Mat q = Mat::Zero();
+    for (int k = 0; k < 2; ++k) {
+      if (!(lambda[k] < 0.0)) continue;
+      const double f = rho * l * lambda[k] * (tau0 * c_L * a - c_q * l * lambda[k]);
+      q(0, 0) += f * g[k][0] * g[k][0];
+      q(1, 1) += f * g[k][1] * g[k][1];
+      q(0, 1) += f * g[k][0] * g[k][1];
+    }
+    q(1, 0) = q(0, 1);
+    return q;
   } else {
+    // Eigen's closed form of the symmetric 3 x 3 problem (the iterative solver costs
+    // several times more); ||L||_2^2 the largest eigenvalue of L L^T.
     const Mat D = 0.5 * (L + L.transpose());
-    Eigen::SelfAdjointEigenSolver<Mat> eig(D);
+    Eigen::SelfAdjointEigenSolver<Mat> eig;
+    eig.computeDirect(D);
     Mat q = Mat::Zero();
     if (eig.eigenvalues().minCoeff() >= 0.0) return q;  // expansion or rest
-    const double norm = L.operatorNorm();
+    Eigen::SelfAdjointEigenSolver<Mat> sq;
+    sq.computeDirect(L * L.transpose(), Eigen::EigenvaluesOnly);
+    const double norm = std::sqrt(std::max(sq.eigenvalues().maxCoeff(), 0.0));
     const double tau0 = norm > 0.0 ? std::abs(L.trace()) / norm : 0.0;
     for (int k = 0; k < Dim; ++k) {
       const double lambda = eig.eigenvalues()(k);
@@ -64,11 +96,14 @@ Eigen::Matrix<double, Dim, Dim> tensor_viscosity_of(const Eigen::Matrix<double, 
 // The caller adds it to the Cauchy stress where the internal force is formed; it never
 // goes into p.stress, which the laws read back as their state. Call it after
 // Material::update_stress of the step, so that the sound speed is the updated state's.
+// Each point on its own: the same q for any thread count.
 template <int Dim>
 void tensor_viscosity(const material::Points<Dim>& p, const material::Material<Dim>& m, double c_L,
-                      double c_q, std::array<double*, Dim * Dim> q) {
+                      double c_q, std::array<double*, Dim * Dim> q, int threads = 1) {
   using Mat = Eigen::Matrix<double, Dim, Dim>;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::size_t i = 0; i < n; ++i) {
     Mat L;
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) L(a, b) = p.grad_v[a * Dim + b][i];

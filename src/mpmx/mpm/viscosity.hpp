@@ -12,10 +12,11 @@
 namespace mpmx::mpm {
 
 template <int Dim>
-void artificial_viscosity(const material::Material<Dim>& mat, double coef, Particles<Dim>& p) {
+void artificial_viscosity(const material::Material<Dim>& mat, double coef, Particles<Dim>& p, int threads = 1) {
   if (coef <= 0.0) return;
   const auto view = points(p);
   const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::size_t q = 0; q < n; ++q) {
     double div = 0.0, len = 0.0;
     for (int d = 0; d < Dim; ++d) div += p.grad_v[d * Dim + d][q];
