@@ -2,8 +2,8 @@
 # The 2-D and 3-D continuum against the peer: the two-disk case (160 x 160 cells) and the
 # two-sphere case (40^3 cells) of issue 13, with mpm, ddmp and ddmp_subpoints (2 per
 # axis), on one thread and two; and a shock step, bench/copper_2d.toml (N6 widened:
-# ddmp, mie_gruneisen, the tensor viscosity; 200 steps), which has no peer figure. Prints million particle-steps per second and the ratios
-# against Karamelo's figures for the same case measured on this machine kind
+# ddmp, mie_gruneisen, the tensor viscosity; 200 steps), which has no peer figure.
+# Prints million particle-steps per second and the ratios against Karamelo's figures for the same case measured on this machine kind
 # (docs/performance.md: 2-D 1.50-2.05, 3-D 0.85-0.93 million particle-steps/s, one rank),
 # and two threads against one. The runs end at t = 1 (BENCH_FULL=1: at 3.5, the whole run),
 # before the bodies touch: 800 steps in 2-D, 200 in 3-D, long enough for steady figures.
@@ -47,8 +47,8 @@ for case in disks_2d:1.50:2.05:mpm,ddmp,ddmp_subpoints spheres_3d:0.85:0.93:mpm,
     /usr/bin/python3 - "$tmp" "$name" "$scheme" "$REPEAT" "$klo" "$khi" <<'PY'
 import json, sys
 tmp, name, scheme, repeat = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4])
-peer = sys.argv[5] != "-"  # copper_2d: no Karamelo figure (it has no Mie-Gruneisen law)
-lo, hi = map(float, sys.argv[5:7]) if peer else (1.0, 1.0)
+# copper_2d ("-"): no Karamelo figure (it has no Mie-Gruneisen law)
+karamelo = lambda r: "" if sys.argv[5] == "-" else f" ({r / float(sys.argv[6]):4.1f}-{r / float(sys.argv[5]):4.1f}x Karamelo)"
 def best(t):
     runs = [json.load(open(f"{tmp}/{name}-{scheme}-{t}-{r}/run.json")) for r in range(1, repeat + 1)]
     return max(runs, key=lambda j: j["particle_steps_per_second"])
@@ -56,7 +56,7 @@ one, two = best(1), best(2)
 r1, r2 = one["particle_steps_per_second"] / 1e6, two["particle_steps_per_second"] / 1e6
 pair = max(sum(json.load(open(f"{tmp}/{name}-{scheme}-pair{k}-{r}/run.json"))["particle_steps_per_second"]
                for k in "ab") for r in range(1, repeat + 1)) / 1e6
-print(f"{name:>11} {scheme:<15} 1 thread {r1:6.2f} M/s" + (f" ({r1/hi:4.1f}-{r1/lo:4.1f}x Karamelo)" if peer else "") + ", "
+print(f"{name:>11} {scheme:<15} 1 thread {r1:6.2f} M/s{karamelo(r1)}, "
       f"2 threads {r2:6.2f} M/s ({r2/r1:4.2f}x one); two one-thread runs at once {pair:6.2f} M/s together "
       f"({pair/r1:4.2f}x one): two threads reach {r2/pair:4.2f} of it")
 phases = one.get("phases", {})

@@ -4,8 +4,9 @@
 # The jet: examples/J2_ddmp_md_20x10_1ppc_tiny.toml with the study's 500-atom boxes
 # (`[material.md] cells = 5`), to 0.5 ps (200 points x 20 macro steps x 25 MD steps),
 # on one thread and two; H2: examples/H2_strong_0K_256.toml (400 points x 256 atoms, 1-D)
-# to 2 ps on two (each two-thread run REPEAT times, default 2). Neither compares with its reference. Prints atom-steps per second of
-# wall time, the jet's two-thread speed-up (target 1.8x) and the jet against H2.
+# to 2 ps on two (each two-thread run REPEAT times, default 2). Neither compares with its
+# reference. Prints atom-steps per second of wall time, the jet's two-thread speed-up
+# (target 1.8x) and the jet against H2.
 # The target names H2's figure of 2026-11-22 (6.3e6 on two threads), measured with the build
 # of commit 59128a2; H2 has run faster since. H2_PEER_BUILD=DIR (a Release build of that
 # commit: docs/performance.md says how) also times that build on the same H2 deck, between
@@ -27,7 +28,7 @@ run() { "${4:-$build}/mpmx" run "$work/$1" --out "$work/$2" --threads "$3" --qui
 peer=${H2_PEER_BUILD:+$(cd "$H2_PEER_BUILD" && pwd)}
 [ -z "$peer" ] || [ -x "$peer/mpmx" ] || { echo "H2_PEER_BUILD=$H2_PEER_BUILD: no mpmx there" >&2; exit 1; }
 peer_run() { [ -z "$peer" ] || run h2.toml "$1" 2 "$peer"; }
-# The two-thread runs alternate, REPEAT times each (default 2), and the best of each counts: on a shared
+# The two-thread runs alternate, REPEAT times each, and the best of each counts: on a shared
 # machine whose speed drifts by tens of percent over minutes, the pairs see the same
 # conditions more nearly than single runs a minute apart.
 run jet.toml jet1 1
@@ -38,9 +39,9 @@ for r in $(seq "$REPEAT"); do
 done
 same=yes
 diff -rq "$work/jet1/vtk" "$work/jet2-1/vtk" > /dev/null || same=no
-/usr/bin/python3 - "$work" "$same" "$REPEAT" <<'PY'
+/usr/bin/python3 - "$work" "$same" "$REPEAT" "$peer" <<'PY'
 import json, sys
-work, same, repeat = sys.argv[1], sys.argv[2], int(sys.argv[3])
+work, same, repeat, peer = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
 rate = lambda d: (lambda j: j["md_atom_steps"] / j["wall_seconds"])(json.load(open(f"{work}/{d}/run.json")))
 builds = json.load(open(f"{work}/jet1/run.json"))["md"]
 box_steps = json.load(open(f"{work}/jet1/run.json"))["md_atom_steps"] / builds["atoms_per_point"]
@@ -54,11 +55,10 @@ print(f"jet DDMP-MD (2-D, 500-atom boxes), 2 threads: {j2:10.3e} atom-steps/s  {
       f"; particles identical: {same}  (runs: {runs(j2s)})")
 print(f"H2 DDMP-MD (1-D, 256-atom boxes),  2 threads: {h2:10.3e} atom-steps/s  (runs: {runs(h2s)})")
 print(f"jet / H2 on two threads, best of each: {j2 / h2:.2f} (target >= 1)")
-try:
-    p2s = [rate(f"h2peer-{r}") for r in range(1, repeat + 1)]
-except FileNotFoundError:
+if not peer:
     sys.exit(0)
+p2s = [rate(f"h2peer-{r}") for r in range(1, repeat + 1)]
 p2 = max(p2s)
-print(f"H2 with the build of 59128a2 (2026-11-22's 6.3e6), 2 threads: {p2:10.3e} atom-steps/s  (runs: {runs(p2s)})")
-print(f"jet / that H2, best of each: {j2 / p2:.2f} (target >= 1); today's H2 / that H2: {h2 / p2:.2f}")
+print(f"H2 with H2_PEER_BUILD ({peer}), 2 threads: {p2:10.3e} atom-steps/s  (runs: {runs(p2s)})")
+print(f"jet / that H2, best of each: {j2 / p2:.2f} (target >= 1); this build's H2 / that H2: {h2 / p2:.2f}")
 PY

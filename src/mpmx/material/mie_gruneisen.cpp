@@ -121,7 +121,7 @@ void MieGruneisen<Dim>::update_stress(const Points<Dim>& p, double dt) {
     const double v_old = v_[q];
     const double v_new = p.volume[q] / p.mass[q];
     const double eta_new = eta_of(v_new);  // admissible: checked above
-    const double p_old = eos.pressure(1.0 - eos.rho0 * v_old, e_[q]);
+    const double p_old = eos.pressure(eta_of(v_old), e_[q]);
     const double A_new = eos.reference_pressure(eta_new);
     const double dv = v_new - v_old;
     const double w_dev = dt * 0.5 * (v_old + v_new) * 0.5 * (s_old + s_new).cwiseProduct(D3).sum();

@@ -116,7 +116,7 @@ class MieGruneisen final : public Material<Dim> {
   const MieGruneisenParams& params() const { return m_; }
   double internal_energy(std::size_t q) const { return e_[q]; }        // per unit mass
   double specific_volume(std::size_t q) const { return v_[q]; }        // at the last update
-  double pressure(std::size_t q) const { return m_.eos.pressure(1.0 - m_.eos.rho0 * v_[q], e_[q]); }
+  double pressure(std::size_t q) const { return m_.eos.pressure(eta_of(v_[q]), e_[q]); }
   Mat3 deviator(std::size_t q) const;
   // The full 3x3 Cauchy stress -p I + s (its out-of-plane parts are not in the points).
   Mat3 stress3(std::size_t q) const { return deviator(q) - pressure(q) * Mat3::Identity(); }

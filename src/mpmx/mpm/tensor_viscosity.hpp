@@ -45,20 +45,26 @@ Eigen::Matrix<double, Dim, Dim> tensor_viscosity_of(const Eigen::Matrix<double, 
     q(0, 0) = lambda < 0.0 ? rho * l * lambda * (c_L * a - c_q * l * lambda) : 0.0;
     return q;
   } else if constexpr (Dim == 2) {
-    // In closed form: an iterative eigensolver here took most of a 2-D step. D's
-    // eigenvalues are m -+ r; the eigenvector of m + r is (h + r, D01) or (D01, r - h),
-    // whichever adds like signs; the other is its normal. ||L||_2^2 is the larger
-    // eigenvalue of L^T L, by the same formula.
-    const double m = 0.5 * (L(0, 0) + L(1, 1)), h = 0.5 * (L(0, 0) - L(1, 1)), b = 0.5 * (L(0, 1) + L(1, 0));
-    const double r = std::sqrt(h * h + b * b);
+    // In closed form: an iterative eigensolver here took most of a 2-D step. A symmetric
+    // [[m + h, b], [b, m - h]] has the eigenvalues m -+ r, r = |(h, b)| (Mohr's circle);
+    // the eigenvector of m + r is (h + r, b) or (b, r - h), whichever adds like signs, the
+    // other its normal. ||L||_2^2 is the larger eigenvalue of L^T L.
+    struct Circle {
+      double m, h, b, r;
+    };
+    auto circle = [](double xx, double yy, double xy) {
+      const double h = 0.5 * (xx - yy);
+      return Circle{0.5 * (xx + yy), h, xy, std::sqrt(h * h + xy * xy)};
+    };
+    const auto [m, h, b, r] = circle(L(0, 0), L(1, 1), 0.5 * (L(0, 1) + L(1, 0)));
     const double lambda[2] = {m - r, m + r};
     if (lambda[0] >= 0.0) return Mat::Zero();  // expansion or rest
     const double x = h >= 0.0 ? h + r : b, y = h >= 0.0 ? b : r - h, len = std::sqrt(x * x + y * y);
     const double c = len > 0.0 ? x / len : 1.0, s = len > 0.0 ? y / len : 0.0;  // len = 0: D = m I
     const double g[2][2] = {{-s, c}, {c, s}};
     const Mat M = L.transpose() * L;
-    const double mm = 0.5 * (M(0, 0) + M(1, 1)), mh = 0.5 * (M(0, 0) - M(1, 1));
-    const double norm = std::sqrt(mm + std::sqrt(mh * mh + M(0, 1) * M(0, 1)));
+    const Circle LtL = circle(M(0, 0), M(1, 1), M(0, 1));
+    const double norm = std::sqrt(LtL.m + LtL.r);
     const double tau0 = norm > 0.0 ? std::abs(L.trace()) / norm : 0.0;
     Mat q = Mat::Zero();
     for (int k = 0; k < 2; ++k) {
