@@ -243,12 +243,22 @@ TEST(NdBodies, BodiesTakeTheirOwnMaterial) {
 }
 
 // A 2-D run stopped (as by Ctrl-C) and resumed from its checkpoint ends bit for bit as
-// the uninterrupted run, its .pvd series continuing where it stopped.
-TEST(NdOutput, CheckpointResumesBitForBit) {
-  const fs::path dir = fs::temp_directory_path() / "mpmx_nd_resume_test";
+// the uninterrupted run, its .pvd series continuing where it stopped: for every law whose
+// per-point state a checkpoint carries (linear elastic; mie_gruneisen's energy, volume
+// and deviator, alone and as two bodies' composite).
+class NdResume : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(NdResume, CheckpointResumesBitForBit) {
+  const fs::path dir = fs::temp_directory_path() / (std::string("mpmx_nd_resume_test_") + GetParam());
   fs::remove_all(dir);
-  const auto c = test::deck_with(test::example("N3_two_disks_ddmp_subpoints.toml"), [](toml::table& t) {
-    t["time"].as_table()->insert_or_assign("end", 1.0);
+  const auto deck = test::example(std::string(GetParam()) + ".toml");
+  // 100 of the deck's steps, recorded at 50 and 100.
+  const auto c = test::deck_with(deck, [](toml::table& t) {
+    auto& time = *t["time"].as_table();
+    time.insert_or_assign("end", 100 * time["dt"].value_or(0.0));
+    auto& output = *t["output"].as_table();
+    output.erase("times");
+    output.insert_or_assign("every", 50);
   });
   const auto whole = test::run_dim<2>(c);
   mpm::RunOptions o;
@@ -271,11 +281,16 @@ TEST(NdOutput, CheckpointResumesBitForBit) {
     EXPECT_EQ(rest.state.particles.length[k], whole.state.particles.length[k]);
   }
   EXPECT_EQ(rest.stress_work, whole.stress_work);
+  EXPECT_EQ(rest.stored_final, whole.stored_final);
   const std::string pvd = test::slurp(dir / "particles.pvd");
   EXPECT_NE(pvd.find("particles_000050.vtu"), std::string::npos);
   EXPECT_NE(pvd.find("particles_000100.vtu"), std::string::npos);
   fs::remove_all(dir);
 }
+
+INSTANTIATE_TEST_SUITE_P(EveryLaw, NdResume,
+                         ::testing::Values("N3_two_disks_ddmp_subpoints", "N6_copper_planar_impact",
+                                           "N6_aluminium_on_copper"));
 
 // The keys of N2 and N4 are checked like every other: each refusal names its key.
 TEST(NdDecks, ManufacturedConvergenceAndNormalKeysAreChecked) {

@@ -260,7 +260,9 @@ RunResultOf<Dim> run_mpm_dim(const MpmConfig& config, const RunOptions& o) {
   rec.set("deck", c.deck);
   rec.set("deck_path", c.deck_path);
 
-  const Sums s0 = sums(s);
+  // A resumed run takes these from its checkpoint (carried() below), and its law's
+  // per-point state is not loaded yet: nothing is summed before the load.
+  const Sums s0 = o.resume ? Sums{} : sums(s);
   r.momentum_initial_vec = s0.momentum;
   r.stored_initial = s0.internal;
   r.kinetic_initial = s0.kinetic;
