@@ -391,6 +391,11 @@ Section Section::optional_table(std::string_view key) {
   return Section(deck_, n->as_table(), key_path(key));
 }
 
+std::unique_ptr<Table> Section::sub(std::string_view key) { return std::make_unique<Section>(table(key)); }
+std::unique_ptr<Table> Section::optional_sub(std::string_view key) {
+  return std::make_unique<Section>(optional_table(key));
+}
+
 std::vector<Section> Section::tables(std::string_view key) {
   const toml::node* n = get(key);
   std::vector<Section> out;

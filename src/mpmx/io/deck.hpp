@@ -14,6 +14,8 @@
 
 #include <toml++/toml.h>
 
+#include "mpmx/core/table.hpp"
+
 namespace mpmx::io {
 
 class Deck;
@@ -24,16 +26,16 @@ class Deck;
 // A key is reported once: the first error on a key (or on a table above it) wins, so a
 // missing or mistyped value is not reported again by the range checks that follow.
 // Numbers are finite: nan and inf (TOML allows both) are refused naming the key.
-class Section {
+class Section final : public Table {
  public:
   Section(Deck* deck, const toml::table* table, std::string path);
 
-  const std::string& path() const { return path_; }
-  bool present() const { return table_ != nullptr; }
-  bool has(std::string_view key) const;
+  const std::string& path() const override { return path_; }
+  bool present() const override { return table_ != nullptr; }
+  bool has(std::string_view key) const override;
 
-  double number(std::string_view key);                     // required
-  double number(std::string_view key, double fallback);    // optional
+  double number(std::string_view key) override;                     // required
+  double number(std::string_view key, double fallback) override;    // optional
   // Integers are read as 64-bit. Without limits any 64-bit value passes; prefer the
   // checked forms below.
   std::int64_t integer(std::string_view key);
@@ -43,42 +45,45 @@ class Section {
   // string is a type error saying an integer is needed. On any error the value returned
   // lies in [lo, hi] (the fallback, lo, or the value clamped), so that reading goes on
   // with a value that is safe to size things by.
-  std::int64_t integer(std::string_view key, std::int64_t lo, std::int64_t hi);                        // required
-  std::int64_t integer(std::string_view key, std::int64_t fallback, std::int64_t lo, std::int64_t hi);  // optional
+  std::int64_t integer(std::string_view key, std::int64_t lo, std::int64_t hi) override;                        // required
+  std::int64_t integer(std::string_view key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) override;  // optional
   // The same for a value kept in an int: the limits are ints, so no 64-bit value is ever
   // narrowed unchecked.
-  int integer_int(std::string_view key, int lo, int hi);
-  int integer_int(std::string_view key, int fallback, int lo, int hi);
+  int integer_int(std::string_view key, int lo, int hi) override;
+  int integer_int(std::string_view key, int fallback, int lo, int hi) override;
   // An array of integers, each in [lo, hi] (the error names the entry).
-  std::vector<std::int64_t> integers(std::string_view key, std::int64_t lo, std::int64_t hi);
-  bool boolean(std::string_view key, bool fallback);
-  std::string string(std::string_view key);
-  std::string string(std::string_view key, std::string fallback);
+  std::vector<std::int64_t> integers(std::string_view key, std::int64_t lo, std::int64_t hi) override;
+  bool boolean(std::string_view key, bool fallback) override;
+  std::string string(std::string_view key) override;
+  std::string string(std::string_view key, std::string fallback) override;
   // A string that must be one of `allowed` (the error lists them).
-  std::string choice(std::string_view key, const std::vector<std::string>& allowed);
+  std::string choice(std::string_view key, const std::vector<std::string>& allowed) override;
   std::string choice(std::string_view key, const std::vector<std::string>& allowed,
-                     std::string fallback);
-  std::vector<double> numbers(std::string_view key);                      // required
-  std::vector<double> numbers(std::string_view key, std::vector<double> fallback);
-  std::vector<std::string> strings(std::string_view key, std::vector<std::string> fallback);
+                     std::string fallback) override;
+  std::vector<double> numbers(std::string_view key) override;                      // required
+  std::vector<double> numbers(std::string_view key, std::vector<double> fallback) override;
+  std::vector<std::string> strings(std::string_view key, std::vector<std::string> fallback) override;
 
   Section table(std::string_view key);            // required sub-table
   Section optional_table(std::string_view key);   // absent -> present() == false
   // Array of tables ([[key]]): one Section each.
   std::vector<Section> tables(std::string_view key);
+  // The same as Tables, for readers that see only the Table interface.
+  std::unique_ptr<Table> sub(std::string_view key) override;
+  std::unique_ptr<Table> optional_sub(std::string_view key) override;
 
   // Range checks: record "key = value: reason" unless ok.
-  void check(bool ok, std::string_view key, std::string_view reason);
-  void positive(std::string_view key, double value);
-  void non_negative(std::string_view key, double value);
+  void check(bool ok, std::string_view key, std::string_view reason) override;
+  void positive(std::string_view key, double value) override;
+  void non_negative(std::string_view key, double value) override;
   // A temperature in K: from 0 to 1e6 K (beyond, no potential or mesoparticle model
   // means anything, and the velocities it draws overflow the run's figures).
-  void temperature(std::string_view key, double value);
+  void temperature(std::string_view key, double value) override;
   // An error not tied to one key of this table.
-  void error(std::string_view reason);
+  void error(std::string_view reason) override;
 
-  std::string key_path(std::string_view key) const;
-  std::string value_text(std::string_view key) const;
+  std::string key_path(std::string_view key) const override;
+  std::string value_text(std::string_view key) const override;
 
  private:
   const toml::node* get(std::string_view key);
