@@ -2,8 +2,8 @@
 // particle-steps per second, for comparing schemes measured in the same run.
 #include <benchmark/benchmark.h>
 
-#include "mpmx/io/mpm_deck.hpp"
-#include "mpmx/mpm/setup.hpp"
+#include "mpmx/app/mpm/deck.hpp"
+#include "mpmx/app/mpm/setup.hpp"
 #include "mpmx/mpm/step.hpp"
 
 namespace {

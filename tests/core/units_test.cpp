@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "mpmx/core/units.hpp"
-#include "mpmx/material/md_closure.hpp"
+#include "mpmx/multiscale/md_closure.hpp"
 #include "../md/md_test_util.hpp"
 
 namespace {

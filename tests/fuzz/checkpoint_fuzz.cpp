@@ -16,10 +16,10 @@
 #include "fuzz_util.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/io/checked_file.hpp"
-#include "mpmx/io/mpm_deck.hpp"
-#include "mpmx/mpm/checkpoint.hpp"
-#include "mpmx/mpm/run.hpp"
-#include "mpmx/mpm/setup.hpp"
+#include "mpmx/app/mpm/deck.hpp"
+#include "mpmx/app/mpm/checkpoint.hpp"
+#include "mpmx/app/mpm/run.hpp"
+#include "mpmx/app/mpm/setup.hpp"
 
 namespace {
 

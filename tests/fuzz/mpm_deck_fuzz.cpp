@@ -4,8 +4,8 @@
 
 #include "fuzz_util.hpp"
 #include "mpmx/core/error.hpp"
-#include "mpmx/io/mpm_deck.hpp"
-#include "mpmx/mpm/budget.hpp"
+#include "mpmx/app/mpm/deck.hpp"
+#include "mpmx/app/mpm/budget.hpp"
 
 namespace mpmx::fuzz {
 

@@ -13,7 +13,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/io/deck.hpp"
 #include "mpmx/material/cubic_elastic.hpp"
-#include "mpmx/material/md_closure.hpp"
+#include "mpmx/multiscale/md_closure.hpp"
 #include "mpmx/md/potential/potential.hpp"
 #include "point_set.hpp"
 

@@ -14,7 +14,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/isa.hpp"
 #include "mpmx/mpm/fused1d/linear_fused.hpp"
-#include "mpmx/mpm/setup.hpp"
+#include "mpmx/app/mpm/setup.hpp"
 #include "mpmx/mpm/step.hpp"
 
 using namespace mpmx;

@@ -13,7 +13,7 @@
 #include "mpm_test_util.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
-#include "mpmx/mpm/budget.hpp"
+#include "mpmx/app/mpm/budget.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "mpmx/core/error.hpp"
-#include "mpmx/io/mpm_deck.hpp"
+#include "mpmx/app/mpm/deck.hpp"
 
 namespace {
 

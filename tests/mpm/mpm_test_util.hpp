@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <toml++/toml.h>
 
-#include "mpmx/io/mpm_deck.hpp"
-#include "mpmx/mpm/run.hpp"
+#include "mpmx/app/mpm/deck.hpp"
+#include "mpmx/app/mpm/run.hpp"
 
 namespace mpmx::test {
 

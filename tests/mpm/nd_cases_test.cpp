@@ -9,8 +9,8 @@
 #include <cmath>
 
 #include "mpm_test_util.hpp"
-#include "mpmx/mpm/convergence.hpp"
-#include "mpmx/mpm/setup.hpp"
+#include "mpmx/app/mpm/convergence.hpp"
+#include "mpmx/app/mpm/setup.hpp"
 
 using namespace mpmx;
 

@@ -14,9 +14,9 @@
 
 #include "mpm_test_util.hpp"
 #include "mpmx/core/error.hpp"
-#include "mpmx/material/registry.hpp"
+#include "mpmx/material/model.hpp"
 #include "mpmx/mpm/points.hpp"
-#include "mpmx/mpm/setup.hpp"
+#include "mpmx/app/mpm/setup.hpp"
 
 using namespace mpmx;
 namespace fs = std::filesystem;

@@ -10,7 +10,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/mpm/points.hpp"
 #include "mpmx/mpm/profile.hpp"
-#include "mpmx/mpm/setup.hpp"
+#include "mpmx/app/mpm/setup.hpp"
 #include "mpmx/mpm/step.hpp"
 #include "mpmx/mpm/viscosity.hpp"
 

@@ -12,7 +12,7 @@
 
 #include "mpmx/core/exit_codes.hpp"
 #include "mpmx/io/checked_file.hpp"
-#include "mpmx/mpm/checkpoint.hpp"
+#include "mpmx/app/mpm/checkpoint.hpp"
 #include "ms_test_util.hpp"
 
 namespace {

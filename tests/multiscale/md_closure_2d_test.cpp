@@ -8,11 +8,11 @@
 
 #include <fmt/format.h>
 
-#include "mpmx/io/mpm_deck.hpp"
-#include "mpmx/material/md_closure.hpp"
+#include "mpmx/app/mpm/deck.hpp"
+#include "mpmx/multiscale/md_closure.hpp"
 #include "mpmx/md/lattice.hpp"
 #include "mpmx/mpm/points.hpp"
-#include "mpmx/mpm/run.hpp"
+#include "mpmx/app/mpm/run.hpp"
 #include "ms_test_util.hpp"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
-#include "mpmx/material/md_closure.hpp"
+#include "mpmx/multiscale/md_closure.hpp"
 #include "mpmx/md/config.hpp"
 #include "mpmx/md/equilibrium.hpp"
 #include "mpmx/mpm/points.hpp"

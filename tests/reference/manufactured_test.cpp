@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "mpmx/core/error.hpp"
-#include "mpmx/mpm/convergence.hpp"
+#include "mpmx/app/mpm/convergence.hpp"
 #include "mpmx/reference/manufactured.hpp"
 
 using namespace mpmx;

@@ -81,10 +81,16 @@ std::string library() {
 #endif
 }
 
-Failure failure_of(const std::exception& e) {
-  if (dynamic_cast<const InputError*>(&e)) return {Failure::input, e.what()};
-  if (dynamic_cast<const RunError*>(&e)) return {Failure::run, e.what()};
-  return {Failure::internal, e.what()};
+Failure current_failure() {
+  try {
+    throw;
+  } catch (const InputError& e) {
+    return {Failure::input, e.what()};
+  } catch (const RunError& e) {
+    return {Failure::run, e.what()};
+  } catch (const std::exception& e) {
+    return {Failure::internal, e.what()};
+  }
 }
 
 void raise(const Failure& f) {
@@ -120,8 +126,8 @@ void together(const std::function<void()>& f) {
     f();
   } catch (const std::bad_alloc&) {
     mine = Failure{Failure::internal, fmt::format("out of memory on rank {}", g_rank)};
-  } catch (const std::exception& e) {
-    mine = failure_of(e);
+  } catch (const std::exception&) {
+    mine = current_failure();
   }
   if (const auto agreed = first_failure(mine)) {
     mark_agreed();

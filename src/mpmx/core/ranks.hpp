@@ -36,7 +36,8 @@ struct Failure {
   enum Kind : int { input = 1, run = 2, internal = 3 } kind = run;
   std::string message;
 };
-Failure failure_of(const std::exception& e);
+// The exception being handled, as a Failure (call it in a catch block).
+Failure current_failure();
 // Throws the error a Failure describes (InputError, RunError, std::runtime_error).
 [[noreturn]] void raise(const Failure& f);
 

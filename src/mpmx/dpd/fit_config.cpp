@@ -23,7 +23,8 @@ FitConfig read_fit_config(io::Deck& deck) {
   c.seed_ref = cs.string("seed", "");
 
   auto md = root.table("md");
-  c.md_potential = md::read_potential(md.table("potential"), deck_dir);
+  io::Section pot = md.table("potential");
+  c.md_potential = md::read_potential(pot, deck_dir);
   c.lattice_constant = md.number("lattice_constant");
   md.positive("lattice_constant", c.lattice_constant);
   c.md.cells = static_cast<int>(md.integer("cells", 5));

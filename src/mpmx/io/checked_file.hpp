@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "mpmx/core/binary.hpp"
+
 namespace mpmx::io {
 
 // What a reader expects; `kind` is at most 8 characters ("mpm_run").
@@ -39,11 +41,6 @@ std::string_view unframe(std::string_view bytes, const CheckedKind& k, const std
 void write_checked(const std::string& path, const CheckedKind& k, std::string_view payload);
 std::string read_checked(const std::string& path, const CheckedKind& k);
 
-// A count read from a payload stream (u64), refused unless the `bytes_each` bytes per
-// item it announces are still there: a damaged count never reaches an allocation.
-std::uint64_t read_count(std::istream& in, std::size_t bytes_each, const char* what);
-
-// The payload byte `in` stands at (for messages), or -1.
-long long payload_offset(std::istream& in);
+// read_count and payload_offset: core/binary.hpp.
 
 }  // namespace mpmx::io

@@ -10,9 +10,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
-#include "mpmx/io/checked_file.hpp"
-#include "mpmx/material/md_closure.hpp"
-#include "mpmx/md/config.hpp"
+#include "mpmx/core/binary.hpp"
 
 namespace mpmx::material {
 
@@ -117,7 +115,7 @@ void CubicElastic<Dim>::save(std::ostream& out) const {
 
 template <int Dim>
 void CubicElastic<Dim>::load(std::istream& in) {
-  const std::uint64_t n = io::read_count(in, sizeof(double), "cubic_elastic axes");
+  const std::uint64_t n = read_count(in, sizeof(double), "cubic_elastic axes");
   if (n % (Dim * Dim) != 0 || (Dim == 1 && n != 0))
     throw InputError("checkpoint: the cubic_elastic crystal axes are missing or malformed");
   axes_.assign(n, 0.0);
@@ -136,7 +134,7 @@ std::unique_ptr<Material<1>> CubicElasticModel::make1() const { return std::make
 std::unique_ptr<Material<2>> CubicElasticModel::make2() const { return std::make_unique<CubicElastic<2>>(c); }
 std::unique_ptr<Material<3>> CubicElasticModel::make3() const { return std::make_unique<CubicElastic<3>>(c); }
 
-CubicConstants read_cubic_constants(io::Section& m, const Context&) {
+CubicConstants read_cubic_constants(Table& m, const Context&) {
   CubicConstants c;
   c.c11 = m.number("c11");
   m.positive("c11", c.c11);
@@ -152,7 +150,7 @@ CubicConstants read_cubic_constants(io::Section& m, const Context&) {
   return c;
 }
 
-std::shared_ptr<const Model> read_cubic_elastic(io::Section& m, const Context& ctx) {
+std::shared_ptr<const Model> CubicElasticEntry::read(Table& m, const Context& ctx) {
   auto r = std::make_shared<CubicElasticModel>();
   if (m.choice("constants_from", {"deck", "potential"}, "deck") == "deck") {
     r->rho = m.number("density");
@@ -171,16 +169,15 @@ std::shared_ptr<const Model> read_cubic_elastic(io::Section& m, const Context& c
                         ctx.units));
     return r;
   }
-  const md::PotentialSpec spec = md::read_potential(m.table("potential"), ctx.deck_dir);
-  if (spec.style == "eam" && spec.file.empty()) return r;  // read_potential said why
-  try {
-    const auto props = md_closure_properties(spec, *u);
-    r->c.c11 = props.modulus;
-    r->c.c12 = props.c12;
-    r->c.c44 = props.c44;
-    r->rho = props.density;
-  } catch (const std::exception& e) {
-    m.check(false, "potential", e.what());
+  if (!ctx.crystal_of) {
+    m.check(false, "constants_from", "potential constants need the MD engine, which this reader was not given");
+    return r;
+  }
+  if (const auto crystal = ctx.crystal_of(m, "potential")) {
+    r->c.c11 = crystal->c11;
+    r->c.c12 = crystal->c12;
+    r->c.c44 = crystal->c44;
+    r->rho = crystal->density;
   }
   if (m.has("density")) {  // the crystal's own unless the deck says otherwise
     r->rho = m.number("density");

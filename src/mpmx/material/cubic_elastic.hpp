@@ -23,7 +23,7 @@
 
 #include "mpmx/material/jaumann.hpp"
 #include "mpmx/material/material.hpp"
-#include "mpmx/material/registry.hpp"
+#include "mpmx/material/model.hpp"
 
 namespace mpmx::material {
 
@@ -117,10 +117,14 @@ struct CubicElasticModel final : Model {
 };
 
 // The elastic constants of a table: c11, c12, c44 given as numbers, checked for Born
-// stability. The place for `constants_from = "potential"` (the constants of an EAM
-// potential's crystal, as md_closure finds its C11), a later issue.
-CubicConstants read_cubic_constants(io::Section& m, const Context& ctx);
+// stability.
+CubicConstants read_cubic_constants(Table& m, const Context& ctx);
 
-std::shared_ptr<const Model> read_cubic_elastic(io::Section& m, const Context& ctx);
+// The registry entry (app/mpm/materials.hpp). constants_from = "potential" takes the
+// constants and the density of an MD potential's 0 K crystal (Context::crystal_of).
+struct CubicElasticEntry {
+  static constexpr std::string_view name = "cubic_elastic";
+  static std::shared_ptr<const Model> read(Table& m, const Context& ctx);
+};
 
 }  // namespace mpmx::material

@@ -22,7 +22,7 @@ std::unique_ptr<Material<1>> IdealGasModel::make1() const { return make_gas<1>(*
 std::unique_ptr<Material<2>> IdealGasModel::make2() const { return make_gas<2>(*this); }
 std::unique_ptr<Material<3>> IdealGasModel::make3() const { return make_gas<3>(*this); }
 
-std::shared_ptr<const Model> read_ideal_gas_isothermal(io::Section& m, const Context&) {
+std::shared_ptr<const Model> IdealGasIsothermalEntry::read(Table& m, const Context&) {
   auto r = std::make_shared<IdealGasModel>();
   r->isothermal = true;
   r->rho = m.number("density", 1.0);
@@ -32,7 +32,7 @@ std::shared_ptr<const Model> read_ideal_gas_isothermal(io::Section& m, const Con
   return r;
 }
 
-std::shared_ptr<const Model> read_ideal_gas_adiabatic(io::Section& m, const Context&) {
+std::shared_ptr<const Model> IdealGasAdiabaticEntry::read(Table& m, const Context&) {
   auto r = std::make_shared<IdealGasModel>();
   r->isothermal = false;
   r->rho = m.number("density", 1.0);

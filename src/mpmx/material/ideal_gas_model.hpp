@@ -1,6 +1,6 @@
 #pragma once
 // The [material] tables of model = "ideal_gas_isothermal" and "ideal_gas_adiabatic".
-#include "mpmx/material/registry.hpp"
+#include "mpmx/material/model.hpp"
 
 namespace mpmx::material {
 
@@ -20,7 +20,14 @@ struct IdealGasModel final : Model {
   std::unique_ptr<Material<3>> make3() const override;
 };
 
-std::shared_ptr<const Model> read_ideal_gas_isothermal(io::Section& m, const Context& ctx);
-std::shared_ptr<const Model> read_ideal_gas_adiabatic(io::Section& m, const Context& ctx);
+// The registry entries (app/mpm/materials.hpp).
+struct IdealGasIsothermalEntry {
+  static constexpr std::string_view name = "ideal_gas_isothermal";
+  static std::shared_ptr<const Model> read(Table& m, const Context& ctx);
+};
+struct IdealGasAdiabaticEntry {
+  static constexpr std::string_view name = "ideal_gas_adiabatic";
+  static std::shared_ptr<const Model> read(Table& m, const Context& ctx);
+};
 
 }  // namespace mpmx::material

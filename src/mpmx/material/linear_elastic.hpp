@@ -11,11 +11,13 @@
 
 namespace mpmx::material {
 
+#include "mpmx/material/linear_elastic_1d.inc"
+
 template <int Dim>
 class LinearElastic final : public Material<Dim> {
  public:
   LinearElastic(double youngs_modulus, double poisson_ratio)
-      : E_(youngs_modulus), nu_(poisson_ratio) {}
+      : E_(youngs_modulus), nu_(poisson_ratio), fused_{youngs_modulus} {}
 
   std::string name() const override { return "linear_elastic"; }
 
@@ -29,11 +31,9 @@ class LinearElastic final : public Material<Dim> {
       double* __restrict eps = p.strain[0];
       double* __restrict sig = p.stress[0];
       const double* __restrict L = p.grad_v[0];
+      const auto muladd = [](double a, double b, double c) { return a * b + c; };
 #pragma omp simd
-      for (std::size_t q = 0; q < n; ++q) {
-        eps[q] += dt * L[q];
-        sig[q] = E_ * eps[q];
-      }
+      for (std::size_t q = 0; q < n; ++q) sig[q] = elastic_1d(eps[q], L[q], dt, E_, muladd);
     } else {
       const double mu = shear_modulus(), lambda = lame_lambda();
 #pragma omp parallel for schedule(static) num_threads(this->threads_) if (this->threads_ > 1)
@@ -79,6 +79,9 @@ class LinearElastic final : public Material<Dim> {
     return s;
   }
 
+  bool stored_energy_in_1d() const override { return Dim == 1; }
+  const FusedElastic1d* fused_elastic() const override { return Dim == 1 ? &fused_ : nullptr; }
+
   double youngs_modulus() const { return E_; }
   double shear_modulus() const { return E_ / (2.0 * (1.0 + nu_)); }
   double lame_lambda() const { return E_ * nu_ / ((1.0 + nu_) * (1.0 - 2.0 * nu_)); }
@@ -102,6 +105,7 @@ class LinearElastic final : public Material<Dim> {
   }
 
   double E_, nu_;
+  FusedElastic1d fused_;
 };
 
 }  // namespace mpmx::material

@@ -14,7 +14,7 @@ std::unique_ptr<Material<1>> LinearElasticModel::make1() const { return std::mak
 std::unique_ptr<Material<2>> LinearElasticModel::make2() const { return std::make_unique<LinearElastic<2>>(E, nu); }
 std::unique_ptr<Material<3>> LinearElasticModel::make3() const { return std::make_unique<LinearElastic<3>>(E, nu); }
 
-std::shared_ptr<const Model> read_linear_elastic(io::Section& m, const Context&) {
+std::shared_ptr<const Model> LinearElasticEntry::read(Table& m, const Context&) {
   auto r = std::make_shared<LinearElasticModel>();
   r->rho = m.number("density", 1.0);
   m.positive("density", r->rho);

@@ -1,14 +1,20 @@
 #pragma once
 // The [material] table of model = "linear_elastic".
-#include "mpmx/material/registry.hpp"
+#include "mpmx/material/model.hpp"
 
 namespace mpmx::material {
+
+// The registry entry (app/mpm/materials.hpp).
+struct LinearElasticEntry {
+  static constexpr std::string_view name = "linear_elastic";
+  static std::shared_ptr<const Model> read(Table& m, const Context& ctx);
+};
 
 struct LinearElasticModel final : Model {
   double rho = 1.0, E = 1.0, nu = 0.0;
   bool unstrained = false;
 
-  std::string name() const override { return "linear_elastic"; }
+  std::string name() const override { return std::string(LinearElasticEntry::name); }
   double density() const override { return rho; }
   bool solid() const override { return true; }
   bool density_of_unstrained() const override { return unstrained; }
@@ -22,6 +28,5 @@ struct LinearElasticModel final : Model {
   std::unique_ptr<Material<3>> make3() const override;
 };
 
-std::shared_ptr<const Model> read_linear_elastic(io::Section& m, const Context& ctx);
 
 }  // namespace mpmx::material

@@ -3,13 +3,37 @@
 // a costly closure (an MD system per point) can spread the batch over threads without
 // the solver knowing. Called once per step, never per particle.
 #include <cmath>
+#include <cstdint>
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <utility>
+#include <variant>
+#include <vector>
 
 #include "mpmx/material/points.hpp"
 
 namespace mpmx::material {
+
+// A figure for the run record: a dotted key and its value.
+using Figure = std::pair<std::string, std::variant<std::int64_t, double>>;
+
+// What a law that runs a model of its own inside every point (md_closure: an MD box per
+// point) reports of that work.
+class Subscale {
+ public:
+  virtual ~Subscale() = default;
+  virtual std::int64_t steps() const = 0;  // its steps in all (MD: atom-steps, every rank's)
+  virtual double seconds() const = 0;      // wall time in it on this rank
+  virtual int threads() const = 0;         // threads it spreads over
+  virtual std::vector<Figure> figures() const = 0;
+};
+
+// The 1-D linear elastic law in the form the fused 1-D kernels (mpm/fused1d) take it;
+// a law that has one supplies it (Material<1>::fused_elastic).
+struct FusedElastic1d {
+  double youngs_modulus = 0.0;
+};
 
 template <int Dim>
 class Material {
@@ -40,6 +64,16 @@ class Material {
   // Threads a law spreads its points over (results never depend on them: every point's
   // update is its own).
   virtual void set_threads(int threads) { threads_ = threads > 0 ? threads : 1; }
+  // The run's --threads as asked (0: OpenMP's default), for a law that spreads work of
+  // its own over them (md_closure's boxes); called before initialize.
+  virtual void use_run_threads(int /*requested*/) {}
+  // The work a law does inside its points, when it runs a model of its own there.
+  virtual const Subscale* subscale() const { return nullptr; }
+  // 1-D: whether ADMPM's energy account of the bar (eq. 8.26) covers this law, whose
+  // stored_energy is then summed into the run's energy balance (the elastic bar only).
+  virtual bool stored_energy_in_1d() const { return false; }
+  // 1-D: the law as the fused kernels take it, where it has such a form.
+  virtual const FusedElastic1d* fused_elastic() const { return nullptr; }
   // Under MPI: spread the per-point state anew over the ranks from its measured cost
   // when the slowest rank's time since the last call exceeds `threshold` x the mean
   // (collective; called at checkpoints). True when state moved. Results never depend

@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
-#include "mpmx/io/checked_file.hpp"
+#include "mpmx/core/binary.hpp"
 
 namespace mpmx::material {
 
@@ -154,7 +154,7 @@ void MieGruneisen<Dim>::save(std::ostream& out) const {
 
 template <int Dim>
 void MieGruneisen<Dim>::load(std::istream& in) {
-  const std::uint64_t n = io::read_count(in, 2 * sizeof(double) + sizeof(s_[0]), "mie_gruneisen points");
+  const std::uint64_t n = read_count(in, 2 * sizeof(double) + sizeof(s_[0]), "mie_gruneisen points");
   e_.assign(n, 0.0);
   v_.assign(n, 0.0);
   s_.assign(n, {});
@@ -180,7 +180,7 @@ std::unique_ptr<Material<1>> MieGruneisenModel::make1() const { return std::make
 std::unique_ptr<Material<2>> MieGruneisenModel::make2() const { return std::make_unique<MieGruneisen<2>>(m); }
 std::unique_ptr<Material<3>> MieGruneisenModel::make3() const { return std::make_unique<MieGruneisen<3>>(m); }
 
-std::shared_ptr<const Model> read_mie_gruneisen(io::Section& t, const Context&) {
+std::shared_ptr<const Model> MieGruneisenEntry::read(Table& t, const Context&) {
   auto r = std::make_shared<MieGruneisenModel>();
   auto& eos = r->m.eos;
   eos.rho0 = t.number("density");

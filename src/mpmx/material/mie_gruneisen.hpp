@@ -35,7 +35,7 @@
 
 #include "mpmx/material/jaumann.hpp"
 #include "mpmx/material/material.hpp"
-#include "mpmx/material/registry.hpp"
+#include "mpmx/material/model.hpp"
 
 namespace mpmx::material {
 
@@ -170,6 +170,10 @@ struct MieGruneisenModel final : Model {
   std::unique_ptr<Material<3>> make3() const override;
 };
 
-std::shared_ptr<const Model> read_mie_gruneisen(io::Section& m, const Context& ctx);
+// The registry entry (app/mpm/materials.hpp).
+struct MieGruneisenEntry {
+  static constexpr std::string_view name = "mie_gruneisen";
+  static std::shared_ptr<const Model> read(Table& m, const Context& ctx);
+};
 
 }  // namespace mpmx::material

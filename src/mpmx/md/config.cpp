@@ -17,7 +17,7 @@ namespace {
 constexpr std::int64_t kMax64 = std::numeric_limits<std::int64_t>::max();
 }  // namespace
 
-PotentialSpec read_potential(io::Section pot, const std::string& deck_dir) {
+PotentialSpec read_potential(Table& pot, const std::string& deck_dir) {
   PotentialSpec spec;
   spec.style = pot.choice("style", {"eam", "lj", "sutton_chen"}, "eam");
   if (spec.style == "eam") {
@@ -74,7 +74,10 @@ MdConfig read_md_config(io::Deck& deck) {
   const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
   auto root = deck.root();
 
-  c.potential = read_potential(root.table("potential"), deck_dir);
+  {
+    io::Section pot = root.table("potential");
+    c.potential = read_potential(pot, deck_dir);
+  }
 
   auto lat = root.table("lattice");
   lat.choice("type", {"fcc"}, "fcc");

@@ -48,7 +48,7 @@ struct MdConfig {
 
 // A [potential] table: style, file (resolved against the deck's folder, then the
 // LAMMPS potentials folder), elements, or the analytic styles' parameters.
-PotentialSpec read_potential(io::Section pot, const std::string& deck_dir);
+PotentialSpec read_potential(Table& pot, const std::string& deck_dir);
 
 // Reads and validates; throws InputError listing every problem (Deck::finish()).
 MdConfig read_md_config(io::Deck& deck);

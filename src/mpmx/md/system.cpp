@@ -294,7 +294,7 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   in.read(magic, 8);
   if (!in || std::memcmp(magic, kMagic, 8) != 0) throw InputError("not an mpmx MD checkpoint");
   // 6 coordinates, a type and an id per atom at least: a damaged count is refused here.
-  const std::uint64_t n = io::read_count(in, 6 * sizeof(double) + sizeof(int), "MD atoms");
+  const std::uint64_t n = read_count(in, 6 * sizeof(double) + sizeof(int), "MD atoms");
   if (n == 0) throw InputError("MD checkpoint: a box of no atoms");
   Box box;
   get(in, box);

@@ -7,7 +7,6 @@
 #include <array>
 #include <vector>
 
-#include "mpmx/mpm/config.hpp"
 #include "mpmx/mpm/grid.hpp"
 #include "mpmx/mpm/particles.hpp"
 #include "mpmx/reference/manufactured.hpp"
@@ -18,8 +17,8 @@ namespace mpmx::mpm {
 template <int Dim>
 class Manufactured {
  public:
-  // Takes X_p from the points as set up; the law's Lame constants from the deck.
-  Manufactured(const MpmConfig& c, const Particles<Dim>& initial);
+  // Takes X_p from the points as set up; the solution's parameters (checked).
+  Manufactured(const reference::AxisAligned& solution, const Particles<Dim>& initial);
 
   // The exact velocity at t = 0.
   void start(Particles<Dim>& p) const;

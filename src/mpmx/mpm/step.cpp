@@ -1,9 +1,7 @@
 #include "mpmx/mpm/step.hpp"
 
 #include <cmath>
-#include <typeinfo>
 
-#include "mpmx/material/linear_elastic.hpp"
 #include "mpmx/mpm/mass_distribution.hpp"
 #include "mpmx/mpm/musl.hpp"
 #include "mpmx/mpm/points.hpp"
@@ -77,13 +75,14 @@ void step(State<Dim>& s, double dt) {
       return step_stencil(s, dt);
     // Fused hat + transfers (mpm; DDMP, eq. 3.31, sub-points eqs. 6.1-6.3): the same
     // algorithm as the stencil path. For a linear elastic solid without viscosity, g2p
-    // also does what finish() does, in its own pass, where it can.
+    // also does what finish() does, in its own pass, where it can: the law supplies the
+    // form the kernels take (material.hpp, fused_elastic).
     shape::ElasticUpdate update;
-    const auto& mat = *s.material;
-    const bool elastic = s.viscosity <= 0.0 && typeid(mat) == typeid(material::LinearElastic<1>);
+    const material::FusedElastic1d* law = s.viscosity <= 0.0 ? s.material->fused_elastic() : nullptr;
+    const bool elastic = law != nullptr;
     if (elastic) {
       update.small_strain = s.small_strain;
-      update.youngs_modulus = static_cast<const material::LinearElastic<1>&>(mat).youngs_modulus();
+      update.youngs_modulus = law->youngs_modulus;
     }
     shape::ElasticUpdate* fuse = elastic ? &update : nullptr;
     if (scheme == Scheme::mpm) {

@@ -36,6 +36,8 @@ using simd::DFull;
 
 namespace {
 
+#include "mpmx/material/linear_elastic_1d.inc"
+
 // Pass 1 kernel: cell, fraction and gradient of every particle (as cell_of); returns
 // whether any lies more than a cell past the grid (or is NaN), and in `edge` whether any
 // lies past its ends at all (a zero gradient there). A vector at a time: the flags come
@@ -296,9 +298,9 @@ void node_mass_momentum(const double* __restrict S, std::size_t stride, int cell
 
 // The DDMP operator D (eq. 3.31), kept per node storage index.
 void ddmp_table(const Grid<1>& g, LinearCells& lc) {
-  if (lc.dm.size() == g.storage) return;
+  if (lc.ddmp_d_left.size() == g.storage) return;
   DdmpTable t(g);
-  lc.dm = t.dm, lc.dc = t.d0, lc.dp = t.dp;
+  lc.ddmp_d_left = t.dm, lc.ddmp_d_centre = t.d0, lc.ddmp_d_right = t.dp;
 }
 
 
@@ -374,14 +376,14 @@ void cell_tables(const Grid<1>& g, LinearCells& lc, bool midpoint) {
   const double* __restrict VL = g.velocity_L[0].data() + Grid<1>::ghost;
   const double* __restrict VN = g.velocity[0].data() + Grid<1>::ghost;
   // Padded: g2p_ordered loads a vector's worth (up to eight) from any cell on.
-  lc.d0.resize(cells + 8);
-  lc.dd.resize(cells + 8);
-  lc.g0.resize(cells + 8);
-  lc.dg.resize(cells + 8);
-  double* __restrict d0 = lc.d0.data();
-  double* __restrict dd = lc.dd.data();
-  double* __restrict g0 = lc.g0.data();
-  double* __restrict dg = lc.dg.data();
+  lc.dv_left.resize(cells + 8);
+  lc.dv_jump.resize(cells + 8);
+  lc.vmove_left.resize(cells + 8);
+  lc.vmove_jump.resize(cells + 8);
+  double* __restrict d0 = lc.dv_left.data();
+  double* __restrict dd = lc.dv_jump.data();
+  double* __restrict g0 = lc.vmove_left.data();
+  double* __restrict dg = lc.vmove_jump.data();
 #pragma omp simd
   for (int c = 0; c < cells; ++c) {
     const double a = VL[c] - VN[c], b = VL[c + 1] - VN[c + 1];
@@ -417,19 +419,20 @@ template <bool SmallStrain, bool Length, class T>
   const T V = load_as<T>(a.V + q), Vs = (SmallStrain ? load_as<T>(a.V0 + q) : V) * load_as<T>(a.sig + q);
   simd::store(a.V + q, V * grow);
   if constexpr (Length) simd::store(a.len + q, load_as<T>(a.len + q) * grow);
-  const T e = fmadd(vdt, L, load_as<T>(a.eps + q));
+  T e = load_as<T>(a.eps + q);
+  const T sig = elastic_1d(e, L, vdt, simd::splat_as<T>(E), [](T x, T y, T z) { return fmadd(x, y, z); });
   simd::store(a.eps + q, e);
-  simd::store(a.sig + q, simd::splat_as<T>(E) * e);
+  simd::store(a.sig + q, sig);
   return Vs;
 }
 
 // The per-cell g2p tables at every particle (pc[k * n + q] = table_k[cell[q]]), for the
 // portable kernel (g2p_ordered reads the tables directly).
 void expand_cells(LinearCells& lc, std::size_t n) {
-  lc.pc.resize(4 * n);
-  const double* tab[4] = {lc.d0.data(), lc.dd.data(), lc.g0.data(), lc.dg.data()};
+  lc.at_particle.resize(4 * n);
+  const double* tab[4] = {lc.dv_left.data(), lc.dv_jump.data(), lc.vmove_left.data(), lc.vmove_jump.data()};
   const int* __restrict cell = lc.cell.data();
-  double* __restrict out = lc.pc.data();
+  double* __restrict out = lc.at_particle.data();
   for (std::size_t q = 0; q < n; ++q)
     for (int k = 0; k < 4; ++k) out[k * n + q] = tab[k][cell[q]];
 }
@@ -441,7 +444,7 @@ template <bool Update, bool SmallStrain>
 [[gnu::noinline]] double g2p_expanded(const LinearCells& lc, double dt, double dtm, double E, Particles<1>& p,
                                       double& work) {
   const std::size_t n = p.size();
-  const double* __restrict d0 = lc.pc.data();  // the cell's tables, at each particle
+  const double* __restrict d0 = lc.at_particle.data();  // the cell's tables, at each particle
   const double* __restrict dd = d0 + n;
   const double* __restrict g0 = dd + n;
   const double* __restrict dg = g0 + n;
@@ -478,10 +481,10 @@ template <bool Update, bool SmallStrain, bool Inside>
   using vdouble = hn::Vec<D4>;
   constexpr int K = simd::kLanes<D4>;
   const std::size_t n = p.size();
-  const double* __restrict T0 = lc.d0.data();
-  const double* __restrict T1 = lc.dd.data();
-  const double* __restrict T2 = lc.g0.data();
-  const double* __restrict T3 = lc.dg.data();
+  const double* __restrict T0 = lc.dv_left.data();
+  const double* __restrict T1 = lc.dv_jump.data();
+  const double* __restrict T2 = lc.vmove_left.data();
+  const double* __restrict T3 = lc.vmove_jump.data();
   const int* __restrict cell = lc.cell.data();
   const double* __restrict frac = lc.frac.data();
   const double* __restrict grad = lc.grad.data();
@@ -556,17 +559,17 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   const bool sub = subpoints > 0;
   ddmp_table(g, lc);
   locate_all(g, p, lc, !lc.ordered);  // the order: per_cell_sums
-  constexpr int nw = 3;  // weights per particle (sub-points in other cells: lc.Wx)
-  lc.W.resize(nw * n);
+  constexpr int nw = 3;  // weights per particle (sub-points in other cells: lc.ddmp_w_next)
+  lc.ddmp_w.resize(nw * n);
   const int* __restrict cell = lc.cell.data();
   const double* __restrict x = p.x[0].data();
   if (!sub) {
     lc.mixed.clear();
     lc.stray.clear();
-    ddmp_weights(n, lc.frac.data(), lc.W.data());
+    ddmp_weights(n, lc.frac.data(), lc.ddmp_w.data());
   } else {
-    lc.Wx.resize(4 * n);
-    fused::subpoint_weights(n, x, p.length[0].data(), cell, x0, inv, top, subpoints, lc.W.data(), lc.Wx.data(),
+    lc.ddmp_w_next.resize(4 * n);
+    fused::subpoint_weights(n, x, p.length[0].data(), cell, x0, inv, top, subpoints, lc.ddmp_w.data(), lc.ddmp_w_next.data(),
                      lc.mixed, lc.stray);
   }
   // Pass 2 over m, m f, m v, m v f and V sigma times each weight.
@@ -576,7 +579,7 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   const double* __restrict vol = reference_volume ? p.volume0.data() : p.volume.data();
   const double* __restrict sig = p.stress[0].data();
   const double* __restrict qv = p.viscous_pressure.data();
-  const double* __restrict W = lc.W.data();
+  const double* __restrict W = lc.ddmp_w.data();
   const double* __restrict m = p.mass.data();
   const double* __restrict v = p.v[0].data();
   const double* __restrict frac = lc.frac.data();
@@ -600,10 +603,10 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
   // nodes of the point's cell; the rest is -sum_j D_ji Q_j with Q_j the hat-weighted
   // nodal sum of V sigma (1 - alpha) (eq. 3.31). Per cell: SA[c]; per node: Q[j].
   const double* __restrict F0 = S + 4 * stride + kPad;  // force fields by particle cell
-  lc.vg.resize(cells + 2);
-  lc.Dv.resize(g.storage + 8);  // padded: eight-wide loads from any node
-  double* __restrict SA = lc.vg.data() + 1;                // cells -1 .. cells
-  double* __restrict Q = lc.Dv.data() + Grid<1>::ghost;   // nodes -1 .. cells + 1
+  lc.scratch_sums.resize(cells + 2);
+  lc.scratch_dv.resize(g.storage + 8);  // padded: eight-wide loads from any node
+  double* __restrict SA = lc.scratch_sums.data() + 1;                // cells -1 .. cells
+  double* __restrict Q = lc.scratch_dv.data() + Grid<1>::ghost;   // nodes -1 .. cells + 1
   SA[-1] = SA[cells] = 0.0;
   Q[-1] = Q[cells + 1] = 0.0;
   const double* __restrict A = F0;
@@ -614,16 +617,16 @@ void p2g_ddmp(const Grid<1>&, const Particles<1>& p, bool reference_volume, int 
 #pragma omp simd
   for (int j = 0; j <= cells; ++j) Q[j] = B[j] + C[j - 1];
   // Sub-points in the neighbouring cells (their cells and nodes lie inside the grid).
-  const double* __restrict Wx = lc.Wx.data();
+  const double* __restrict Wx = lc.ddmp_w_next.data();
   for (const int q : lc.mixed) {
     const int c = cell[q];
     const double vs = vol[q] * (sig[q] - qv[q]);
     SA[c - 1] += vs * Wx[q], SA[c + 1] += vs * Wx[n + q];
     Q[c - 1] += vs * Wx[2 * n + q], Q[c + 2] += vs * Wx[3 * n + q];
   }
-  const double* __restrict dm = lc.dm.data() + Grid<1>::ghost;
-  const double* __restrict dc = lc.dc.data() + Grid<1>::ghost;
-  const double* __restrict dp = lc.dp.data() + Grid<1>::ghost;
+  const double* __restrict dm = lc.ddmp_d_left.data() + Grid<1>::ghost;
+  const double* __restrict dc = lc.ddmp_d_centre.data() + Grid<1>::ghost;
+  const double* __restrict dp = lc.ddmp_d_right.data() + Grid<1>::ghost;
   double* __restrict F = g.force[0].data() + Grid<1>::ghost;
 #pragma omp simd
   for (int i = 0; i <= cells; ++i)
@@ -666,16 +669,16 @@ template <bool Sub, bool Update, bool SmallStrain>
   using vdouble = hn::Vec<D4>;
   constexpr int K = simd::kLanes<D4>;
   auto load = [d](const double* at) { return simd::load(d, at); };
-  const double* __restrict d0 = lc.d0.data();
-  const double* __restrict dd = lc.dd.data();
-  const double* __restrict g0 = lc.g0.data();
-  const double* __restrict dg = lc.dg.data();
-  const double* __restrict dgp = lc.vg.data() + 1;               // dg with a zero each side
-  const double* __restrict Dn = lc.Dv.data() + Grid<1>::ghost;  // by node, -1 .. cells + 1
+  const double* __restrict d0 = lc.dv_left.data();
+  const double* __restrict dd = lc.dv_jump.data();
+  const double* __restrict g0 = lc.vmove_left.data();
+  const double* __restrict dg = lc.vmove_jump.data();
+  const double* __restrict dgp = lc.scratch_sums.data() + 1;               // dg with a zero each side
+  const double* __restrict Dn = lc.scratch_dv.data() + Grid<1>::ghost;  // by node, -1 .. cells + 1
   const int* __restrict cell = lc.cell.data();
   const double* __restrict frac = lc.frac.data();
-  const double* __restrict W = lc.W.data();
-  const double* __restrict Wx = lc.Wx.data();
+  const double* __restrict W = lc.ddmp_w.data();
+  const double* __restrict Wx = lc.ddmp_w_next.data();
   double* __restrict x = p.x[0].data();
   double* __restrict v = p.v[0].data();
   double* __restrict L = p.grad_v[0].data();
@@ -738,16 +741,16 @@ double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool mi
   const double top = cells, inv = g.inv_dx[0], x0 = g.lower[0];
   // Nodal gradient of the velocity that gives grad v: Dv_j = sum_i D_ji vg_i (ghosts 0).
   grow(lc.val, g.storage);  // free after p2g: scratch
-  lc.Dv.resize(g.storage + 8);  // padded: eight-wide loads from any node
+  lc.scratch_dv.resize(g.storage + 8);  // padded: eight-wide loads from any node
   const double* __restrict VL = g.velocity_L[0].data();
   const double* __restrict VN = g.velocity[0].data();
   double* __restrict vg = lc.val.data();
 #pragma omp simd
   for (std::size_t i = 0; i < g.storage; ++i) vg[i] = wl * VL[i] + wn * VN[i];
-  const double* __restrict dm = lc.dm.data();
-  const double* __restrict dc = lc.dc.data();
-  const double* __restrict dp = lc.dp.data();
-  double* __restrict Dv = lc.Dv.data();
+  const double* __restrict dm = lc.ddmp_d_left.data();
+  const double* __restrict dc = lc.ddmp_d_centre.data();
+  const double* __restrict dp = lc.ddmp_d_right.data();
+  double* __restrict Dv = lc.scratch_dv.data();
   const std::size_t last = g.storage - 1;
   Dv[0] = Dv[last] = 0.0;
 #pragma omp simd
@@ -755,8 +758,8 @@ double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool mi
     Dv[j] = dm[j] * vg[j - 1] + dc[j] * vg[j] + dp[j] * vg[j + 1];
   // dg with a zero pad each side (and eight-wide loads from any cell), for sub-points in
   // the neighbouring cells.
-  lc.vg.assign(static_cast<std::size_t>(cells) + 10, 0.0);
-  std::copy(lc.dg.begin(), lc.dg.begin() + cells, lc.vg.begin() + 1);
+  lc.scratch_sums.assign(static_cast<std::size_t>(cells) + 10, 0.0);
+  std::copy(lc.vmove_jump.begin(), lc.vmove_jump.begin() + cells, lc.scratch_sums.begin() + 1);
   const double* __restrict Dn = Dv + Grid<1>::ghost;
   // Sub-points more than a cell away, before x moves: their part of grad v.
   std::vector<double> extra(lc.stray.size(), 0.0);
@@ -768,7 +771,7 @@ double g2p_ddmp(const Grid<1>& g, LinearCells& lc, double dt, bool move, bool mi
     for (int s = 0; s < subpoints; ++s) {
       const SubWeights sw = sub_weights(xi - h + s * step, top);
       if (std::abs(sw.c - lc.cell[q]) <= 1) continue;
-      e += sw.a * inv * lc.dg[sw.c] + sw.b0 * Dn[sw.c] + sw.b1 * Dn[sw.c + 1];
+      e += sw.a * inv * lc.vmove_jump[sw.c] + sw.b0 * Dn[sw.c] + sw.b1 * Dn[sw.c + 1];
     }
     extra[k] = e / subpoints;
   }

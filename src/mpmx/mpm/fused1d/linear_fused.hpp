@@ -22,23 +22,24 @@ struct LinearCells {
   // the force fields (V sigma, or V sigma G, for MPM; V sigma times the DDMP weights below).
   std::vector<double> sums;
   std::vector<double> val;  // scratch of the DDMP passes
-  // Per-cell node values for g2p: dv at the left node and its jump, same for the
-  // velocity that moves the particle.
-  std::vector<double> d0, dd, g0, dg;
-  std::vector<double> pc;  // those four at each particle ([table][particle])
+  // Per-cell node values for g2p: the velocity change at the cell's left node and its
+  // jump to the right node; the same for the velocity that moves the particle.
+  std::vector<double> dv_left, dv_jump, vmove_left, vmove_jump;
+  std::vector<double> at_particle;  // those four at each particle ([table][particle])
   bool ordered = false;    // particles in cell order at the last p2g (as its sums found;
                            // the next p2g takes it as given and its sums test it again)
   bool inside = false;     // and all between the grid's ends (grad = 1/dx for all)
-  // DDMP (eq. 3.31): per particle the weights of its gradient (W[k * n + q]): at the
+  // DDMP (eq. 3.31): per particle the weights of its gradient (ddmp_w[k * n + q]): at the
   // particle alpha, (1-alpha)(1-f), (1-alpha) f; with sub-points their averages over
   // the sub-points in the particle's cell (see subpoint_weights), so that
   // Gbar_i = sum alpha dS_i/dx + sum_j D_ji Q_j.
-  std::vector<double> W;
-  std::vector<double> Wx;  // weights in the neighbouring cells (Wx[k * n + q], k = 0..3)
+  std::vector<double> ddmp_w;
+  std::vector<double> ddmp_w_next;  // weights in the neighbouring cells ([k * n + q], k = 0..3)
   std::vector<int> mixed;  // particles with sub-points in a neighbouring cell
   std::vector<int> stray;  // particles with sub-points more than a cell from theirs
-  std::vector<double> dm, dc, dp;  // D_{j,j-1}, D_{j,j}, D_{j,j+1} by node storage index
-  std::vector<double> vg, Dv;      // scratch: per-cell alpha sums / padded dg; Q / D v
+  // The smoothing operator's rows by node storage index: D_{j,j-1}, D_{j,j}, D_{j,j+1}.
+  std::vector<double> ddmp_d_left, ddmp_d_centre, ddmp_d_right;
+  std::vector<double> scratch_sums, scratch_dv;  // per-cell alpha sums / padded dv; Q / D v
 };
 
 // What step() does after g2p for a 1-D linear elastic solid without artificial viscosity

@@ -1,0 +1,92 @@
+#include "mpmx/app/mpm/budget.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/machine.hpp"
+#include "mpmx/md/budget.hpp"
+#include "mpmx/app/mpm/setup.hpp"
+
+namespace mpmx::app {
+
+using namespace mpm;
+
+namespace {
+
+// Bytes, fitted to the peak RSS of `mpmx run` (Release; a 3-D ddmp bar of 40^3 cells and
+// 512,000 points peaked at 1.44 GiB, estimated 1.7 GiB; docs/reliability.md): per point
+// its arrays (position, velocity, mass, volumes, domain, strain, stress, gradient,
+// viscous stress: 2D + 4 + 5 D^2 doubles) and its stencil (up to 4^D nodes, a weight,
+// D gradients and an index each, per sub-point), per node its fields (mass, momentum,
+// velocities, force: 4 + 6 D doubles) and the small-mass maps; the program 32 MiB.
+constexpr double kBytesFixed = 32.0 * 1024 * 1024;
+constexpr double kOverhead = 1.25;  // measured peak over the sum of the arrays (scratch, copies)
+
+double point_bytes(int dim, double subpoints) {
+  const double arrays = 8.0 * (2 * dim + 4 + 5 * dim * dim);
+  const double stencil = std::pow(4.0, dim) * (8.0 * (1 + dim) + 4.0);
+  return kOverhead * (arrays + stencil * subpoints);
+}
+double node_bytes(int dim) { return kOverhead * 8.0 * (4 + 6 * dim); }
+
+}  // namespace
+
+MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
+  MpmBudget b;
+  b.ranks = ranks > 1 ? ranks : 1;
+  const int dim = c.dim;
+  b.points = 1, b.nodes = 1;
+  for (int d = 0; d < dim; ++d) {
+    const double cells = dim == 1 ? c.cells : c.cells_all[d];
+    const double per = dim == 1 ? c.per_cell : c.per_cell_all[d];
+    b.points *= cells * per;
+    b.nodes *= cells + 1;
+  }
+  // A deck of bodies fills part of the grid: count its points where that is cheap.
+  if (!c.bodies.empty() && b.points <= 1e7) b.points = static_cast<double>(count_points(c));
+  if (c.scheme.scheme == Scheme::ddmp_subpoints) {
+    if (dim == 1) b.subpoints = c.scheme.subpoints;
+    else
+      for (int d = 0; d < dim; ++d) b.subpoints *= c.scheme.subpoints_axes[d];
+  }
+  b.steps = c.cfl_dt ? (c.dt > 0 ? c.end / c.dt : 0.0) : static_cast<double>(c.steps());
+  const double pb = point_bytes(dim, b.subpoints) * b.points, nb = node_bytes(dim) * b.nodes;
+  b.bytes = kBytesFixed + pb + nb;
+  b.size_key = pb >= nb ? (b.subpoints > 1 ? "particles.per_cell and scheme.subpoints" : "particles.per_cell and grid.cells")
+                        : "grid.cells";
+  const double rate = dim == 1 ? kPointSteps1dPerSecond : kPointStepsPerSecond;
+  b.seconds = b.points * b.subpoints * b.steps / rate;
+  // A law with a model inside every point (md_closure's boxes): its atoms, memory and work.
+  const material::PointCost cost = c.material.spec ? c.material.spec->point_cost(c.dt) : material::PointCost{};
+  if (cost.atoms > 0) {
+    b.md_atoms_per_point = cost.atoms;
+    b.md_atoms = b.points * cost.atoms;
+    const double mb = cost.bytes * std::ceil(b.points / b.ranks);
+    b.bytes += mb;
+    if (mb > pb && mb > nb) b.size_key = cost.size_key;
+    b.md_atom_steps = b.md_atoms * (cost.steps_per_step * b.steps + cost.setup_steps);
+    b.seconds += b.md_atom_steps / md::kMdAtomStepsPerSecond / b.ranks;
+  }
+  return b;
+}
+
+void check_mpm_budget(const MpmBudget& b, std::uint64_t memory_bytes, bool force) {
+  if (memory_bytes > 0 && !(b.bytes <= static_cast<double>(memory_bytes)))
+    throw InputError(fmt::format(
+        "{}: {:.4g} points{}, {:.4g} grid nodes{} need about {} of memory ({:.4g} bytes), more than this "
+        "machine's {}: make the deck smaller",
+        b.size_key, b.points, b.subpoints > 1 ? fmt::format(" of {:.4g} sub-points each", b.subpoints) : std::string(),
+        b.nodes,
+        b.md_atoms > 0 ? fmt::format(" and {:.4g} MD atoms", b.md_atoms) : std::string(), format_bytes(b.bytes),
+        b.bytes, format_bytes(static_cast<double>(memory_bytes))));
+  if (!force && !(b.seconds <= kWorkLimitSeconds))
+    throw InputError(fmt::format(
+        "time.end / time.dt: {:.4g} points x {:.4g} steps{}, about {:.3g} days of work: more than the day a run "
+        "takes without --force",
+        b.points * b.subpoints, b.steps, b.md_atoms > 0 ? fmt::format(" with {:.4g} MD atoms", b.md_atoms) : "",
+        b.seconds / 86400.0));
+}
+
+}  // namespace mpmx::app

@@ -1,0 +1,43 @@
+#pragma once
+// What a continuum deck will cost before it runs: points, grid nodes, md_closure atoms,
+// peak memory and work. As for MD decks (md/budget.hpp), a deck the machine cannot hold
+// is refused always, and one that would run for more than about a day unless forced;
+// both name the key and the figure. `mpmx check` and `mpmx run` both apply it.
+#include <cstdint>
+#include <string>
+
+#include "mpmx/app/mpm/config.hpp"
+
+namespace mpmx::app {
+
+// Point-steps per second on one core, on the cautious side of docs/performance.md:
+// 1-D runs 5e7-1.9e8 (fused kernels), 2-D and 3-D 0.9e6-6.6e6; a sub-point costs about
+// as much as a point.
+inline constexpr double kPointSteps1dPerSecond = 2e7;
+inline constexpr double kPointStepsPerSecond = 5e5;
+// A day of work: the most a run takes without --force.
+inline constexpr double kWorkLimitSeconds = 86400.0;
+
+struct MpmBudget {
+  double points = 0;       // material points: counted through the bodies up to 1e7 lattice sites, else every cell filled
+  double subpoints = 1;    // integration points per point (ddmp_subpoints)
+  double nodes = 0;        // grid nodes
+  double md_atoms_per_point = 0;  // md_closure: atoms of each point's box
+  double md_atoms = 0;     // md_closure: atoms of all the points' boxes
+  double md_atom_steps = 0;  // md_closure: those atoms x (relaxation + MD steps of the run), all ranks
+  int ranks = 1;           // the boxes spread over so many ranks: bytes and seconds are one rank's
+  double bytes = 0;        // estimated peak memory
+  double seconds = 0;      // estimated wall time on one core
+  double steps = 0;
+  std::string size_key;    // the key the largest memory share comes from
+};
+
+// `ranks`: the MPI ranks the md_closure boxes spread over (each holds and advances
+// 1/ranks of them; the continuum is on every rank): the figures are one rank's.
+MpmBudget estimate_mpm(const MpmConfig& c, int ranks = 1);
+
+// Throws InputError when the estimate exceeds `memory_bytes` (always; 0: unknown, not
+// checked) or the work a day unless `force`.
+void check_mpm_budget(const MpmBudget& b, std::uint64_t memory_bytes, bool force);
+
+}  // namespace mpmx::app

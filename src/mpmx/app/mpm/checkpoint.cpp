@@ -1,0 +1,158 @@
+#include "mpmx/app/mpm/checkpoint.hpp"
+
+#include <cmath>
+#include <istream>
+#include <ostream>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+
+namespace mpmx::app {
+
+using namespace mpm;
+
+namespace {
+constexpr char kMagic[8] = {'M', 'P', 'M', 'X', 'S', 'T', '0', '3'};
+
+template <int Dim, class F>
+void each_array(Particles<Dim>& p, F&& f) {
+  for (int a = 0; a < Dim; ++a) f(p.x[a]), f(p.v[a]);
+  for (auto* v : {&p.mass, &p.volume, &p.volume0, &p.viscous_pressure}) f(*v);
+  for (int c = 0; c < Dim * Dim; ++c) f(p.length[c]), f(p.strain[c]), f(p.stress[c]), f(p.grad_v[c]);
+  if (!p.viscous[0].empty())
+    for (int c = 0; c < Dim * Dim; ++c) f(p.viscous[c]);
+}
+}  // namespace
+
+void CheckpointOut::number(double v) { out_.write(reinterpret_cast<const char*>(&v), sizeof v); }
+void CheckpointOut::integer(std::int64_t v) { out_.write(reinterpret_cast<const char*>(&v), sizeof v); }
+void CheckpointOut::text(const std::string& s) {
+  integer(static_cast<std::int64_t>(s.size()));
+  out_.write(s.data(), static_cast<std::streamsize>(s.size()));
+}
+void CheckpointOut::numbers(const std::vector<double>& v) {
+  integer(static_cast<std::int64_t>(v.size()));
+  out_.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(double)));
+}
+
+io::CheckedKind run_checkpoint_kind(const std::string& deck_text, std::size_t points) {
+  return {"mpm_run", 1, io::text_hash(deck_text), points};
+}
+
+long long CheckpointIn::offset() const {
+  const long long at = payload_offset(in_);
+  return at < 0 ? -1 : at + static_cast<long long>(base_);
+}
+InputError CheckpointIn::refuse(long long at, const std::string& why) const {
+  return InputError(fmt::format("checkpoint {}: byte {}: {}", name_, at, why));
+}
+void CheckpointIn::check(long long at, const char* what) {
+  if (!in_) throw refuse(at, fmt::format("the file ends inside {}: truncated", what));
+}
+double CheckpointIn::number() {
+  const long long at = offset();
+  double v = 0;
+  in_.read(reinterpret_cast<char*>(&v), sizeof v);
+  check(at, "a number");
+  return v;
+}
+std::int64_t CheckpointIn::integer() {
+  const long long at = offset();
+  std::int64_t v = 0;
+  in_.read(reinterpret_cast<char*>(&v), sizeof v);
+  check(at, "an integer");
+  return v;
+}
+std::string CheckpointIn::text() {
+  const long long at = offset();
+  std::uint64_t n = 0;
+  try {
+    n = read_count(in_, 1, "text");
+  } catch (const InputError& e) {
+    throw refuse(at, e.what());
+  }
+  std::string s(static_cast<std::size_t>(n), '\0');
+  in_.read(s.data(), static_cast<std::streamsize>(n));
+  check(at, "a text");
+  return s;
+}
+std::vector<double> CheckpointIn::numbers() {
+  const long long at = offset();
+  std::uint64_t n = 0;
+  try {
+    n = read_count(in_, sizeof(double), "number list");
+  } catch (const InputError& e) {
+    throw refuse(at, e.what());
+  }
+  std::vector<double> v(static_cast<std::size_t>(n));
+  in_.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(double)));
+  check(at, "a number list");
+  return v;
+}
+
+template <int Dim>
+void save_state(CheckpointOut& out, const State<Dim>& s) {
+  out.stream().write(kMagic, 8);
+  out.integer(s.step);
+  out.number(s.time);
+  const Tallies& t = s.tallies;
+  for (double v : {t.boundary_impulse[0], t.boundary_impulse[1], t.boundary_impulse[2], t.boundary_work,
+                   t.stress_work, t.max_force_sum, t.node_mass})
+    out.number(v);
+  auto& p = const_cast<Particles<Dim>&>(s.particles);
+  each_array(p, [&](std::vector<double>& v) { out.numbers(v); });
+  out.text(s.material->name());
+  s.material->save(out.stream());
+}
+
+template <int Dim>
+void load_state(CheckpointIn& in, State<Dim>& s) {
+  char magic[8] = {};
+  const long long at = in.offset();
+  in.stream().read(magic, 8);
+  if (!in.stream() || std::string(magic, 8) != std::string(kMagic, 8))
+    throw in.refuse(at, "not the state of an mpmx run (or one from another version)");
+  const long long at_step = in.offset();
+  s.step = in.integer();
+  if (s.step < 0) throw in.refuse(at_step, fmt::format("a negative step count {}", s.step));
+  const long long at_time = in.offset();
+  s.time = in.number();
+  if (!(std::isfinite(s.time) && s.time >= 0.0)) throw in.refuse(at_time, fmt::format("a time of {}", s.time));
+  Tallies& t = s.tallies;
+  for (double* v : {&t.boundary_impulse[0], &t.boundary_impulse[1], &t.boundary_impulse[2], &t.boundary_work,
+                    &t.stress_work, &t.max_force_sum, &t.node_mass})
+    *v = in.number();
+  const std::size_t n = s.particles.size();
+  each_array(s.particles, [&](std::vector<double>& v) {
+    // Read aside and kept only when whole: a refused checkpoint leaves the state as it was.
+    const long long at_v = in.offset();
+    std::vector<double> read = in.numbers();
+    if (read.size() != n) throw in.refuse(at_v, fmt::format("{} particles, the deck makes {}", read.size(), n));
+    for (double x : read)
+      if (!std::isfinite(x)) throw in.refuse(at_v, "a non-finite particle value");
+    v.swap(read);
+  });
+  const long long at_m = in.offset();
+  const std::string material = in.text();
+  if (material != s.material->name())
+    throw in.refuse(at_m, fmt::format("the material is {}, the deck's {}", material, s.material->name()));
+  const long long at_state = in.offset();
+  try {
+    s.material->load(in.stream());
+  } catch (const InputError& e) {
+    throw in.refuse(at_state, fmt::format("the {} state: {}", material, e.what()));
+  }
+  const long long points = s.material->state_points();
+  if (points >= 0 && points != static_cast<long long>(n))
+    throw in.refuse(at_state, fmt::format("the {} state holds {} points, the deck makes {}", material, points, n));
+}
+
+template void save_state<1>(CheckpointOut&, const State<1>&);
+template void save_state<2>(CheckpointOut&, const State<2>&);
+template void save_state<3>(CheckpointOut&, const State<3>&);
+template void load_state<1>(CheckpointIn&, State<1>&);
+template void load_state<2>(CheckpointIn&, State<2>&);
+template void load_state<3>(CheckpointIn&, State<3>&);
+
+}  // namespace mpmx::app

@@ -1,0 +1,123 @@
+// `mpmx run DECK --out DIR` and `mpmx check DECK`.
+#include <cmath>
+#include <filesystem>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "mpmx/app/commands.hpp"
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/machine.hpp"
+#include "mpmx/core/ranks.hpp"
+#include "mpmx/app/mpm/deck.hpp"
+#include "mpmx/md/budget.hpp"
+#include "mpmx/app/mpm/budget.hpp"
+#include "mpmx/app/mpm/run.hpp"
+
+namespace mpmx::app {
+
+using namespace mpm;
+
+void add_mpm_commands(CLI::App& app) {
+  struct Args {
+    std::string deck, out;
+    bool quiet = false, no_plot = false, resume = false, force = false;
+    int threads = 0, ranks = 1;
+    std::int64_t checkpoint_every = 0, stop_after = 0;
+    double checkpoint_minutes = 10.0, rebalance_above = 1.2;
+  };
+  auto args = std::make_shared<Args>();
+
+  CLI::App* run = app.add_subcommand("run", "run a continuum deck");
+  run->add_option("deck", args->deck, "TOML deck")->required()->check(CLI::ExistingFile);
+  run->add_option("--out,-o", args->out, "output directory (default runs/<deck name>)");
+  run->add_flag("--quiet,-q", args->quiet, "no progress line");
+  run->add_flag("--no-plot", args->no_plot, "do not draw figures");
+  run->add_option("--threads,-j", args->threads, "threads for the MD boxes of md_closure (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  run->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
+  run->add_flag("--resume", args->resume, "continue from OUT/checkpoint.bin (bit-for-bit)");
+  run->add_option("--checkpoint-every", args->checkpoint_every, "write OUT/checkpoint.bin every N steps")
+      ->check(CLI::NonNegativeNumber);
+  run->add_option("--checkpoint-minutes", args->checkpoint_minutes,
+                  "write OUT/checkpoint.bin every so many minutes of wall time (0: only on Ctrl-C; default 10)")
+      ->check(CLI::NonNegativeNumber);
+  run->add_option("--rebalance-above", args->rebalance_above,
+                  "under MPI, move MD boxes between ranks at a checkpoint when the slowest rank's MD time "
+                  "exceeds this many times the mean (default 1.2; 0: at every checkpoint)")
+      ->check(CLI::NonNegativeNumber);
+  // For tests: stop as if interrupted after step N (a checkpoint at a known step).
+  run->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
+  run->callback([args] {
+    // Every rank reads the deck and its estimate; under MPI a bad one stops them all with
+    // one message.
+    MpmConfig cfg;
+    ranks::together([&] {
+      cfg = read_mpm_deck(args->deck);
+      check_mpm_budget(estimate_mpm(cfg, ranks::size()), physical_memory_bytes(), args->force);
+    });
+    const std::string out =
+        args->out.empty() ? "runs/" + std::filesystem::path(args->deck).stem().string() : args->out;
+    RunOptions o;
+    o.out_dir = out;
+    o.quiet = args->quiet;
+    o.plot = !args->no_plot;
+    o.threads = args->threads;
+    o.resume = args->resume;
+    o.checkpoint_every = args->checkpoint_every;
+    o.stop_after = args->stop_after;
+    o.rebalance_above = args->rebalance_above;
+    o.checkpoint_seconds = 60.0 * args->checkpoint_minutes;
+    const auto r = run_any(cfg, o);
+    if (r.interrupted) {
+      ranks::mark_agreed();  // every rank stopped at the same step
+      throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx run {} --out {} --resume",
+                                    r.steps, cfg.steps(), checkpoint_path(out), args->deck, out));
+    }
+    if (!ranks::root()) return;
+    fmt::print("{}: {} steps in {:.3f} s -> {}/run.json\n", cfg.id, r.steps, r.wall_seconds, out);
+    for (const auto& [f, e] : r.errors)
+      fmt::print("  error {:<12} l1 {:.3e}  l2 {:.3e}  peak {:.3e}\n", f, e.l1, e.l2, e.peak);
+    for (const auto& [f, order] : r.convergence_order)
+      fmt::print("  observed order {:<12} {:.2f} (L2, over {} grids)\n", f, order, cfg.convergence_levels);
+    if (r.md_atom_steps > 0)
+      fmt::print("  MD: {:.4g} atom-steps, {:.4g} atom-steps/s on {} thread(s){}\n",
+                 static_cast<double>(r.md_atom_steps), r.md_atom_steps / r.wall_seconds, r.threads,
+                 r.ranks > 1 ? fmt::format(" x {} ranks (imbalance {:.3f})", r.ranks, r.rank_imbalance) : "");
+    if (std::isfinite(r.stress_vs_direct_md))
+      fmt::print("  stress vs direct MD (eq. 7.12): {:.2f}%\n", 100.0 * r.stress_vs_direct_md);
+  });
+
+  CLI::App* check = app.add_subcommand("check", "validate a continuum deck without running it");
+  check->add_option("deck", args->deck, "TOML deck")->required()->check(CLI::ExistingFile);
+  check->add_flag("--force", args->force, "accept a work estimate over about a day (never the memory one)");
+  check->add_option("--ranks", args->ranks,
+                    "estimate for a run over so many MPI ranks (md_closure boxes spread over them; default 1)")
+      ->check(CLI::Range(1, 1 << 20));
+  check->callback([args] {
+    const auto cfg = read_mpm_deck(args->deck);
+    const auto budget = estimate_mpm(cfg, args->ranks);
+    check_mpm_budget(budget, physical_memory_bytes(), args->force);
+    if (cfg.dim == 1) {
+      fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", args->deck, cfg.id, cfg.cells,
+                 cfg.per_cell, cfg.steps(), mpm::scheme_name(cfg.scheme.scheme));
+    } else {
+      std::vector<int> cells(cfg.cells_all.begin(), cfg.cells_all.begin() + cfg.dim),
+          per(cfg.per_cell_all.begin(), cfg.per_cell_all.begin() + cfg.dim);
+      fmt::print("{}: ok (case {}, {}-D, {} cells, {} points per cell, {} bodies, {} steps, scheme {}, material {})\n",
+                 args->deck, cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), cfg.bodies.size(),
+                 cfg.steps(), mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
+    }
+    fmt::print("  estimate: about {} of memory, {:.3g} hours of work on one core{}{}\n", format_bytes(budget.bytes),
+               budget.seconds / 3600.0,
+               budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string(),
+               budget.ranks > 1 ? fmt::format(" (each of {} ranks)", budget.ranks) : std::string());
+    if (budget.md_atom_steps > 0)
+      fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.0e} atom-steps/s per core\n",
+                 budget.points, budget.md_atoms_per_point, budget.md_atom_steps,
+                 budget.md_atom_steps / md::kMdAtomStepsPerSecond / 3600.0, md::kMdAtomStepsPerSecond);
+  });
+}
+
+}  // namespace mpmx::app

@@ -1,0 +1,431 @@
+#include "mpmx/app/mpm/deck.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/units.hpp"
+#include "mpmx/app/mpm/materials.hpp"
+#include "mpmx/app/mpm/references.hpp"
+#include "mpmx/io/deck.hpp"
+
+namespace mpmx::app {
+
+using namespace mpm;
+
+namespace {
+
+using io::Deck;
+using io::Section;
+using mpm::BoundarySide;
+using mpm::Profile;
+
+// A step or tanh front must lie on the grid, along the profile's normal (outside it the
+// profile is a uniform state, surely not what the deck meant).
+Profile read_profile(Section s, double fallback, const MpmConfig& c) {
+  const int dim = c.dim;
+  Profile p;
+  p.value = fallback;
+  if (!s.present()) return p;
+  const std::string kind = s.choice("profile", {"uniform", "sinusoid", "step", "tanh"}, "uniform");
+  if (kind == "uniform") {
+    p.kind = Profile::Kind::uniform;
+    p.value = s.number("value", fallback);
+  } else if (kind == "sinusoid") {
+    p.kind = Profile::Kind::sinusoid;
+    p.value = s.number("offset", 0.0);
+    p.amplitude = s.number("amplitude");
+    p.mode = s.number("mode", 1.0);
+    s.check(p.mode >= 1.0 && p.mode <= 1e6 && p.mode == std::floor(p.mode), "mode",
+            "must be a whole number from 1 to 1000000 (half-waves along the grid)");
+  } else {
+    p.kind = kind == "step" ? Profile::Kind::step : Profile::Kind::tanh;
+    p.left = s.number("left");
+    p.right = s.number("right");
+    p.at = s.number("at");
+    if (kind == "tanh") {
+      p.cells = s.number("cells");
+      s.positive("cells", p.cells);
+    }
+  }
+  if (s.has("normal")) {
+    const auto n = s.numbers("normal");
+    double len = 0.0;
+    for (double v : n) len += v * v;
+    len = std::sqrt(len);
+    if (dim == 1 || static_cast<int>(n.size()) != dim || !(len > 0.0) || !std::isfinite(len)) {
+      s.check(false, "normal", fmt::format("needs {} numbers, not all zero, in a 2-D or 3-D deck", dim));
+    } else {
+      p.normal = {0.0, 0.0, 0.0};
+      for (int d = 0; d < dim; ++d) p.normal[d] = n[d] / len;
+    }
+  }
+  if ((kind == "step" || kind == "tanh") && std::isfinite(p.at)) {
+    double lo = 0.0, hi = 0.0;  // n . x over the grid's box
+    for (int d = 0; d < dim; ++d) {
+      const double a = p.normal[d] * c.lower_all[d], b = p.normal[d] * c.upper_all[d];
+      lo += std::min(a, b), hi += std::max(a, b);
+    }
+    if (lo < hi)
+      s.check(p.at >= lo && p.at <= hi, "at",
+              fmt::format("must lie on the grid, from {} to {} (outside it the {} is a uniform state)", lo, hi, kind));
+  }
+  return p;
+}
+
+// A face's condition: free, fixed, roller (normal velocity zero) or a velocity
+// value + amplitude sin(omega t), a number in 1-D and a vector in 2-D/3-D.
+BoundarySide read_side(Section s, int dim) {
+  BoundarySide b;
+  if (!s.present()) return b;
+  const std::string type = s.choice("type", {"free", "fixed", "velocity", "roller"}, "free");
+  b.type = type == "free"    ? BoundarySide::Type::free
+           : type == "fixed" ? BoundarySide::Type::fixed
+           : type == "roller" ? BoundarySide::Type::roller
+                              : BoundarySide::Type::velocity;
+  if (type == "roller" && dim == 1)
+    s.check(false, "type", "a roller holds the normal velocity only: in 1-D use fixed");
+  if (b.type == BoundarySide::Type::velocity) {
+    if (dim == 1) {
+      b.value[0] = s.number("value", 0.0);
+      b.amplitude[0] = s.number("amplitude", 0.0);
+    } else {
+      const auto v = s.numbers("value", std::vector<double>(dim, 0.0));
+      const auto a = s.numbers("amplitude", std::vector<double>(dim, 0.0));
+      s.check(static_cast<int>(v.size()) == dim, "value", fmt::format("needs {} components", dim));
+      s.check(static_cast<int>(a.size()) == dim, "amplitude", fmt::format("needs {} components", dim));
+      for (int d = 0; d < dim && d < static_cast<int>(v.size()); ++d) b.value[d] = v[d];
+      for (int d = 0; d < dim && d < static_cast<int>(a.size()); ++d) b.amplitude[d] = a[d];
+    }
+    b.omega = s.number("omega", 0.0);
+  }
+  return b;
+}
+
+// A vector of `dim` numbers (a number is taken for every axis where `broadcast`).
+std::array<double, 3> read_vector(Section& s, std::string_view key, int dim, std::array<double, 3> fallback,
+                                  bool required) {
+  std::array<double, 3> r = fallback;
+  if (!s.has(key)) {
+    if (required) s.number(key);  // records the missing key
+    return r;
+  }
+  const auto v = s.numbers(key);
+  if (static_cast<int>(v.size()) != dim) {
+    s.check(false, key, fmt::format("needs {} numbers (grid.dim = {})", dim, dim));
+    return r;
+  }
+  for (int d = 0; d < dim; ++d) r[d] = v[d];
+  return r;
+}
+
+Body read_body(Section s, int dim, const material::Context& ctx) {
+  Body b;
+  const std::vector<std::string> shapes =
+      dim == 2 ? std::vector<std::string>{"box", "circle", "polygon"} : std::vector<std::string>{"box", "sphere"};
+  const std::string shape = s.choice("shape", shapes);
+  b.shape = shape == "box" ? Body::Shape::box : shape == "circle" ? Body::Shape::circle
+            : shape == "sphere" ? Body::Shape::sphere : Body::Shape::polygon;
+  b.remove = s.boolean("remove", false);
+  if (b.shape == Body::Shape::box) {
+    b.lower = read_vector(s, "lower", dim, {}, true);
+    b.upper = read_vector(s, "upper", dim, {}, true);
+    for (int d = 0; d < dim; ++d)
+      s.check(b.upper[d] > b.lower[d], "upper", "must exceed lower on every axis");
+  } else if (b.shape == Body::Shape::polygon) {
+    const auto v = s.numbers("vertices");
+    s.check(v.size() >= 6 && v.size() % 2 == 0, "vertices", "needs x, y pairs of at least three corners: [x0, y0, x1, y1, ...]");
+    for (std::size_t k = 0; k + 1 < v.size(); k += 2) b.vertices.push_back({v[k], v[k + 1]});
+  } else {
+    b.center = read_vector(s, "center", dim, {}, true);
+    b.radius = s.number("radius");
+    s.positive("radius", b.radius);
+  }
+  if (!b.remove) b.velocity = read_vector(s, "velocity", dim, {}, false);
+  else if (s.has("velocity")) s.check(false, "velocity", "a region that removes points has no velocity");
+  if (s.has("angular_velocity")) {
+    s.check(dim == 2 && b.shape == Body::Shape::circle && !b.remove, "angular_velocity",
+            "a rigid spin is given to a circle of a 2-D deck");
+    b.angular_velocity = s.number("angular_velocity");
+  }
+  if (s.has("material")) {  // its own law; otherwise the deck's [material]
+    s.check(!b.remove, "material", "a region that removes points has no material");
+    Section m = s.table("material");
+    if (!b.remove) b.material = read_material(m, ctx);
+  }
+  return b;
+}
+
+MpmConfig read(Deck& deck) {
+  MpmConfig c;
+  Section root = deck.root();
+  c.deck = deck.table();
+  c.deck_path = deck.name();
+
+  Section cs = root.table("case");
+  c.id = cs.string("id");
+  c.title = cs.string("title", "");
+  c.seed = cs.string("seed", "");
+  c.units = cs.string("units", "consistent units");
+  const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
+
+  Section g = root.table("grid");
+  c.dim = g.integer_int("dim", 1, 1, 3);
+  const int dim = c.dim;
+  if (dim == 1) {
+    c.lower = g.number("lower", 0.0);
+    c.upper = g.number("upper");
+    g.check(c.upper > c.lower, "upper", fmt::format("must exceed grid.lower = {}", c.lower));
+    c.cells = g.integer_int("cells", 1, 10'000'000);
+    c.lower_all[0] = c.lower, c.upper_all[0] = c.upper, c.cells_all[0] = c.cells;
+  } else {
+    c.lower_all = read_vector(g, "lower", dim, {}, true);
+    c.upper_all = read_vector(g, "upper", dim, {1.0, 1.0, 1.0}, true);
+    for (int d = 0; d < dim; ++d)
+      g.check(c.upper_all[d] > c.lower_all[d], "upper", "must exceed grid.lower on every axis");
+    const auto n = g.integers("cells", 1, 100'000);
+    g.check(static_cast<int>(n.size()) == dim, "cells", fmt::format("needs {} integers (grid.dim = {})", dim, dim));
+    for (int d = 0; d < dim && d < static_cast<int>(n.size()); ++d) c.cells_all[d] = static_cast<int>(n[d]);
+    c.lower = c.lower_all[0], c.upper = c.upper_all[0], c.cells = c.cells_all[0];
+  }
+
+  Section pt = root.table("particles");
+  if (dim == 1 || !pt.has("per_cell") || pt.value_text("per_cell").find('[') == std::string::npos) {
+    const int n = pt.integer_int("per_cell", 2, 1, 1'000'000);
+    c.per_cell_all = {n, dim > 1 ? n : 1, dim > 2 ? n : 1};
+  } else {
+    const auto n = pt.integers("per_cell", 1, 1000);
+    pt.check(static_cast<int>(n.size()) == dim, "per_cell", fmt::format("needs {} integers (grid.dim = {})", dim, dim));
+    for (int d = 0; d < dim && d < static_cast<int>(n.size()); ++d) c.per_cell_all[d] = static_cast<int>(n[d]);
+  }
+  c.per_cell = c.per_cell_all[0];
+  c.move = pt.boolean("move", true);
+  if (dim > 1)
+    for (auto& b : root.tables("body"))
+      c.bodies.push_back(read_body(b, dim, material_context(dim, deck_dir, c.units)));
+  else if (root.has("body"))
+    root.check(false, "body", "1-D decks fill the grid; [[body]] regions are for 2-D and 3-D");
+
+  Section sc = root.table("scheme");
+  const std::string name = sc.choice("name", mpm::scheme_names());
+  c.scheme.scheme = mpm::scheme_from_name(name);
+  if (c.scheme.scheme == mpm::Scheme::ddmp_subpoints) {
+    if (dim == 1 || sc.value_text("subpoints").find('[') == std::string::npos) {
+      c.scheme.subpoints = sc.integer_int("subpoints", 1, dim == 1 ? 4096 : dim == 2 ? 16 : 8);
+      c.scheme.subpoints_axes = {c.scheme.subpoints, dim > 1 ? c.scheme.subpoints : 1, dim > 2 ? c.scheme.subpoints : 1};
+    } else {
+      const auto n = sc.integers("subpoints", 1, 64);
+      sc.check(static_cast<int>(n.size()) == dim, "subpoints", fmt::format("needs {} integers (grid.dim = {})", dim, dim));
+      std::int64_t all = 1;
+      for (int d = 0; d < dim && d < static_cast<int>(n.size()); ++d) c.scheme.subpoints_axes[d] = static_cast<int>(n[d]), all *= n[d];
+      sc.check(all <= 4096, "subpoints", "at most 4096 sub-points per particle");
+      c.scheme.subpoints = c.scheme.subpoints_axes[0];
+    }
+  } else if (sc.has("subpoints")) {
+    sc.check(false, "subpoints", fmt::format("only ddmp_subpoints uses sub-points, not {}", name));
+  }
+  const std::string update = sc.choice("update_velocity", {"midpoint", "updated", "musl"}, "midpoint");
+  c.scheme.midpoint_gradient = update == "midpoint";
+  c.scheme.musl = update == "musl";
+  if (mpm::scheme_info(c.scheme.scheme).ddmp && dim > 1)
+    c.scheme.alpha = sc.choice("alpha", {"eq_7_3", "axis_product"}, "eq_7_3") == "eq_7_3" ? mpm::DdmpAlpha::eq_7_3
+                                                                                     : mpm::DdmpAlpha::axis_product;
+  else if (sc.has("alpha"))
+    sc.check(false, "alpha", "only ddmp and ddmp_subpoints in 2-D and 3-D choose their alpha");
+
+  // [material] is every point's law unless its body names its own; it may be left out
+  // when every body does.
+  const bool bodies_own = !c.bodies.empty() && std::all_of(c.bodies.begin(), c.bodies.end(), [](const Body& b) {
+    return b.remove || b.material;
+  });
+  auto& mat = c.material;
+  if (bodies_own && !root.has("material")) {
+    for (const auto& b : c.bodies)
+      if (b.material) {
+        mat.spec = b.material;
+        break;
+      }
+  } else {
+    Section m = root.table("material");
+    mat.small_strain = m.boolean("small_strain", false);
+    mat.spec = read_material(m, material_context(dim, deck_dir, c.units));
+  }
+  for (const auto& b : c.bodies) {
+    if (!b.material || !mat.spec) continue;
+    if (b.material->solid() != mat.spec->solid())
+      root.check(false, "body", "solids and gases in one deck are not supported: every body's material.model must be "
+                                "of the same kind as the others");
+    if (!b.material->per_body())
+      root.check(false, "body",
+                 fmt::format("{} is the deck's [material] only: a body does not take it", b.material->name()));
+  }
+  if (mat.spec) {
+    mat.model = mat.spec->name();
+    mat.density = mat.spec->density();
+    mat.density_unstrained = mat.spec->density_of_unstrained();
+    if (const auto* e = model_as<material::LinearElasticModel>(*mat.spec)) mat.youngs_modulus = e->E;
+    if (const auto* gas = model_as<material::IdealGasModel>(*mat.spec)) mat.sound_speed = gas->c, mat.gamma = gas->gamma;
+    if (const auto* md = model_as<multiscale::MdClosureModel>(*mat.spec)) mat.youngs_modulus = md->c11;
+  }
+
+  Section in = root.optional_table("initial");
+  c.velocity = read_profile(in.optional_table("velocity"), 0.0, c);
+  const bool solid = mat.solid();
+  if (solid) {
+    c.strain = read_profile(in.optional_table("strain"), 0.0, c);
+    if (in.has("pressure")) in.check(false, "pressure", "a solid takes [initial.strain], not pressure");
+  } else {
+    const auto* gas = mat.spec ? model_as<material::IdealGasModel>(*mat.spec) : nullptr;
+    const double p_default = gas && gas->isothermal ? gas->c * gas->c * gas->rho : 1.0;
+    c.pressure = read_profile(in.optional_table("pressure"), p_default, c);
+    if (in.has("strain")) in.check(false, "strain", "a gas takes [initial.pressure], not strain");
+  }
+
+  Section b = root.optional_table("boundary");
+  if (dim == 1) {
+    c.boundary.left() = read_side(b.optional_table("left"), 1);
+    c.boundary.right() = read_side(b.optional_table("right"), 1);
+  } else {
+    for (int f = 0; f < 2 * dim; ++f) c.boundary.face[f] = read_side(b.optional_table(mpm::face_name(f)), dim);
+  }
+
+  Section v = root.optional_table("viscosity");
+  c.viscosity = v.number("linear", 0.0);
+  v.non_negative("linear", c.viscosity);
+  c.tensor_viscosity = v.boolean("tensor", false);
+  c.c_L = v.number("c_L", 1.5);
+  v.non_negative("c_L", c.c_L);
+  c.c_q = v.number("c_q", 2.0);
+  v.non_negative("c_q", c.c_q);
+  if (c.tensor_viscosity && c.viscosity > 0.0)
+    v.check(false, "tensor", "choose the linear or the tensor form, not both");
+
+  Section md = root.optional_table("mass_distribution");
+  // On by default in 2-D and 3-D for every scheme: free surfaces inside the grid leave
+  // nodes of tiny mass whose velocities would otherwise blow up the gradient.
+  c.mass_distribution = md.boolean("on", dim > 1);
+  c.mass_fraction = md.number("fraction", 0.04);
+  md.check(c.mass_fraction >= 0.0 && c.mass_fraction < 1.0, "fraction", "must lie in [0, 1) (of a point's mass)");
+
+  Section t = root.table("time");
+  if (dim > 1 && t.has("dt") && t.value_text("dt").find("cfl") != std::string::npos) {
+    c.cfl_dt = t.choice("dt", {"cfl"}) == "cfl";
+    c.cfl = t.number("cfl", 0.5);
+    t.check(c.cfl > 0.0 && c.cfl <= 1.0, "cfl", "must lie in (0, 1]");
+  } else {
+    c.dt = t.number("dt");
+    t.positive("dt", c.dt);
+    if (t.has("cfl")) t.check(false, "cfl", "only dt = \"cfl\" (2-D, 3-D) reads it; a fixed dt is checked by cfl_limit");
+  }
+  c.end = t.number("end");
+  t.positive("end", c.end);
+  const double cfl_limit = t.number("cfl_limit", 1.0);
+  t.positive("cfl_limit", cfl_limit);
+
+  Section o = root.optional_table("output");
+  c.output_times = o.numbers("times", {});
+  for (double x : c.output_times)
+    o.check(x >= 0.0 && x <= c.end * (1 + 1e-12), "times",
+            fmt::format("every time must lie in [0, time.end = {}]", c.end));
+  c.output_every = o.integer("every", 0);
+  o.check(c.output_every >= 0, "every", "must not be negative");
+  c.write_nodes = o.boolean("nodes", true);
+  c.write_particles = o.boolean("particles", true);
+  c.plot = o.boolean("plot", true);
+  c.write_vtk = o.boolean("vtk", dim > 1);
+
+  Section mf = root.optional_table("manufactured");
+  if (mf.present()) {
+    c.manufactured.on = true;
+    mf.choice("solution", {"axis_aligned"}, "axis_aligned");
+    c.manufactured.amplitude = mf.number("amplitude", 0.01);
+    c.manufactured.speed = mf.number("speed", 1.0);
+    mf.check(c.manufactured.amplitude > 0.0 && 2.0 * std::numbers::pi * c.manufactured.amplitude < 1.0, "amplitude",
+             "must lie in (0, 1 / (2 pi)): the stretch 1 + 2 pi A cos(2 pi X) sin(c pi t) stays positive");
+    mf.positive("speed", c.manufactured.speed);
+    if (dim == 1) mf.error("the manufactured solution drives 2-D and 3-D decks");
+    if (mat.model != "linear_elastic" || !c.bodies.empty())
+      mf.error("the manufactured solution is exact for one linear_elastic body filling the grid (no [[body]])");
+    if (in.has("velocity")) in.check(false, "velocity", "the manufactured solution sets the initial velocity");
+  }
+
+  Section r = root.optional_table("reference");
+  // The entry of the name (app/mpm/references.hpp) reads its own keys.
+  if (r.present()) {
+    c.reference.name = r.choice("name", reference_names(dim));
+    c.reference.fields = r.strings("fields", {});
+    const std::vector<std::string> known = References::with(
+        c.reference.name, []<class E>() { return E::known_fields(); }, [] { return ReferenceEntry::known_fields(); });
+    for (const auto& f : c.reference.fields)
+      r.check(std::find(known.begin(), known.end(), f) != known.end(), "fields",
+              fmt::format("'{}' is not one of {}", f, fmt::join(known, ", ")));
+    if (dim > 1 && r.has("at")) r.check(false, "at", "2-D and 3-D decks compare at the particles");
+    c.reference.times = r.numbers("times", {});
+    c.reference.at_nodes = r.choice("at", {"particles", "nodes"}, "particles") == "nodes";
+    References::with(
+        c.reference.name, [&]<class E>() { E::read_keys(r, c, deck_dir); }, [] {});
+    for (double x : c.reference.times)
+      r.check(x > 0.0 && x <= c.end * (1 + 1e-12), "times",
+              fmt::format("every time must lie in (0, time.end = {}]", c.end));
+  }
+
+  Section cv = root.optional_table("convergence");
+  c.convergence_levels = cv.integer_int("levels", 1, 1, 8);
+  if (c.convergence_levels > 1 && c.reference.name.empty())
+    cv.check(false, "levels", "a convergence study needs a [reference] to measure the error against");
+
+  // Checks that need several sections.
+  double dx_min = c.dx();
+  for (int d = 1; d < dim; ++d) dx_min = std::min(dx_min, (c.upper_all[d] - c.lower_all[d]) / c.cells_all[d]);
+  if (c.upper > c.lower && c.cells >= 1 && (c.dt > 0.0 || c.cfl_dt) && mat.density > 0.0 && mat.spec) {
+    // The largest wave speed over the initial pressure profile, plus in 2-D/3-D the
+    // largest initial speed of a body.
+    double pmax = 0.0;
+    const double L = c.upper - c.lower;
+    if (!mat.solid())
+      for (int i = 0; i <= 4 * c.cells; ++i)
+        pmax = std::max(pmax, c.pressure(c.lower + L * i / (4.0 * c.cells), c.lower, L, c.dx()));
+    double cs_max = mat.spec->wave_speed(dim, mat.density, pmax);
+    for (const auto& body : c.bodies)
+      if (body.material) cs_max = std::max(cs_max, body.material->wave_speed(dim, body.material->density(), pmax));
+    double vmax = 0.0;
+    for (const auto& body : c.bodies) {
+      double v2 = 0.0;
+      for (int d = 0; d < dim; ++d) v2 += body.velocity[d] * body.velocity[d];
+      vmax = std::max(vmax, std::sqrt(v2));
+    }
+    cs_max += vmax;
+    const double limit = cfl_limit * dx_min / cs_max;
+    if (c.cfl_dt) c.dt = c.cfl * dx_min / cs_max;  // the first step's; later ones follow the state
+    if (std::isfinite(limit) && !c.cfl_dt)
+      t.check(c.dt <= limit, "dt",
+              fmt::format("exceeds the CFL limit cfl_limit * dx / c = {} * {} / {} = {}", cfl_limit,
+                          dx_min, cs_max, limit));
+    if (!c.cfl_dt && std::abs(c.dt * std::llround(c.end / c.dt) - c.end) > 1e-9 * c.end)
+      t.check(false, "end", fmt::format("is not a whole number of steps of dt = {}", c.dt));
+    if (const std::string why = mat.spec ? mat.spec->time_step_problem(c.dt) : ""; !why.empty())
+      t.check(false, "dt", why);
+  }
+  deck.finish();
+  return c;
+}
+
+}  // namespace
+
+MpmConfig read_mpm_deck(const std::string& path) {
+  Deck d = Deck::from_file(path);
+  return read(d);
+}
+
+MpmConfig read_mpm_deck_text(const std::string& text, const std::string& name) {
+  Deck d = Deck::from_string(text, name);
+  return read(d);
+}
+
+}  // namespace mpmx::app
+

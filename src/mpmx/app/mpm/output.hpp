@@ -1,0 +1,53 @@
+#pragma once
+// The tables a 1-D run writes: particles.csv and nodes.csv at the recorded times
+// (ADMPM's columns and more, plus ref_<field> where a reference exists), energy.csv
+// over time, front.csv for shock-front cases. Rows of one record are written and
+// flushed together, so a stopped run leaves whole records only.
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <string>
+
+#include <fmt/format.h>
+#include <vector>
+
+#include "mpmx/mpm/nodal_fields.hpp"
+#include "mpmx/mpm/state.hpp"
+
+namespace mpmx::app {
+
+class Reference;
+
+class Output {
+ public:
+  // Tables and their lengths in bytes, as a checkpoint records them.
+  using Marks = std::map<std::string, std::int64_t>;
+
+  // With `resume`, each table is cut back to its recorded length and appended to, so a
+  // resumed run's tables equal an uninterrupted run's.
+  Output(const std::string& dir, bool nodes, bool particles, Marks resume = {});
+  ~Output();
+  Output(const Output&) = delete;
+  Output& operator=(const Output&) = delete;
+
+  void record(const mpm::State<1>& s, const mpm::NodalFields& nf, const Reference* ref);
+  void energy(std::int64_t step, double t, double kinetic, double internal, double momentum,
+              double boundary_impulse, double ref_total);
+  void front(double t, double x, double ref_x);
+  // Flushes every table and returns their lengths.
+  Marks marks();
+
+ private:
+  std::FILE* open(const std::string& name, const char* header);
+  std::string dir_;
+  std::FILE* nodes_ = nullptr;
+  std::FILE* particles_ = nullptr;
+  std::FILE* energy_ = nullptr;
+  std::FILE* front_ = nullptr;
+  bool want_nodes_, want_particles_;
+  Marks resume_;
+  fmt::memory_buffer buf_;  // one record's rows, written at once
+};
+
+}  // namespace mpmx::app

@@ -1,0 +1,378 @@
+#include "mpmx/app/mpm/run.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "mpmx/app/mpm/checkpoint.hpp"
+#include "mpmx/app/mpm/comparison.hpp"
+#include "mpmx/app/mpm/convergence.hpp"
+#include "mpmx/app/mpm/output.hpp"
+#include "mpmx/app/mpm/run_checkpoint.hpp"
+#include "mpmx/app/mpm/run_summary.hpp"
+#include "mpmx/app/mpm/setup.hpp"
+#include "mpmx/app/mpm/vtk_output.hpp"
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/interrupt.hpp"
+#include "mpmx/core/progress.hpp"
+#include "mpmx/core/ranks.hpp"
+#include "mpmx/io/plot.hpp"
+#include "mpmx/io/run_record.hpp"
+#include "mpmx/io/staged_dir.hpp"
+#include "mpmx/mpm/nodal_fields.hpp"
+#include "mpmx/mpm/state_checks.hpp"
+#include "mpmx/mpm/step.hpp"
+#include "mpmx/mpm/sums.hpp"
+
+namespace mpmx::app {
+
+using namespace mpm;
+
+namespace {
+
+double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+// Where this process writes (io/staged_dir.hpp): a fresh run in OUT/.staging, moved into
+// OUT once it ends; a resumed run where its checkpoint lies (OUT, or the staging folder
+// of a run that was killed before it ended). Under MPI the ranks agree on it after all
+// have looked, before rank 0 (the only writer) touches the folder.
+struct RunFolder {
+  bool checkpoints = false;  // a folder to write checkpoints (and everything else) into
+  std::optional<io::StagedDir> stage;
+  std::string dir;
+
+  explicit RunFolder(const RunOptions& o) : checkpoints(!o.out_dir.empty()) {
+    if (o.resume && !checkpoints) throw InputError("resuming needs the run's output directory");
+    const bool resume_staged = o.resume && !std::filesystem::exists(checkpoint_path(o.out_dir)) &&
+                               std::filesystem::exists(checkpoint_path(io::StagedDir::staging_of(o.out_dir)));
+    if (o.resume && !resume_staged && !std::filesystem::exists(checkpoint_path(o.out_dir)))
+      throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(o.out_dir)));
+    const bool staged = checkpoints && (!o.resume || ranks::max({resume_staged ? 1.0 : 0.0})[0] > 0.0);
+    if (staged && ranks::root()) stage.emplace(o.out_dir, o.resume);
+    dir = staged ? io::StagedDir::staging_of(o.out_dir) : o.out_dir;
+  }
+};
+
+// The steps at which a run records its fields and compares them with its reference
+// (dt = "cfl": the record times, each step landing on the next).
+struct Schedule {
+  std::int64_t steps;
+  std::set<std::int64_t> record_steps, compare_steps;
+  std::int64_t energy_every;
+  std::vector<double> record_times;
+
+  explicit Schedule(const MpmConfig& c) : steps(c.steps()), record_steps{0, steps} {
+    for (double t : c.output_times) record_steps.insert(std::llround(t / c.dt));
+    for (double t : c.reference.times) {
+      compare_steps.insert(std::llround(t / c.dt));
+      record_steps.insert(std::llround(t / c.dt));
+    }
+    energy_every = std::max<std::int64_t>(1, steps / 2000);
+    record_times.assign(c.output_times.begin(), c.output_times.end());
+    record_times.push_back(c.end);
+    std::sort(record_times.begin(), record_times.end());
+  }
+};
+
+// One continuum run: the state, its comparison, its outputs and the loop that advances
+// them (dissertation sec. 3.1; mpm/step.cpp is one step).
+template <int Dim>
+class ContinuumRun {
+ public:
+  ContinuumRun(const MpmConfig& c, const RunOptions& o, RunResultOf<Dim>& r)
+      : c_(c), o_(o), r_(r), s_(r.state), folder_(o), schedule_(c), book_(rec_),
+        comparison_(make_comparison<Dim>(c)) {
+    if (!o.resume && !o.quiet && ranks::root() && c.material.spec)
+      if (const std::string note = c.material.spec->build_note(); !note.empty())
+        fmt::print(stderr, "{}: {}\n", c.id, note);
+    r.state = make_state<Dim>(c, !o.resume, o.threads);
+    const material::Subscale* sub = s_.material->subscale();
+    r.threads = sub ? sub->threads() : 1;
+    rec_.set("version", MPMX_VERSION);
+    rec_.set("deck", c.deck);
+    rec_.set("deck_path", c.deck_path);
+    // A resumed run takes these from its checkpoint, and its law's per-point state is not
+    // loaded yet: nothing is summed before the load.
+    const Sums s0 = o.resume ? Sums{} : sums(s_);
+    carry_ = {s0.momentum, s0.kinetic, s0.mass, s0.abs_momentum, s0.kinetic, s0.internal, 0.0};
+    Output::Marks marks;
+    // Every rank reads the checkpoint (and keeps its block of the laws' state).
+    if (o.resume) ranks::together([&] {
+      marks = load_run_checkpoint(checkpoint_path(folder_.dir), c, s_, carry_, book_, rec_);
+    });
+    rec_.set("threads", r.threads);
+    rec_.set("ranks", static_cast<std::int64_t>(ranks::size()));
+    ranks::together([&] {  // output from rank 0 only; a folder it cannot make stops all
+      if (o.out_dir.empty() || !ranks::root()) return;
+      std::filesystem::create_directories(folder_.dir);
+      out_ = std::make_unique<Output>(folder_.dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles, marks);
+      if (c.write_vtk) vtk_ = std::make_unique<VtkOutput<Dim>>(folder_.dir, o.resume ? s_.time : -1.0);
+    });
+  }
+
+  // The step loop: each step, then the checks, comparisons, records and checkpoints it
+  // is due; a RunError (the physics stopped the run) ends it with the state as it was.
+  void run() {
+    Progress progress(fmt::format("{} {}", c_.id, scheme_name(c_.scheme.scheme)), schedule_.steps,
+                      o_.quiet || !ranks::root(), s_.step);
+    t0_ = std::chrono::steady_clock::now();
+    InterruptGuard guard(folder_.checkpoints);
+    try {
+      if (!o_.resume) {
+        record();
+        observe();
+      }
+      for (std::int64_t n = s_.step + 1; !done(n); ++n) {
+        const bool at_record_time = advance(n);
+        check_finite(s_);
+        const bool last = c_.cfl_dt ? !(s_.time < c_.end) : n == schedule_.steps;
+        if (schedule_.compare_steps.count(n) && comparison_) comparison_->compare(s_, book_);
+        if (due_record(n, at_record_time)) record();
+        if (n % schedule_.energy_every == 0 || last) {
+          check_volumes(s_);
+          observe();
+        }
+        progress.update(c_.cfl_dt ? std::min<std::int64_t>(schedule_.steps - 1,
+                                                           std::llround(s_.time / c_.end * schedule_.steps))
+                                  : n);
+        if (folder_.checkpoints && !last && checkpoint_or_stop(n)) {
+          r_.interrupted = true;
+          break;
+        }
+      }
+      if (!r_.interrupted) progress.finish();
+    } catch (const RunError& e) {
+      // The same on every rank: the continuum checks read the replicated state, and the
+      // closure and the checkpoint agree on theirs (core/ranks).
+      ranks::mark_agreed();
+      failure_ = e.what();
+    }
+    finish();
+  }
+
+ private:
+  bool done(std::int64_t n) const { return c_.cfl_dt ? !(s_.time < c_.end) : n > schedule_.steps; }
+
+  // Step n: dt from the deck, or (dt = "cfl") from the state, shortened to land on the
+  // next record time. True when it landed on one.
+  bool advance(std::int64_t n) {
+    if (!c_.cfl_dt) {
+      step(s_, c_.dt);
+      s_.time = n * c_.dt;  // no drift from summing dt
+      return false;
+    }
+    const auto& times = schedule_.record_times;
+    const double t0 = s_.time;
+    const auto next = std::upper_bound(times.begin(), times.end(), t0 * (1.0 + 1e-12));
+    const double t_next = next == times.end() ? c_.end : *next;
+    double h = stable_dt(s_, c_.cfl);
+    const bool lands = t0 + h >= t_next * (1.0 - 1e-12);
+    if (lands) h = t_next - t0;
+    step(s_, h);
+    s_.time = lands ? t_next : t0 + h;
+    return lands;
+  }
+
+  bool due_record(std::int64_t n, bool at_record_time) const {
+    return (c_.cfl_dt ? at_record_time : schedule_.record_steps.count(n) > 0) ||
+           (c_.output_every > 0 && n % c_.output_every == 0);
+  }
+
+  void record() {
+    if (vtk_) vtk_->record(s_);
+    if constexpr (Dim == 1)
+      if (out_) out_->record(s_, nodal_fields(s_), comparison_ ? comparison_->solution() : nullptr);
+    if (comparison_) comparison_->at_record(s_, book_, out_.get());
+  }
+
+  // The energy balance's figures, and the energy error against a reference that knows
+  // the total energy.
+  void observe() {
+    const Sums now = sums(s_);
+    carry_.max_kinetic = std::max(carry_.max_kinetic, now.kinetic);
+    const Reference* ref = comparison_ ? comparison_->solution() : nullptr;
+    const double e_ref = ref ? ref->total_energy(s_.time) : std::nan("");
+    if (std::isfinite(e_ref)) {
+      auto& e = book_.errors["energy"];
+      e.l1 = std::max(e.l1, std::abs(now.kinetic + now.internal - e_ref));
+      e.l2 = std::max(e.l2, e_ref);  // running max of the reference, normalised in finish()
+    }
+    if (out_)
+      out_->energy(s_.step, s_.time, now.kinetic, now.internal, Dim == 1 ? now.momentum[0] : norm(now.momentum),
+                   Dim == 1 ? s_.tallies.boundary_impulse[0] : norm(s_.tallies.boundary_impulse), e_ref);
+  }
+
+  // A checkpoint when one is due (every so many steps or minutes, or on Ctrl-C); true
+  // when the run is to stop there. Under MPI the ranks act together: any rank's signal,
+  // rank 0's clock.
+  bool checkpoint_or_stop(std::int64_t n) {
+    bool stop = InterruptGuard::interrupted() || n == o_.stop_after;
+    // Long runs of small steps read the clock every 64 steps: reading it costs a good
+    // part of such a step.
+    const std::int64_t clock_every = schedule_.steps >= 100000 ? 64 : 1;
+    const bool by_count = o_.checkpoint_every > 0 && n % o_.checkpoint_every == 0;
+    bool by_time = o_.checkpoint_seconds > 0 && n % clock_every == 0 &&
+                   wall() - carry_.wall_before - last_checkpoint_ >= o_.checkpoint_seconds;
+    if (ranks::size() > 1) {
+      const auto agreed = ranks::max({stop ? 1.0 : 0.0, by_time && ranks::root() ? 1.0 : 0.0});
+      stop = agreed[0] > 0, by_time = agreed[1] > 0;
+    }
+    if (stop || by_count || by_time) {
+      ranks::together([&] { save_checkpoint(); });
+      last_checkpoint_ = wall() - carry_.wall_before;
+      if (!stop) ranks::together([&] { r_.rebalances += s_.material->rebalance(o_.rebalance_above); });
+    }
+    return stop;
+  }
+
+  // Collective under MPI (the laws gather their per-point state); rank 0 writes. The wall
+  // time so far is saved as the next process's earlier time.
+  void save_checkpoint() {
+    RunCarry carry = carry_;
+    carry.wall_before = wall();
+    save_run_checkpoint(checkpoint_path(folder_.dir), c_, s_, carry, book_, rec_,
+                        out_ ? out_->marks() : Output::Marks{});
+  }
+
+  double wall() const {
+    return carry_.wall_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  }
+
+  // The run's figures into the result and run.json; the folder published; the figures drawn.
+  void finish() {
+    r_.wall_seconds = wall();
+    r_.steps = s_.step;
+    const material::Subscale* sub = s_.material->subscale();
+    if (sub) r_.md_atom_steps = sub->steps();
+    // The slowest rank's MD time over the mean (1 on one rank).
+    const double md_mine = sub ? sub->seconds() : 0.0;
+    const double md_slowest = ranks::max({md_mine})[0], md_mean = ranks::sum(md_mine) / ranks::size();
+    r_.rank_imbalance = md_mean > 0 ? md_slowest / md_mean : 1.0;
+    r_.ranks = ranks::size();
+    if (book_.eq712.squared_reference > 0) r_.stress_vs_direct_md = book_.eq712.value();
+    tally();
+    if (comparison_) comparison_->finish(book_);
+    r_.errors = book_.errors;
+    r_.front_speed = book_.front_speed;
+    record_run(c_, r_, failure_, checkpoint_path(o_.out_dir), rec_);
+    if (!o_.out_dir.empty() && ranks::root()) {
+      out_.reset();  // close the tables before plotting
+      rec_.write(folder_.dir + "/run.json");
+      if (failure_.empty() && !r_.interrupted) std::filesystem::remove(checkpoint_path(folder_.dir));
+      if (folder_.stage) folder_.stage->publish();
+      if (failure_.empty() && !r_.interrupted && o_.plot && c_.plot) plot();
+    }
+    if (!failure_.empty()) throw RunError(failure_);
+  }
+
+  // Conservation: the sums at the start (carried) and now, the step's tallies.
+  void tally() {
+    const Sums s1 = sums(s_);
+    auto& r = r_;
+    r.momentum_initial_vec = carry_.momentum_initial;
+    r.kinetic_initial = carry_.kinetic_initial;
+    r.mass_particles = carry_.mass_particles;
+    r.stored_initial = carry_.stored_initial;
+    r.max_kinetic = carry_.max_kinetic;
+    r.momentum_final_vec = s1.momentum;
+    r.stored_final = s1.internal;
+    r.boundary_impulse_vec = s_.tallies.boundary_impulse;
+    r.momentum_initial = r.momentum_initial_vec[0];
+    r.momentum_final = r.momentum_final_vec[0];
+    r.kinetic_final = s1.kinetic;
+    r.momentum_scale = std::max(carry_.momentum_scale, s1.abs_momentum);
+    r.boundary_impulse = s_.tallies.boundary_impulse[0];
+    r.boundary_work = s_.tallies.boundary_work;
+    r.stress_work = s_.tallies.stress_work;
+    r.max_force_sum = s_.tallies.max_force_sum;
+    r.mass_nodes = s_.tallies.node_mass;
+    if (auto it = book_.errors.find("energy"); it != book_.errors.end()) {
+      // Largest deviation over t, relative to the largest reference energy.
+      const double rel = it->second.l2 > 0 ? it->second.l1 / it->second.l2 : 0.0;
+      it->second = {rel, rel};
+    }
+  }
+
+  void plot() const {
+    if (!(Dim == 1 || (Dim == 2 && vtk_)) || !io::matplotlib_present()) return;
+    if (Dim == 1) io::run_plot_script("mpmx_plot.py", fmt::format("--quiet '{}'", o_.out_dir));
+    else
+      io::run_plot_script("points2d.py", fmt::format("'{}/particles.pvd' --field stress --component xx "
+                                                     "--out '{}/stress_xx.png' >/dev/null",
+                                                     o_.out_dir, o_.out_dir));
+  }
+
+  const MpmConfig& c_;
+  const RunOptions& o_;
+  RunResultOf<Dim>& r_;
+  State<Dim>& s_;
+  RunFolder folder_;
+  Schedule schedule_;
+  io::RunRecord rec_;
+  ErrorBook book_;
+  std::unique_ptr<Comparison<Dim>> comparison_;
+  RunCarry carry_;
+  std::unique_ptr<Output> out_;
+  std::unique_ptr<VtkOutput<Dim>> vtk_;
+  std::string failure_;
+  std::chrono::steady_clock::time_point t0_;
+  double last_checkpoint_ = 0.0;
+};
+
+}  // namespace
+
+std::string checkpoint_path(const std::string& out_dir) { return out_dir + "/checkpoint.bin"; }
+
+template <int Dim>
+RunResultOf<Dim> run_mpm_dim(const MpmConfig& c, const RunOptions& o) {
+  RunResultOf<Dim> r;
+  ContinuumRun<Dim>(c, o, r).run();
+  return r;
+}
+
+template RunResultOf<1> run_mpm_dim<1>(const MpmConfig&, const RunOptions&);
+template RunResultOf<2> run_mpm_dim<2>(const MpmConfig&, const RunOptions&);
+template RunResultOf<3> run_mpm_dim<3>(const MpmConfig&, const RunOptions&);
+
+RunResult run_mpm(const MpmConfig& c, const RunOptions& o) {
+  if (c.dim != 1) throw InputError(fmt::format("run_mpm runs 1-D decks; this one has grid.dim = {}", c.dim));
+  return run_mpm_dim<1>(c, o);
+}
+
+RunSummary run_any(const MpmConfig& c, const RunOptions& o) {
+  auto summary = [](const auto& r) {
+    RunSummary s;
+    s.steps = r.steps;
+    s.wall_seconds = r.wall_seconds;
+    s.particles = r.state.particles.size();
+    s.interrupted = r.interrupted;
+    s.errors = r.errors;
+    s.md_atom_steps = r.md_atom_steps;
+    s.threads = r.threads;
+    s.ranks = r.ranks;
+    s.rank_imbalance = r.rank_imbalance;
+    s.stress_vs_direct_md = r.stress_vs_direct_md;
+    return s;
+  };
+  if (c.convergence_levels > 1) {
+    const ConvergenceStudy study = run_convergence(c, o);
+    RunSummary s = study.levels.back().run;
+    s.convergence_order = study.order_l2;
+    return s;
+  }
+  switch (c.dim) {
+    case 1: return summary(run_mpm_dim<1>(c, o));
+    case 2: return summary(run_mpm_dim<2>(c, o));
+    case 3: return summary(run_mpm_dim<3>(c, o));
+  }
+  throw InputError(fmt::format("grid.dim = {}: must be 1, 2 or 3", c.dim));
+}
+
+}  // namespace mpmx::app

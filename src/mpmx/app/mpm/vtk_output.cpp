@@ -1,0 +1,90 @@
+#include "mpmx/app/mpm/vtk_output.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+namespace mpmx::app {
+
+using namespace mpm;
+
+namespace {
+
+// A Dim x Dim tensor field as VTK's 3 x 3 (zeros outside the run's dimensions).
+template <int Dim>
+io::vtk::Field tensor(const std::string& name, const std::array<std::vector<double>, Dim * Dim>& t, std::size_t n) {
+  io::vtk::Field f{name, 9, std::vector<double>(9 * n, 0.0)};
+  for (std::size_t q = 0; q < n; ++q)
+    for (int a = 0; a < Dim; ++a)
+      for (int b = 0; b < Dim; ++b) f.values[9 * q + 3 * a + b] = t[a * Dim + b][q];
+  return f;
+}
+
+template <int Dim>
+io::vtk::Field vector(const std::string& name, const std::array<std::vector<double>, Dim>& v, std::size_t n) {
+  io::vtk::Field f{name, 3, std::vector<double>(3 * n, 0.0)};
+  for (std::size_t q = 0; q < n; ++q)
+    for (int a = 0; a < Dim; ++a) f.values[3 * q + a] = v[a][q];
+  return f;
+}
+
+}  // namespace
+
+template <int Dim>
+VtkOutput<Dim>::VtkOutput(const std::string& dir, double resume_time)
+    : dir_(dir), particles_(dir + "/particles.pvd"), grid_(dir + "/grid.pvd") {
+  std::filesystem::create_directories(dir + "/vtk");
+  if (resume_time >= 0.0) {
+    particles_.restore_up_to(resume_time);
+    grid_.restore_up_to(resume_time);
+  }
+}
+
+template <int Dim>
+void VtkOutput<Dim>::record(const State<Dim>& s) {
+  const auto& p = s.particles;
+  const std::size_t n = p.size();
+  std::vector<double> xyz(3 * n, 0.0);
+  for (std::size_t q = 0; q < n; ++q)
+    for (int a = 0; a < Dim; ++a) xyz[3 * q + a] = p.x[a][q];
+  std::vector<io::vtk::Field> f;
+  f.push_back(vector<Dim>("velocity", p.v, n));
+  f.push_back(tensor<Dim>("stress", p.stress, n));
+  f.push_back(tensor<Dim>("strain", p.strain, n));
+  f.push_back(tensor<Dim>("velocity_gradient", p.grad_v, n));
+  io::vtk::Field mass{"mass", 1, p.mass}, volume{"volume", 1, p.volume}, density{"density", 1, {}},
+      pressure{"pressure", 1, {}};
+  for (std::size_t q = 0; q < n; ++q) {
+    density.values.push_back(p.mass[q] / p.volume[q]);
+    double tr = 0.0;
+    for (int a = 0; a < Dim; ++a) tr += p.stress[a * Dim + a][q];
+    pressure.values.push_back(-tr / Dim);
+  }
+  for (auto* x : {&mass, &volume, &density, &pressure}) f.push_back(std::move(*x));
+  const std::string pname = fmt::format("vtk/particles_{:06d}.vtu", s.step);
+  io::vtk::write_points(dir_ + "/" + pname, xyz, f);
+  particles_.add(s.time, pname);
+
+  // Nodes without ghosts, x fastest.
+  const auto& g = s.grid;
+  std::array<int, 3> nodes{1, 1, 1};
+  std::array<double, 3> origin{}, spacing{1.0, 1.0, 1.0};
+  for (int d = 0; d < Dim; ++d) nodes[d] = g.cells[d] + 1, origin[d] = g.lower[d], spacing[d] = g.dx[d];
+  io::vtk::Field gm{"mass", 1, {}}, gv{"velocity", 3, {}};
+  // A node without mass has no velocity of its own: written as zero (the step does not
+  // visit nodes far from the points, active_lines.hpp, so a face's prescribed value there
+  // would be that of the last step that reached them).
+  g.for_each_node([&](std::size_t i, const std::array<int, Dim>&) {
+    gm.values.push_back(g.mass[i]);
+    for (int a = 0; a < 3; ++a) gv.values.push_back(a < Dim && g.mass[i] > 0.0 ? g.velocity_L[a][i] : 0.0);
+  });
+  const std::string gname = fmt::format("vtk/grid_{:06d}.vti", s.step);
+  io::vtk::write_image(dir_ + "/" + gname, nodes, origin, spacing, {gm, gv});
+  grid_.add(s.time, gname);
+}
+
+template class VtkOutput<1>;
+template class VtkOutput<2>;
+template class VtkOutput<3>;
+
+}  // namespace mpmx::app

@@ -1,0 +1,82 @@
+#pragma once
+// A material's parameters. A [material] table is read by its model's own reader (the
+// entry of its name: a struct with `name` and `read`, core/registry.hpp) into a
+// dimension-free Model (the parameters, checked), which then makes the Material of the
+// run's dimension. The list of materials is app/mpm/materials.hpp: adding one is its
+// own file and one line there.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mpmx/core/table.hpp"
+#include "mpmx/material/material.hpp"
+
+namespace mpmx::material {
+
+// The unstrained 0 K crystal of an interatomic potential, in continuum units: what a
+// law takes when its constants come from the MD potential (cubic_elastic's
+// constants_from = "potential"). A coupling of two engines: the app supplies it
+// (multiscale/), so that material/ knows nothing of MD.
+struct Crystal {
+  double density = 0.0, c11 = 0.0, c12 = 0.0, c44 = 0.0;
+};
+
+// What a reader may need beyond its own table.
+struct Context {
+  int dim = 1;
+  std::string deck_dir;   // files named in the table are relative to the deck
+  std::string units;      // case.units ("" or a name of core/units)
+  // The crystal of the potential that sub-table `key` of `table` describes (its problems
+  // recorded against them; nullopt then). Empty where no MD engine is wired in.
+  std::function<std::optional<Crystal>(Table& table, std::string_view key)> crystal_of;
+};
+
+// The cost a law adds to every point beyond the continuum's own (md_closure: its MD box).
+struct PointCost {
+  double bytes = 0;          // held per point
+  double atoms = 0;          // atoms per point (0: no model inside the points)
+  double steps_per_step = 0; // its steps per continuum step
+  double setup_steps = 0;    // its steps before the first continuum step (relaxation)
+  std::string size_key;      // the deck keys that size it
+};
+
+// The parameters of one [material] table, read and checked.
+class Model {
+ public:
+  virtual ~Model() = default;
+  virtual std::string name() const = 0;
+  // Density of unstrained material (elastic), or of the gas at its reference state.
+  virtual double density() const = 0;
+  // Solids take [initial.strain]; fluids take [initial.pressure].
+  virtual bool solid() const = 0;
+  // A point at initial strain e starts at density / (1 + e) (the multiscale cases).
+  virtual bool density_of_unstrained() const { return false; }
+  // Largest longitudinal wave speed of material at density rho and pressure p in `dim`
+  // dimensions: the deck's CFL check and the 1-D references use it.
+  virtual double wave_speed(int dim, double rho, double pressure) const = 0;
+  // The gas law's density at pressure p (isothermal gas); NaN where not a function of p.
+  virtual double density_at_pressure(double) const { return std::nan(""); }
+  // Whether a [[body]] may take it as its own (md_closure is the deck's [material] only).
+  virtual bool per_body() const { return true; }
+  // Why a continuum step of dt does not suit the law ("" when it does).
+  virtual std::string time_step_problem(double /*dt*/) const { return ""; }
+  // What each point costs beyond the continuum's arrays, for a continuum step of dt.
+  virtual PointCost point_cost(double /*dt*/) const { return {}; }
+  // A line to show before the points are built, when building them takes a while.
+  virtual std::string build_note() const { return ""; }
+  virtual std::unique_ptr<Material<1>> make1() const = 0;
+  virtual std::unique_ptr<Material<2>> make2() const = 0;
+  virtual std::unique_ptr<Material<3>> make3() const = 0;
+};
+
+template <int Dim>
+std::unique_ptr<Material<Dim>> make(const Model& m) {
+  if constexpr (Dim == 1) return m.make1();
+  else if constexpr (Dim == 2) return m.make2();
+  else return m.make3();
+}
+
+}  // namespace mpmx::material

@@ -1,0 +1,78 @@
+#include "mpmx/mpm/state_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/mpm/points.hpp"
+
+namespace mpmx::mpm {
+
+// A NaN or Inf anywhere stops the run naming the step, the particle and the field.
+// The cheap per-step test is the sum of the new velocities and positions (from g2p)
+// and the stress work of the step: any non-finite value poisons them.
+template <int Dim>
+void check_finite(const State<Dim>& s) {
+  if (std::isfinite(s.finite_check) && std::isfinite(s.tallies.stress_work)) return;
+  const auto& p = s.particles;
+  for (std::size_t q = 0; q < p.size(); ++q) {
+    if (!std::isfinite(p.volume[q]))
+      throw RunError(fmt::format("non-finite volume ({}) at particle {} in step {} (t = {})", p.volume[q], q,
+                                 s.step, s.time));
+    for (int a = 0; a < Dim; ++a) {
+      const std::pair<const char*, double> fields[] = {
+          {"velocity", p.v[a][q]}, {"stress", p.stress[a * Dim + a][q]}, {"position", p.x[a][q]}};
+      for (const auto& [name, v] : fields)
+        if (!std::isfinite(v))
+          throw RunError(fmt::format("non-finite {} ({}) at particle {} in step {} (t = {})", name,
+                                     v, q, s.step, s.time));
+    }
+  }
+  throw RunError(fmt::format("non-finite stress work in step {} (t = {})", s.step, s.time));
+}
+
+// The CFL step of the current state: cfl x the smallest cell side / max over points of
+// (sound speed + speed); a maximum, so the same for any thread count.
+template <int Dim>
+double stable_dt(const State<Dim>& s, double cfl) {
+  const auto& p = s.particles;
+  const auto view = points(p);
+  double dx = s.grid.dx[0], fastest = 0.0;
+  for (int d = 1; d < Dim; ++d) dx = std::min(dx, s.grid.dx[d]);
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) reduction(max : fastest) num_threads(s.threads) if (s.threads > 1)
+  for (std::size_t q = 0; q < n; ++q) {
+    double v2 = 0.0;
+    for (int a = 0; a < Dim; ++a) v2 += p.v[a][q] * p.v[a][q];
+    fastest = std::max(fastest, s.material->sound_speed(view, q) + std::sqrt(v2));
+  }
+  if (!(fastest > 0.0) || !std::isfinite(fastest))
+    throw RunError(fmt::format("dt = \"cfl\": no finite wave speed in step {} (t = {})", s.step, s.time));
+  return cfl * dx / fastest;
+}
+
+// A particle whose volume is no longer positive has failed (tension or compression
+// instability): checked where the volumes are read anyway, at the records.
+template <int Dim>
+void check_volumes(const State<Dim>& s) {
+  const auto& p = s.particles;
+  for (std::size_t q = 0; q < p.size(); ++q)
+    if (!(p.volume[q] > 0.0))
+      throw RunError(fmt::format("volume of particle {} fell to {} in step {} (t = {}): the "
+                                 "material failed (tension or compression instability)",
+                                 q, p.volume[q], s.step, s.time));
+}
+
+#define MPMX_STATE_CHECKS(D)                              \
+  template void check_finite<D>(const State<D>&);         \
+  template double stable_dt<D>(const State<D>&, double);  \
+  template void check_volumes<D>(const State<D>&);
+MPMX_STATE_CHECKS(1)
+MPMX_STATE_CHECKS(2)
+MPMX_STATE_CHECKS(3)
+#undef MPMX_STATE_CHECKS
+
+}  // namespace mpmx::mpm

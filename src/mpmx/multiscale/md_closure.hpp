@@ -1,0 +1,144 @@
+#pragma once
+// md_closure: the heterogeneous multiscale closure of chapter 6. Every material point
+// owns a periodic MD box (section 6.2): fcc at the potential's least-energy lattice
+// constant, n x n x n cells, the point's initial engineering strain along x, atoms at
+// twice the point's temperature, relaxed at zero strain rate. It is built once and
+// never re-initialised; each continuum step its velocity gradient (eq. 6.3) deforms
+// the box for dt / dt_md MD steps and the box's virial stress (eq. 2.25) is the point's
+// stress. Units are converted here only (core/units).
+//
+// Under MPI each rank builds and advances the boxes of its block of points
+// (multiscale/spread); every rank then holds every point's result (stress and box) and
+// the continuum step is replicated on all ranks. Replicated rather than run on rank 0:
+// the continuum costs nothing beside the MD, every rank then takes the same decisions
+// from the same state (records, the CFL step, the checks) without a protocol of
+// commands, and the gradients need no scatter. A box's state and random stream depend
+// only on its point's index, so the results do not depend on the ranks or threads.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "mpmx/core/ranks.hpp"
+#include "mpmx/core/units.hpp"
+#include "mpmx/material/material.hpp"
+#include "mpmx/md/equilibrium.hpp"
+#include "mpmx/md/system.hpp"
+#include "mpmx/multiscale/batch.hpp"
+#include "mpmx/multiscale/spread.hpp"
+
+namespace mpmx::multiscale {
+
+using material::Material;
+using material::Points;
+
+struct MdClosureConfig {
+  md::PotentialSpec potential;
+  int cells = 4;                   // n x n x n fcc cells: 4 -> 256 atoms, 5 -> 500
+  double temperature = 0.0;        // K
+  std::uint64_t seed = 1;          // with the point index: one random stream per point
+  double dt = 0.001;               // MD step, ps
+  std::int64_t relax_steps = 0;    // zero-strain-rate relaxation after the thermal start
+  multiscale::StressSample sample = multiscale::StressSample::last;
+  double skin = 1.0;               // Angstrom
+  bool mixed_precision = false;
+  units::UnitSystem units{"nm_ps_GPa", 10.0, 1.0, 1.0};
+  int threads = 0;                 // 0: OpenMP default
+  int energy_consistency = -1;     // eq. 7.11: 1 on, 0 off, -1 the default (on in 2-D and 3-D)
+
+  int atoms_per_point() const { return 4 * cells * cells * cells; }
+  // MD steps in a continuum step `dt` (continuum units); 0 when not a whole number.
+  int md_steps(double dt) const;
+};
+
+// The least-energy lattice, C11 and density of a closure's potential, in continuum
+// units, without building any box (deck checks: CFL limit, the density of the points).
+struct MdClosureProperties {
+  md::FccEquilibrium equilibrium;
+  double density = 0.0, modulus = 0.0, sound_speed = 0.0;
+  double c12 = 0.0, c44 = 0.0;  // the other cubic constants (continuum units)
+};
+MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, const units::UnitSystem& u);
+
+// In 2-D and 3-D the point's full velocity gradient drives its box (eqs. 5.7-5.8; a lower
+// triangle is turned upper triangular by eq. 5.20, the z length of a 2-D run stays
+// fixed) and the full virial stress comes back. Eq. 5.20 gives the box the same rate of
+// deformation but another spin than the point's, so each point carries the rotation R
+// between the box's crystal and the point's (dR/dt = W R - R W') and returns R sigma R^T.
+// Energy consistency (eq. 7.11, on by default in 2-D and 3-D): each macro step the
+// difference between the continuum's work V sigma : D dt and the box's own energy change
+// goes into the box as kinetic energy about its mean velocity.
+template <int Dim>
+class MdClosure final : public Material<Dim>, public material::Subscale {
+ public:
+  explicit MdClosure(const MdClosureConfig& config);
+
+  std::string name() const override { return "md_closure"; }
+  // Builds one box per point of this rank's block from p.strain (engineering, along
+  // x); sets every point's stress. Collective under MPI, as are update_stress, save
+  // and load; a failure on any rank throws the same RunError on every rank.
+  void initialize(const Points<Dim>& p) override;
+  void update_stress(const Points<Dim>& p, double dt) override;
+  // sqrt(C11 / rho): the 0 K uniaxial-strain wave speed, for the viscosity.
+  double sound_speed(const Points<Dim>& p, std::size_t q) const override;
+  // The boxes of every rank, in point order, written by rank 0 alone: the file is the
+  // single-process one. load keeps this rank's block, so any rank count resumes it.
+  void save(std::ostream& out) const override;
+  void load(std::istream& in) override;
+  // Moves boxes between ranks so that each block's measured cost is about equal.
+  bool rebalance(double threshold) override;
+  // Every point's box (all ranks'): what a checkpoint holds, checked against the deck.
+  long long state_points() const override { return static_cast<long long>(spread_.points()); }
+
+  const md::FccEquilibrium& equilibrium() const { return props_.equilibrium; }
+  double density() const { return props_.density; }  // unstrained crystal, continuum units
+  double modulus() const { return props_.modulus; }  // C11, continuum units
+  int atoms_per_point() const { return cfg_.atoms_per_point(); }
+  std::int64_t atom_steps() const { return atom_steps_; }  // all ranks' boxes
+  double md_seconds() const { return md_seconds_; }        // wall time in this rank's boxes
+  int threads() const override { return batch_.threads(); }
+  // The boxes spread over the run's --threads (0: OpenMP's default), set before
+  // initialize(); the continuum's particle threads (set_threads) do not apply to them.
+  void use_run_threads(int threads) override { batch_ = multiscale::Batch(threads); }
+  void set_threads(int) override {}
+  // What the run record shows of the boxes (material::Subscale).
+  const material::Subscale* subscale() const override { return this; }
+  std::int64_t steps() const override { return atom_steps_; }
+  double seconds() const override { return md_seconds_; }
+  std::vector<material::Figure> figures() const override;
+  // This rank's boxes: those of points spread().begin() + k.
+  const std::vector<md::System>& boxes() const { return boxes_; }
+  const multiscale::Spread& spread() const { return spread_; }
+  // Eq. 7.11: energy put into (positive) or taken from the boxes so far, eV, all ranks;
+  // and what could not be taken from a box with too little thermal energy.
+  double energy_injected_ev() const { return injected_ev_; }
+  double energy_shortfall_ev() const { return shortfall_ev_; }
+  // Neighbour-list builds of every box since it was made (all ranks, at the last step):
+  // against the MD steps, how often the boxes' atoms outran the skin.
+  std::int64_t neighbor_builds() const { return neighbor_builds_; }
+
+ private:
+  md::SystemOptions box_options() const;
+  // Every rank's results into the points (stress; strain when `strain`, and in 2-D/3-D
+  // the strain increment of this step's dt), after the ranks agree on the first
+  // failure, if any.
+  void publish(const Points<Dim>& p, std::optional<ranks::Failure> failed, bool strain, double dt);
+  void set_point_stress(const Points<Dim>& p, std::size_t q) const;
+
+  MdClosureConfig cfg_;
+  md::Potential pot_;
+  MdClosureProperties props_;
+  multiscale::Batch batch_;
+  multiscale::Spread spread_;
+  std::vector<md::System> boxes_;                // this rank's block
+  std::vector<md::Mat3> gradients_, stress_;     // this rank's block (stress: box frame, GPa)
+  std::vector<md::Mat3> all_stress_, rotation_;  // every point, on every rank
+  std::int64_t atom_steps_ = 0;
+  double md_seconds_ = 0.0;
+  std::vector<double> box_seconds_;  // each box's cost since the last rebalance check
+  double injected_ev_ = 0.0, shortfall_ev_ = 0.0;
+  std::int64_t neighbor_builds_ = 0;
+  // MPMX_TEST_NAN_POINT: the point whose box reports a NaN stress (tests only).
+  std::optional<std::size_t> nan_point_;
+};
+
+}  // namespace mpmx::multiscale

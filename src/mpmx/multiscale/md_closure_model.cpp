@@ -1,0 +1,98 @@
+#include "mpmx/multiscale/md_closure_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/md/budget.hpp"
+#include "mpmx/md/config.hpp"
+
+namespace mpmx::multiscale {
+
+using material::Context;
+using material::Material;
+using material::Model;
+
+double MdClosureModel::wave_speed(int, double density, double) const { return std::sqrt(c11 / density); }
+
+std::string MdClosureModel::time_step_problem(double dt) const {
+  if (!(md.dt > 0) || md.md_steps(dt) > 0) return "";
+  return fmt::format("is {} ps, not a whole number of MD steps of material.md.dt = {} ps", dt * md.units.time_ps,
+                     md.dt);
+}
+
+material::PointCost MdClosureModel::point_cost(double dt) const {
+  material::PointCost c;
+  const double n[3] = {double(md.cells), double(md.cells), double(md.cells)};
+  c.bytes = md::box_bytes(n, 3.615, 8.0 + md.skin);
+  c.atoms = md.atoms_per_point();
+  c.steps_per_step = dt > 0 && md.dt > 0 ? std::max(1.0, dt / md.dt) : 1.0;
+  c.setup_steps = static_cast<double>(md.relax_steps);
+  c.size_key = "material.md.cells and grid.cells";
+  return c;
+}
+
+std::string MdClosureModel::build_note() const {
+  return fmt::format("building the MD box of every point ({} atoms each, section 6.2)...", md.atoms_per_point());
+}
+std::unique_ptr<Material<1>> MdClosureModel::make1() const { return std::make_unique<MdClosure<1>>(md); }
+std::unique_ptr<Material<2>> MdClosureModel::make2() const { return std::make_unique<MdClosure<2>>(md); }
+std::unique_ptr<Material<3>> MdClosureModel::make3() const { return std::make_unique<MdClosure<3>>(md); }
+
+std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) {
+  auto r = std::make_shared<MdClosureModel>();
+  auto& md = r->md;
+  const auto u = units::unit_system(ctx.units);
+  if (u) md.units = *u;
+  else
+    m.check(false, "model",
+            fmt::format("md_closure needs case.units to be one of {}, not '{}'", units::unit_system_names(),
+                        ctx.units));
+  md.potential = md::read_potential(*m.sub("potential"), ctx.deck_dir);
+  auto md_table = m.sub("md");
+  Table& s = *md_table;
+  md.cells = s.integer_int("cells", 4, 1, 20);  // 4 x cells^3 atoms per point
+  md.temperature = s.number("temperature", 0.0);
+  s.temperature("temperature", md.temperature);
+  md.seed = static_cast<std::uint64_t>(s.integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max()));
+  md.dt = s.number("dt", 0.001);
+  s.positive("dt", md.dt);
+  s.check(md.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
+  md.relax_steps = s.integer("relax_steps", 0, 0, std::numeric_limits<std::int64_t>::max());
+  md.sample = s.choice("stress", {"last", "average"}, "last") == "last" ? multiscale::StressSample::last
+                                                                        : multiscale::StressSample::average;
+  md.skin = s.number("skin", 1.0);
+  s.non_negative("skin", md.skin);
+  md.mixed_precision = s.choice("precision", {"double", "mixed"}, "double") == "mixed";
+  if (s.has("energy_consistency")) md.energy_consistency = s.boolean("energy_consistency", true) ? 1 : 0;
+  if (md.potential.style != "eam" || !md.potential.file.empty()) {
+    try {
+      const auto props = md_closure_properties(md.potential, md.units);
+      r->rho = props.density;
+      r->c11 = props.modulus;
+    } catch (const std::exception& e) {
+      m.check(false, "potential", e.what());
+    }
+  }
+  return r;
+}
+
+std::optional<material::Crystal> potential_crystal(Table& table, std::string_view key, const std::string& deck_dir,
+                                                   const std::string& units) {
+  const auto u = units::unit_system(units);
+  if (!u) return std::nullopt;  // the caller names the missing units
+  const md::PotentialSpec spec = md::read_potential(*table.sub(key), deck_dir);
+  if (spec.style == "eam" && spec.file.empty()) return std::nullopt;  // read_potential said why
+  try {
+    const auto props = md_closure_properties(spec, *u);
+    return material::Crystal{props.density, props.modulus, props.c12, props.c44};
+  } catch (const std::exception& e) {
+    table.check(false, key, e.what());
+  }
+  return std::nullopt;
+}
+
+}  // namespace mpmx::multiscale

@@ -1,0 +1,47 @@
+#pragma once
+// The [material] table of model = "md_closure": [material.potential] and
+// [material.md]. The crystal's density and C11 (continuum units) come from the
+// potential itself.
+#include <optional>
+#include <string_view>
+
+#include "mpmx/material/model.hpp"
+#include "mpmx/multiscale/md_closure.hpp"
+
+namespace mpmx::multiscale {
+
+struct MdClosureModel final : material::Model {
+  MdClosureConfig md;
+  double rho = 1.0, c11 = 1.0;   // the unstrained crystal's, continuum units
+
+  std::string name() const override { return "md_closure"; }
+  double density() const override { return rho; }
+  bool solid() const override { return true; }
+  bool density_of_unstrained() const override { return true; }
+  double wave_speed(int, double density, double) const override;
+  bool per_body() const override { return false; }
+  // A continuum step must be a whole number of MD steps.
+  std::string time_step_problem(double dt) const override;
+  // The box of a point (its bytes by the md/budget fit of a Cu-like fcc box reached by
+  // an 8 A cutoff plus skin) and its atom-steps.
+  material::PointCost point_cost(double dt) const override;
+  std::string build_note() const override;
+  std::unique_ptr<material::Material<1>> make1() const override;
+  std::unique_ptr<material::Material<2>> make2() const override;
+  std::unique_ptr<material::Material<3>> make3() const override;
+};
+
+// The registry entry (app/mpm/materials.hpp).
+struct MdClosureEntry {
+  static constexpr std::string_view name = "md_closure";
+  static std::shared_ptr<const material::Model> read(Table& m, const material::Context& ctx);
+};
+
+// The 0 K crystal of the potential in sub-table `key` of `table` (files relative to
+// `deck_dir`), in the continuum units `units` names: what Context::crystal_of gives the
+// laws whose constants come from a potential (cubic_elastic). Problems are recorded
+// against `table` and `key`; nullopt then.
+std::optional<material::Crystal> potential_crystal(Table& table, std::string_view key, const std::string& deck_dir,
+                                                   const std::string& units);
+
+}  // namespace mpmx::multiscale
