@@ -9,8 +9,8 @@
 namespace {
 
 void step_bench(benchmark::State& bs, const char* deck) {
-  const auto c = mpmx::io::read_mpm_deck(std::string(MPMX_SOURCE_DIR) + "/examples/" + deck);
-  auto s = mpmx::mpm::make_state(c);
+  const auto c = mpmx::app::read_mpm_deck(std::string(MPMX_SOURCE_DIR) + "/examples/" + deck);
+  auto s = mpmx::app::make_state(c);
   for (auto _ : bs) mpmx::mpm::step(s, c.dt);
   bs.counters["particle_steps_per_s"] = benchmark::Counter(
       static_cast<double>(s.particles.size()) * bs.iterations(), benchmark::Counter::kIsRate);

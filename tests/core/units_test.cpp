@@ -31,12 +31,12 @@ TEST(Units, NamedSystems) {
 TEST(Units, CopperDensityInEveryUnitSystem) {
   const md::PotentialSpec cu = test::copper_spec();
   // 8.9356 g/cm^3: nm_ps_GPa and mm_us_GPa measure density in g/cm^3, SI in kg/m^3.
-  EXPECT_NEAR(material::md_closure_properties(cu, *units::unit_system("nm_ps_GPa")).density, 8.9356, 1e-4);
-  EXPECT_NEAR(material::md_closure_properties(cu, *units::unit_system("mm_us_GPa")).density, 8.9356, 1e-4);
-  const auto si = material::md_closure_properties(cu, *units::unit_system("SI"));
+  EXPECT_NEAR(multiscale::md_closure_properties(cu, *units::unit_system("nm_ps_GPa")).density, 8.9356, 1e-4);
+  EXPECT_NEAR(multiscale::md_closure_properties(cu, *units::unit_system("mm_us_GPa")).density, 8.9356, 1e-4);
+  const auto si = multiscale::md_closure_properties(cu, *units::unit_system("SI"));
   EXPECT_NEAR(si.density, 8935.6, 0.1);
   EXPECT_NEAR(si.sound_speed, 4360.0, 2.0);  // sqrt(C11 / rho), m/s
-  EXPECT_NEAR(material::md_closure_properties(cu, *units::unit_system("metal")).density, 5.3812, 1e-4);
+  EXPECT_NEAR(multiscale::md_closure_properties(cu, *units::unit_system("metal")).density, 5.3812, 1e-4);
 }
 
 }  // namespace

@@ -82,7 +82,7 @@ end = 0.05
 )";
 
 struct Case {
-  mpm::MpmConfig config;
+  app::MpmConfig config;
   std::string text;    // the deck's canonical text
   std::string file;    // a real checkpoint of it, after step 1
   std::string payload;
@@ -91,40 +91,40 @@ struct Case {
   std::unique_ptr<mpm::State<1>> state;
 };
 
-std::string canonical(const mpm::MpmConfig& c) {
+std::string canonical(const app::MpmConfig& c) {
   std::ostringstream ss;
   ss << c.deck;
   return ss.str();
 }
 
 io::CheckedKind kind_of(const Case& k) {
-  return mpm::run_checkpoint_kind(k.text, k.config.cells * k.config.per_cell);
+  return app::run_checkpoint_kind(k.text, k.config.cells * k.config.per_cell);
 }
 
 Case make_case(const char* deck, const std::string& name) {
   Case k;
-  k.config = io::read_mpm_deck_text(deck, name);
+  k.config = app::read_mpm_deck_text(deck, name);
   k.text = canonical(k.config);
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   o.threads = 1;
   o.stop_after = 1;
   o.out_dir = (fuzz::temp_dir() / name).string();
-  mpm::run_mpm(k.config, o);
-  std::ifstream f(mpm::checkpoint_path(o.out_dir), std::ios::binary);
+  app::run_mpm(k.config, o);
+  std::ifstream f(app::checkpoint_path(o.out_dir), std::ios::binary);
   k.file.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
   k.payload = std::string(io::unframe(k.file, kind_of(k), name));
-  k.state = std::make_unique<mpm::State<1>>(mpm::make_state<1>(k.config, false, 1));
+  k.state = std::make_unique<mpm::State<1>>(app::make_state<1>(k.config, false, 1));
   return k;
 }
 
 void parse(const Case& k, std::string_view payload) {
   mpm::State<1>& s = *k.state;
   std::istringstream f{std::string(payload), std::ios::binary};
-  mpm::CheckpointIn in(f, "fuzz", io::kCheckedHeaderBytes);
+  app::CheckpointIn in(f, "fuzz", io::kCheckedHeaderBytes);
   (void)in.text();
-  mpm::load_state(in, s);
+  app::load_state(in, s);
 }
 
 std::string edited(std::string bytes, std::string_view edits) {

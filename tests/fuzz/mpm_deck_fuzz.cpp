@@ -14,8 +14,8 @@ inline int mpm_deck(const std::uint8_t* data, std::size_t size) {
   // A path given in the deck (reference.file, a potential) resolves against this folder.
   const std::string path = fuzz::as_file("deck.toml", fuzz::view(data, size));
   try {
-    const auto c = io::read_mpm_deck(path);
-    mpm::check_mpm_budget(mpm::estimate_mpm(c), std::uint64_t{1} << 34, false);
+    const auto c = app::read_mpm_deck(path);
+    app::check_mpm_budget(app::estimate_mpm(c), std::uint64_t{1} << 34, false);
   } catch (const InputError&) {
   }
   return 0;

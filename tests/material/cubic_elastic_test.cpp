@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/app/mpm/materials.hpp"
 #include "mpmx/io/deck.hpp"
 #include "mpmx/material/cubic_elastic.hpp"
 #include "mpmx/multiscale/md_closure.hpp"
@@ -241,7 +242,7 @@ std::vector<std::string> read_errors(const std::string& table) {
   auto deck = io::Deck::from_string("[material]\nmodel = \"cubic_elastic\"\n" + table);
   auto m = deck.root().table("material");
   m.string("model");
-  read_cubic_elastic(m, Context{2, "", ""});
+  CubicElasticEntry::read(m, Context{2, "", "", {}});
   return deck.errors();
 }
 
@@ -249,7 +250,7 @@ TEST(CubicElastic, DeckTableIsChecked) {
   auto deck = io::Deck::from_string(
       "[material]\nmodel = \"cubic_elastic\"\ndensity = 8.93\nc11 = 170.0\nc12 = 123.0\nc44 = 76.0\n");
   auto m = deck.root().table("material");
-  const auto model = read(m, Context{2, "", ""});
+  const auto model = app::read_material(m, app::material_context(2, "", ""));
   ASSERT_TRUE(deck.errors().empty());
   ASSERT_TRUE(model);
   EXPECT_EQ(model->name(), "cubic_elastic");
@@ -282,7 +283,7 @@ TEST(CubicElastic, ConstantsFromThePotential) {
       "[material]\nmodel = \"cubic_elastic\"\nconstants_from = \"potential\"\n"
       "[material.potential]\nstyle = \"eam\"\nfile = \"Cu_mishin1.eam.alloy\"\nelements = [\"Cu\"]\n");
   auto m = deck.root().table("material");
-  const auto model = read(m, Context{2, "", "nm_ps_GPa"});
+  const auto model = app::read_material(m, app::material_context(2, "", "nm_ps_GPa"));
   ASSERT_TRUE(deck.errors().empty()) << deck.errors().front();
   const auto* cubic = dynamic_cast<const CubicElasticModel*>(model.get());
   ASSERT_TRUE(cubic);
@@ -292,13 +293,13 @@ TEST(CubicElastic, ConstantsFromThePotential) {
   EXPECT_NEAR(cubic->density(), 8.93, 0.01);  // g/cm^3 in nm_ps_GPa
   md::PotentialSpec spec;
   spec.style = "eam", spec.file = md::resolve_potential_file("Cu_mishin1.eam.alloy", ""), spec.elements = {"Cu"};
-  EXPECT_DOUBLE_EQ(cubic->c.c11, md_closure_properties(spec, *units::unit_system("nm_ps_GPa")).modulus);
+  EXPECT_DOUBLE_EQ(cubic->c.c11, multiscale::md_closure_properties(spec, *units::unit_system("nm_ps_GPa")).modulus);
 
   auto bad = io::Deck::from_string(
       "[material]\nmodel = \"cubic_elastic\"\nconstants_from = \"potential\"\nc11 = 1.0\n"
       "[material.potential]\nstyle = \"eam\"\nfile = \"Cu_mishin1.eam.alloy\"\nelements = [\"Cu\"]\n");
   auto mb = bad.root().table("material");
-  read(mb, Context{2, "", "nm_ps_GPa"});
+  app::read_material(mb, app::material_context(2, "", "nm_ps_GPa"));
   ASSERT_FALSE(bad.errors().empty());
   EXPECT_NE(bad.errors().front().find("material.c11"), std::string::npos) << bad.errors().front();
 }

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/app/mpm/materials.hpp"
 #include "mpmx/io/deck.hpp"
 #include "mpmx/material/mie_gruneisen.hpp"
 #include "point_set.hpp"
@@ -400,7 +401,7 @@ std::vector<std::string> read_errors(const std::string& table) {
   auto deck = io::Deck::from_string("[material]\nmodel = \"mie_gruneisen\"\n" + table);
   auto m = deck.root().table("material");
   m.string("model");
-  read_mie_gruneisen(m, Context{2, "", ""});
+  MieGruneisenEntry::read(m, Context{2, "", "", {}});
   return deck.errors();
 }
 
@@ -416,7 +417,7 @@ TEST(MieGruneisen, DeckTableIsChecked) {
       "yield_stress = 0.12\n";
   auto deck = io::Deck::from_string("[material]\nmodel = \"mie_gruneisen\"\n" + ok);
   auto t = deck.root().table("material");
-  const auto model = read(t, Context{2, "", ""});
+  const auto model = app::read_material(t, app::material_context(2, "", ""));
   ASSERT_TRUE(deck.errors().empty());
   ASSERT_TRUE(model);
   EXPECT_EQ(model->name(), "mie_gruneisen");

@@ -11,7 +11,7 @@ using namespace mpmx;
 namespace {
 
 // The largest relative L2 error of `field` over its compared times, and per time.
-double l2_at(const mpm::RunResult& r, const std::string& field) { return r.errors.at(field).l2; }
+double l2_at(const app::RunResult& r, const std::string& field) { return r.errors.at(field).l2; }
 
 }  // namespace
 

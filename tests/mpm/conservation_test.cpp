@@ -10,7 +10,7 @@ namespace {
 
 const char* kScheme[] = {"mpm", "ugimp", "cpgimp", "cpdi", "ddmp", "ddmp_subpoints"};
 
-mpm::MpmConfig free_bar(const std::string& scheme) {
+app::MpmConfig free_bar(const std::string& scheme) {
   return test::deck_with(test::example("A1_standing_wave_moving.toml"), [&](toml::table& t) {
     auto& s = *t["scheme"].as_table();
     s.insert_or_assign("name", scheme);

@@ -42,8 +42,8 @@ struct Covered {
   std::size_t strays = 0;  // particles at most with sub-points beyond the neighbouring cells
   int steps_past = 0;      // steps with a particle past an end of the grid
 };
-Covered expect_same_steps(const mpm::MpmConfig& c, int steps, const std::string& what) {
-  mpm::State<1> fused = mpm::make_state(c), plain = mpm::make_state(c);
+Covered expect_same_steps(const app::MpmConfig& c, int steps, const std::string& what) {
+  mpm::State<1> fused = app::make_state(c), plain = app::make_state(c);
   const std::vector<double> x0 = fused.particles.x[0];
   const double tol = 1e-12;
   double worst[6] = {};
@@ -81,7 +81,7 @@ Covered expect_same_steps(const mpm::MpmConfig& c, int steps, const std::string&
 }
 
 template <class Edit>
-mpm::MpmConfig with_scheme(const std::string& deck, const std::string& scheme, int sub, Edit edit) {
+app::MpmConfig with_scheme(const std::string& deck, const std::string& scheme, int sub, Edit edit) {
   return test::deck_with(test::example(deck), [&](toml::table& t) {
     auto& s = *t["scheme"].as_table();
     s.insert_or_assign("name", scheme);
@@ -170,7 +170,7 @@ TEST_P(FusedPath, OrderLostBetweenStepsMatchesStencil) {
     const auto c = with_scheme("A1_standing_wave_moving.toml", scheme, sub, [](toml::table& t) {
       t["particles"].as_table()->insert_or_assign("per_cell", 4);
     });
-    mpm::State<1> fused = mpm::make_state(c), plain = mpm::make_state(c);
+    mpm::State<1> fused = app::make_state(c), plain = app::make_state(c);
     mpm::step(fused, c.dt);
     ASSERT_TRUE(fused.linear_cells.ordered) << scheme;
     auto swap_particles = [](mpm::Particles<1>& p, std::size_t i, std::size_t j) {

@@ -69,15 +69,15 @@ Outcome mpmx(const std::string& args) {
 }
 
 TEST(MpmBudget, CountsPointsNodesAndSubpoints) {
-  const auto c = io::read_mpm_deck(deck1d("count.toml", "50", "4", "1e-3", "1.0", "ddmp_subpoints", "subpoints = 8"));
-  const auto b = mpm::estimate_mpm(c);
+  const auto c = app::read_mpm_deck(deck1d("count.toml", "50", "4", "1e-3", "1.0", "ddmp_subpoints", "subpoints = 8"));
+  const auto b = app::estimate_mpm(c);
   EXPECT_EQ(b.points, 200);
   EXPECT_EQ(b.subpoints, 8);
   EXPECT_EQ(b.nodes, 51);
   EXPECT_EQ(b.steps, 1000);
   EXPECT_EQ(b.md_atoms, 0);
   EXPECT_GT(b.bytes, 200 * 8 * 8.0);
-  EXPECT_NO_THROW(mpm::check_mpm_budget(b, physical_memory_bytes(), false));
+  EXPECT_NO_THROW(app::check_mpm_budget(b, physical_memory_bytes(), false));
 }
 
 TEST(MpmBudget, MemoryBeyondTheMachineIsRefusedEvenForced) {
@@ -141,7 +141,7 @@ TEST(MpmBudget, EveryContinuumExamplePasses) {
   for (const char* name : {"A1_standing_wave_static.toml", "N5_two_spheres_mpm.toml", "H1_weak_0K_256.toml",
                            "N1_shock_tube_subpoints_2d.toml", "S1_mpm_1024ppc.toml"}) {
     const auto c = test::deck(test::example(name));
-    EXPECT_NO_THROW(mpm::check_mpm_budget(mpm::estimate_mpm(c), physical_memory_bytes(), false)) << name;
+    EXPECT_NO_THROW(app::check_mpm_budget(app::estimate_mpm(c), physical_memory_bytes(), false)) << name;
   }
 }
 

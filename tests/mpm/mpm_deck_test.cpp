@@ -31,7 +31,7 @@ end = 0.1
 
 std::string error_of(const std::string& text) {
   try {
-    mpmx::io::read_mpm_deck_text(text, "t.toml");
+    mpmx::app::read_mpm_deck_text(text, "t.toml");
   } catch (const mpmx::InputError& e) {
     return e.what();
   }
@@ -49,7 +49,7 @@ std::string replace(std::string s, const std::string& from, const std::string& t
 }  // namespace
 
 TEST(MpmDeck, GoodDeckReads) {
-  const auto c = mpmx::io::read_mpm_deck_text(kGood);
+  const auto c = mpmx::app::read_mpm_deck_text(kGood);
   EXPECT_EQ(c.cells, 10);
   EXPECT_EQ(c.steps(), 100);
 }

@@ -20,32 +20,32 @@ inline std::string example(const std::string& name) {
 
 // Reads a deck file, lets `edit` change its TOML, and returns the checked config.
 template <class Edit>
-mpm::MpmConfig deck_with(const std::string& path, Edit edit) {
+app::MpmConfig deck_with(const std::string& path, Edit edit) {
   toml::table t = toml::parse_file(path);
   edit(t);
   std::ostringstream os;
   os << t;
-  return io::read_mpm_deck_text(os.str(), path);
+  return app::read_mpm_deck_text(os.str(), path);
 }
 
-inline mpm::MpmConfig deck(const std::string& path) {
+inline app::MpmConfig deck(const std::string& path) {
   return deck_with(path, [](toml::table&) {});
 }
 
-inline mpm::RunResult run(const mpm::MpmConfig& c) {
-  mpm::RunOptions o;
+inline app::RunResult run(const app::MpmConfig& c) {
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
-  return mpm::run_mpm(c, o);
+  return app::run_mpm(c, o);
 }
 
 // A 2-D or 3-D deck, in memory.
 template <int Dim>
-mpm::RunResultOf<Dim> run_dim(const mpm::MpmConfig& c) {
-  mpm::RunOptions o;
+app::RunResultOf<Dim> run_dim(const app::MpmConfig& c) {
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
-  return mpm::run_mpm_dim<Dim>(c, o);
+  return app::run_mpm_dim<Dim>(c, o);
 }
 
 // The same particles to the bit: positions, velocities, stresses.
@@ -63,15 +63,15 @@ void expect_same_particles(const mpm::Particles<Dim>& a, const mpm::Particles<Di
 // particles (positions, velocities, stresses) and the run's tallies. Returns both runs.
 // `continuum_threads`: the continuum has points enough to use the two threads.
 template <int Dim>
-std::pair<mpm::RunResultOf<Dim>, mpm::RunResultOf<Dim>> same_on_one_and_two_threads(const mpm::MpmConfig& c,
+std::pair<app::RunResultOf<Dim>, app::RunResultOf<Dim>> same_on_one_and_two_threads(const app::MpmConfig& c,
                                                                                     bool continuum_threads = true) {
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   o.threads = 1;
-  auto one = mpm::run_mpm_dim<Dim>(c, o);
+  auto one = app::run_mpm_dim<Dim>(c, o);
   o.threads = 2;
-  auto two = mpm::run_mpm_dim<Dim>(c, o);
+  auto two = app::run_mpm_dim<Dim>(c, o);
   if (continuum_threads) {
     EXPECT_EQ(two.state.threads, 2);
   }

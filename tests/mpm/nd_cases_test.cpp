@@ -17,7 +17,7 @@ using namespace mpmx;
 namespace {
 
 template <int Dim>
-double total_energy(const mpm::RunResultOf<Dim>& r) { return r.kinetic_final + r.stored_final; }
+double total_energy(const app::RunResultOf<Dim>& r) { return r.kinetic_final + r.stored_final; }
 
 // Mean velocity along (1, 1) of the disk that started at x + y < 0.
 template <int Dim>
@@ -43,7 +43,7 @@ TEST(N3, TwoDisksKeepMomentumRoundOffAndRebound) {
     EXPECT_LT(r.momentum_error(), 1e-12 * r.momentum_scale) << scheme;
     // The disks rebound: the first disk moves back along (1, 1).
     std::vector<bool> first(r.state.particles.size());
-    const auto s0 = mpm::make_state<2>(c);
+    const auto s0 = app::make_state<2>(c);
     for (std::size_t q = 0; q < first.size(); ++q) first[q] = s0.particles.x[0][q] + s0.particles.x[1][q] < 0.0;
     EXPECT_GT(approach_speed(s0.particles, first), 0.1);
     EXPECT_LT(approach_speed(r.state.particles, first), -0.05) << scheme;
@@ -68,7 +68,7 @@ TEST(N5, TwoSpheresKeepMomentumRoundOffAndRebound) {
     const auto r = test::run_dim<3>(c);
     EXPECT_LT(r.momentum_error(), 1e-12 * r.momentum_scale) << scheme;
     std::vector<bool> first(r.state.particles.size());
-    const auto s0 = mpm::make_state<3>(c);
+    const auto s0 = app::make_state<3>(c);
     for (std::size_t q = 0; q < first.size(); ++q) first[q] = s0.particles.x[0][q] + s0.particles.x[1][q] < 0.0;
     EXPECT_LT(approach_speed(r.state.particles, first), -0.05) << scheme;
     const double e0 = r.kinetic_initial;
@@ -84,11 +84,11 @@ TEST(N5, DdmpEnergyWithinN3sBoundOnTheRefinedGrid) {
     t["grid"].as_table()->insert_or_assign("cells", toml::array{40, 40, 40});
     t["time"].as_table()->insert_or_assign("dt", 0.005);
   });
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   o.threads = 2;
-  const auto r = mpm::run_mpm_dim<3>(c, o);
+  const auto r = app::run_mpm_dim<3>(c, o);
   EXPECT_LT(r.momentum_error(), 1e-12 * r.momentum_scale);
   const double e0 = r.kinetic_initial;
   EXPECT_LT(std::abs(total_energy(r) - e0) / e0, 0.008);
@@ -99,7 +99,7 @@ TEST(N5, DdmpEnergyWithinN3sBoundOnTheRefinedGrid) {
 // behind it, against the Hugoniot: Us = c0 + s up = 5.8025 km/s, sigma_xx = -(rho0 Us up
 // + 2/3 Y) at up = 1.25 km/s.
 TEST(N6, CopperPlanarImpactFollowsTheHugoniot) {
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   // The front (rightmost target point moving faster than up / 2) at t = 0.6 and 1.2 us.
@@ -108,7 +108,7 @@ TEST(N6, CopperPlanarImpactFollowsTheHugoniot) {
       d["time"].as_table()->insert_or_assign("end", t);
       d["output"].as_table()->insert_or_assign("times", toml::array{t});
     });
-    const auto r = mpm::run_mpm_dim<2>(ct, o);
+    const auto r = app::run_mpm_dim<2>(ct, o);
     const auto& p = r.state.particles;
     double front = 0.0;
     for (std::size_t q = 0; q < p.size(); ++q)
@@ -143,7 +143,7 @@ TEST(N6, AluminiumFlyerOnCopperMatchesImpedances) {
   }
   const double up = 0.5 * (a + b), us_ref = c_cu + s_cu * up;
   ASSERT_NEAR(up, 0.780, 0.001);
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   auto front_at = [&](double t, double& sxx, double& u_behind, std::string& law) {
@@ -151,7 +151,7 @@ TEST(N6, AluminiumFlyerOnCopperMatchesImpedances) {
       d["time"].as_table()->insert_or_assign("end", t);
       d["output"].as_table()->insert_or_assign("times", toml::array{t});
     });
-    const auto r = mpm::run_mpm_dim<2>(ct, o);
+    const auto r = app::run_mpm_dim<2>(ct, o);
     law = r.state.material->name();
     const auto& p = r.state.particles;
     double front = 0.0;
@@ -177,7 +177,7 @@ TEST(N6, AluminiumFlyerOnCopperMatchesImpedances) {
 // N2: the shock tube with its partition at 30 degrees to the grid against the 1-D exact
 // solution along the normal, beside the same run with the partition along a grid line.
 TEST(N2, RotatedShockTubeIsAsAccurateAsTheAlignedOne) {
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   for (const std::string scheme : {"cpdi", "ddmp_subpoints"}) {
@@ -186,8 +186,8 @@ TEST(N2, RotatedShockTubeIsAsAccurateAsTheAlignedOne) {
     const auto aligned = test::deck_with(test::example("N2_rotated_shock_tube_" + scheme + ".toml"), [](toml::table& t) {
       t["initial"].as_table()->get("pressure")->as_table()->insert_or_assign("normal", toml::array{1.0, 0.0});
     });
-    const auto r = mpm::run_mpm_dim<2>(rotated, o);
-    const auto a = mpm::run_mpm_dim<2>(aligned, o);
+    const auto r = app::run_mpm_dim<2>(rotated, o);
+    const auto a = app::run_mpm_dim<2>(aligned, o);
     const double er = r.errors.at("pressure").l1, ea = a.errors.at("pressure").l1;
     EXPECT_GT(ea, 0.0) << scheme;
     EXPECT_LT(ea, 0.2) << scheme;  // the shock and the fan are there, in the right places
@@ -199,13 +199,13 @@ TEST(N2, RotatedShockTubeIsAsAccurateAsTheAlignedOne) {
 // to 64^2 cells): the observed L2 order of the displacement is at least 1.8 for cpgimp
 // and cpdi and 1.5 for ddmp_subpoints (the decks' 4 grids: docs/validation.md).
 TEST(N4, ManufacturedSolutionConvergesAtTheCatalogOrder) {
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   for (const auto& [scheme, least] : {std::pair{"cpgimp", 1.8}, {"cpdi", 1.8}, {"ddmp_subpoints", 1.5}}) {
     const auto c = test::deck_with(test::example(std::string("N4_manufactured_") + scheme + ".toml"),
                                    [](toml::table& t) { t["convergence"].as_table()->insert_or_assign("levels", 3); });
-    const auto study = mpm::run_convergence(c, o);
+    const auto study = app::run_convergence(c, o);
     ASSERT_EQ(study.levels.size(), 3u) << scheme;
     const double order = study.order_l2.at("displacement");
     EXPECT_GE(order, least) << scheme;
@@ -226,7 +226,7 @@ TEST(N7, SpinningDiskStressStaysAtTheCentripetalScale) {
   const auto& p = r.state.particles;
   const double scale = 1000.0 * 0.3 * 0.3;  // rho (omega R)^2
   double smax = 0.0, L0 = 0.0, L1 = 0.0;
-  const auto s0 = mpm::make_state<2>(c);
+  const auto s0 = app::make_state<2>(c);
   for (std::size_t q = 0; q < p.size(); ++q) {
     for (int k = 0; k < 4; ++k) smax = std::max(smax, std::abs(p.stress[k][q]));
     L0 += p.mass[q] * (s0.particles.x[0][q] * s0.particles.v[1][q] - s0.particles.x[1][q] * s0.particles.v[0][q]);

@@ -16,7 +16,7 @@ namespace {
 
 // Max over particles of |a - b|, relative to the largest |a|.
 template <int Dim>
-void expect_same_as_1d(const mpm::RunResult& one, const mpm::RunResultOf<Dim>& nd, double tol,
+void expect_same_as_1d(const app::RunResult& one, const app::RunResultOf<Dim>& nd, double tol,
                        const std::string& what) {
   const auto& p1 = one.state.particles;
   const auto& pn = nd.state.particles;

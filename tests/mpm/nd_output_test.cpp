@@ -14,7 +14,7 @@
 
 #include "mpm_test_util.hpp"
 #include "mpmx/core/error.hpp"
-#include "mpmx/material/model.hpp"
+#include "mpmx/app/mpm/materials.hpp"
 #include "mpmx/mpm/points.hpp"
 #include "mpmx/app/mpm/setup.hpp"
 
@@ -41,11 +41,11 @@ TEST(NdOutput, VtkFilesReadBackWithVtkAndRunJsonHasTheKeys) {
   const auto c = test::deck_with(test::example("N3_two_disks_cpdi.toml"), [](toml::table& t) {
     t["time"].as_table()->insert_or_assign("end", 0.5);
   });
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.out_dir = dir.string();
   o.quiet = true;
   o.plot = false;
-  const auto r = mpm::run_mpm_dim<2>(c, o);
+  const auto r = app::run_mpm_dim<2>(c, o);
   for (const char* f : {"run.json", "particles.pvd", "grid.pvd", "vtk/particles_000000.vtu", "vtk/particles_000050.vtu",
                         "vtk/grid_000050.vti"})
     EXPECT_TRUE(fs::exists(dir / f)) << f;
@@ -118,7 +118,7 @@ TEST(Registries, EveryNameTheGuideListsIsAcceptedAndUnknownOnesAreRefusedWithThe
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("cpdi"), std::string::npos) << e.what();
   }
-  const auto names = material::names();
+  const auto names = app::Materials::names();
   for (const char* m : {"linear_elastic", "cubic_elastic", "mie_gruneisen", "ideal_gas_isothermal",
                         "ideal_gas_adiabatic", "md_closure"})
     EXPECT_NE(std::find(names.begin(), names.end(), m), names.end()) << m;
@@ -148,11 +148,11 @@ TEST(NdOutput, CflTimeStepLandsOnTheRecordTimes) {
   // The first step's estimate: 0.4 dx / (c + |v|), c = sqrt(M / rho) of nu = 0.3.
   const double M = 1000.0 * 0.7 / (1.3 * 0.4), speed = std::sqrt(M / 1000.0) + 0.1 * std::sqrt(2.0);
   EXPECT_NEAR(c.dt, 0.4 * 0.05 / speed, 1e-12);
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.out_dir = dir.string();
   o.quiet = true;
   o.plot = false;
-  const auto r = mpm::run_mpm_dim<2>(c, o);
+  const auto r = app::run_mpm_dim<2>(c, o);
   EXPECT_EQ(r.state.time, 0.5);
   EXPECT_GE(r.steps, std::llround(0.5 / c.dt));
   const std::string pvd = test::slurp(dir / "particles.pvd");
@@ -173,7 +173,7 @@ TEST(NdBodies, BoxWithANotchAndACircle) {
                                  {"velocity", toml::array{-1.0, 0.5}}});
     t.insert_or_assign("body", bodies);
   });
-  const auto s = mpm::make_state<2>(c);
+  const auto s = app::make_state<2>(c);
   // Centres on the 40 x 40 lattice of spacing 0.025 starting at -0.4875.
   std::size_t in_box = 0, in_circle = 0;
   for (int i = 0; i < 40; ++i)
@@ -207,7 +207,7 @@ TEST(NdBodies, BodiesTakeTheirOwnMaterial) {
   };
   const toml::table soft{{"model", "linear_elastic"}, {"density", 250.0}, {"youngs_modulus", 10.0}, {"poisson_ratio", 0.3}};
   const auto c = test::deck_with(test::example("N3_two_disks_mpm.toml"), with_bodies(soft));
-  auto s = mpm::make_state<2>(c);
+  auto s = app::make_state<2>(c);
   ASSERT_EQ(s.particles.size(), 1600u);
   std::size_t light = 0;
   for (std::size_t q = 0; q < s.particles.size(); ++q) {
@@ -261,16 +261,16 @@ TEST_P(NdResume, CheckpointResumesBitForBit) {
     output.insert_or_assign("every", 50);
   });
   const auto whole = test::run_dim<2>(c);
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.out_dir = dir.string();
   o.quiet = true;
   o.plot = false;
   o.stop_after = 60;
-  const auto first = mpm::run_mpm_dim<2>(c, o);
+  const auto first = app::run_mpm_dim<2>(c, o);
   ASSERT_TRUE(first.interrupted);
   o.stop_after = 0;
   o.resume = true;
-  const auto rest = mpm::run_mpm_dim<2>(c, o);
+  const auto rest = app::run_mpm_dim<2>(c, o);
   EXPECT_EQ(rest.steps, whole.steps);
   for (int d = 0; d < 2; ++d) {
     EXPECT_EQ(rest.state.particles.x[d], whole.state.particles.x[d]);
@@ -317,7 +317,7 @@ TEST(NdDecks, ManufacturedConvergenceAndNormalKeysAreChecked) {
   const auto c = test::deck(test::example(n4));
   EXPECT_EQ(c.convergence_levels, 4);
   EXPECT_TRUE(c.manufactured.on);
-  const auto s = mpm::make_state<2>(c);  // started with the exact velocity
+  const auto s = app::make_state<2>(c);  // started with the exact velocity
   ASSERT_TRUE(s.manufactured);
   const double pi = 3.141592653589793;
   for (std::size_t q = 0; q < s.particles.size(); q += 37)

@@ -34,11 +34,11 @@ TEST(RunOutput, WritesRunJsonAndTables) {
     t["output"].as_table()->insert_or_assign("times", toml::array{0.3});
     t["reference"].as_table()->insert_or_assign("times", toml::array{0.3});
   });
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.out_dir = dir.string();
   o.quiet = true;
   o.plot = false;
-  mpm::run_mpm(c, o);
+  app::run_mpm(c, o);
   const std::string json = test::slurp(dir / "run.json");
   for (const char* key : {"\"wall_seconds\"", "\"steps\" : 30000", "\"conservation\"", "\"mass\"",
                           "\"momentum\"", "\"energy\"", "\"errors\"", "\"velocity\"", "\"l1\"",
@@ -63,13 +63,13 @@ TEST(RunOutput, NanStopsTheRunNamingStepParticleAndField) {
     t["output"].as_table()->insert_or_assign("every", 1);
     t.erase("reference");
   });
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.out_dir = dir.string();
   o.quiet = true;
   o.plot = false;
   std::string message;
   try {
-    mpm::run_mpm(c, o);
+    app::run_mpm(c, o);
   } catch (const RunError& e) {
     message = e.what();
   }
@@ -111,7 +111,7 @@ TEST(Profiles, TanhStepSpansItsCells) {
 
 TEST(Viscosity, OnlyOnCompression) {  // dissertation sec. 6.3: 0.5 rho c |dv|, strain rate < 0
   auto c = test::deck(test::example("A1_standing_wave_static.toml"));
-  auto s = mpm::make_state(c);
+  auto s = app::make_state(c);
   auto& p = s.particles;
   p.grad_v[0][0] = -2.0;  // compressing
   p.grad_v[0][1] = +2.0;  // stretching

@@ -20,8 +20,8 @@ namespace {
 using namespace mpmx;
 
 struct Cut {
-  mpm::MpmConfig config;
-  mpm::RunOptions options;
+  app::MpmConfig config;
+  app::RunOptions options;
   std::string path, bytes;
 };
 
@@ -32,10 +32,10 @@ Cut cut_run(const std::string& name) {
   k.options.plot = false;
   k.options.out_dir = test::scratch_dir(name);
   k.options.stop_after = 2;
-  mpm::run_mpm(k.config, k.options);
+  app::run_mpm(k.config, k.options);
   k.options.stop_after = 0;
   k.options.resume = true;
-  k.path = mpm::checkpoint_path(k.options.out_dir);
+  k.path = app::checkpoint_path(k.options.out_dir);
   k.bytes = test::read_file(k.path);
   return k;
 }
@@ -45,7 +45,7 @@ void write(const std::string& path, const std::string& bytes) {
   f << bytes;
 }
 
-std::string deck_text(const mpm::MpmConfig& c) {
+std::string deck_text(const app::MpmConfig& c) {
   std::ostringstream ss;
   ss << c.deck;
   return ss.str();
@@ -65,7 +65,7 @@ std::string refusal(F&& f) {
 TEST(CheckpointDamage, EveryFlippedByteIsRefused) {
   const Cut k = cut_run("ckpt_flip");
   ASSERT_GT(k.bytes.size(), io::kCheckedHeaderBytes + 1000);
-  const auto kind = mpm::run_checkpoint_kind(deck_text(k.config), k.config.cells * k.config.per_cell);
+  const auto kind = app::run_checkpoint_kind(deck_text(k.config), k.config.cells * k.config.per_cell);
   EXPECT_NO_THROW(io::unframe(k.bytes, kind, k.path));
   // Every header byte, and a spread of payload bytes including the last, each flipped
   // in all 8 bits at once and in its lowest bit.
@@ -89,32 +89,32 @@ TEST(CheckpointDamage, FlippedByteStopsTheResumeWithItsOffset) {
     std::string b = k.bytes;
     b[i] = static_cast<char>(b[i] ^ 0x10);
     write(k.path, b);
-    const std::string why = refusal([&] { mpm::run_mpm(k.config, k.options); });
+    const std::string why = refusal([&] { app::run_mpm(k.config, k.options); });
     EXPECT_NE(why.find(fmt::format("checkpoint {}: byte ", k.path)), std::string::npos) << i << ": " << why;
   }
   // Undamaged, it resumes and completes.
   write(k.path, k.bytes);
-  const auto r = mpm::run_mpm(k.config, k.options);
+  const auto r = app::run_mpm(k.config, k.options);
   EXPECT_EQ(r.steps, 6);
 }
 
 TEST(CheckpointDamage, TruncationIsRefused) {
   const Cut k = cut_run("ckpt_truncate");
-  const auto kind = mpm::run_checkpoint_kind(deck_text(k.config), k.config.cells * k.config.per_cell);
+  const auto kind = app::run_checkpoint_kind(deck_text(k.config), k.config.cells * k.config.per_cell);
   for (std::size_t n : {std::size_t{0}, std::size_t{7}, io::kCheckedHeaderBytes - 1, io::kCheckedHeaderBytes,
                         k.bytes.size() / 3, k.bytes.size() - 1}) {
     const std::string why = refusal([&] { io::unframe(std::string_view(k.bytes).substr(0, n), kind, k.path); });
     EXPECT_NE(why.find("byte "), std::string::npos) << n;
   }
   write(k.path, k.bytes.substr(0, k.bytes.size() - 8));
-  EXPECT_NE(refusal([&] { mpm::run_mpm(k.config, k.options); }).find("truncated"), std::string::npos);
+  EXPECT_NE(refusal([&] { app::run_mpm(k.config, k.options); }).find("truncated"), std::string::npos);
 }
 
 TEST(CheckpointDamage, AnotherDeckIsRefused) {
   const Cut k = cut_run("ckpt_other_deck");
   auto other = k.config;
   other.deck.insert_or_assign("extra", 1);
-  EXPECT_NE(refusal([&] { mpm::run_mpm(other, k.options); }).find("another deck"), std::string::npos);
+  EXPECT_NE(refusal([&] { app::run_mpm(other, k.options); }).find("another deck"), std::string::npos);
 }
 
 // A well-framed checkpoint (valid checksums) whose step count is out of range: the
@@ -122,7 +122,7 @@ TEST(CheckpointDamage, AnotherDeckIsRefused) {
 TEST(CheckpointDamage, NegativeOrPastTheEndStepIsRefused) {
   const Cut k = cut_run("ckpt_step");
   const std::string text = deck_text(k.config);
-  const auto kind = mpm::run_checkpoint_kind(text, k.config.cells * k.config.per_cell);
+  const auto kind = app::run_checkpoint_kind(text, k.config.cells * k.config.per_cell);
   const std::string payload(io::unframe(k.bytes, kind, k.path));
   const std::size_t step_at = 8 + text.size() + 8;  // deck text (count + bytes), state magic
   std::int64_t step = 0;
@@ -132,7 +132,7 @@ TEST(CheckpointDamage, NegativeOrPastTheEndStepIsRefused) {
     std::string p = payload;
     std::memcpy(p.data() + step_at, &bad, sizeof bad);
     write(k.path, io::frame(kind, p));
-    const std::string why = refusal([&] { mpm::run_mpm(k.config, k.options); });
+    const std::string why = refusal([&] { app::run_mpm(k.config, k.options); });
     EXPECT_NE(why.find("step"), std::string::npos) << bad << ": " << why;
   }
 }

@@ -58,7 +58,7 @@ namespace {
 
 // Standard deviation of the stress of the points ahead of the shock (x > 22 nm) at the
 // last step: thermal noise of the 300 K boxes.
-double noise_ahead(const mpm::RunResult& r) {
+double noise_ahead(const app::RunResult& r) {
   const auto& p = r.state.particles;
   double s = 0, s2 = 0;
   int n = 0;

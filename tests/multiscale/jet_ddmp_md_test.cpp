@@ -84,11 +84,11 @@ TEST(J2Tiny, DdmpMdFollowsTheDirectMdJet) {
   const auto c = test::deck_with(test::example("J2_ddmp_md_20x10_1ppc_tiny.toml"), [&](toml::table& t) {
     t["reference"].as_table()->insert_or_assign("file", md);
   });
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   o.threads = 2;
-  const auto r = mpm::run_mpm_dim<2>(c, o);
+  const auto r = app::run_mpm_dim<2>(c, o);
   EXPECT_EQ(r.steps, 60);
   ASSERT_TRUE(std::isfinite(r.stress_vs_direct_md));
   // Measured 0.326 (1 point per cell, 108-atom boxes; the seed's 50 x 25 cells at 1 point

@@ -19,8 +19,8 @@ namespace {
 
 using namespace mpmx;
 
-mpm::MpmConfig impact_2d(double temperature, int steps, bool consistent = true) {
-  return io::read_mpm_deck_text(test::flyer_2d_deck(temperature, steps, consistent), "md_closure_2d");
+app::MpmConfig impact_2d(double temperature, int steps, bool consistent = true) {
+  return app::read_mpm_deck_text(test::flyer_2d_deck(temperature, steps, consistent), "md_closure_2d");
 }
 
 md::Mat3 gradient(double gxy, double gyx) {
@@ -33,8 +33,9 @@ md::Mat3 gradient(double gxy, double gyx) {
 
 TEST(MdClosure2d, RestingCrystalAtZeroKelvinHasNoStress) {
   auto c = impact_2d(0.0, 1);
-  c.material.md.threads = 1;
-  material::MdClosure<2> m(c.material.md);
+  auto md_cfg = test::closure_config(c);
+  md_cfg.threads = 1;
+  multiscale::MdClosure<2> m(md_cfg);
   mpm::Particles<2> p;
   p.resize(2);
   p.mass = {1.0, 1.0};
@@ -51,13 +52,14 @@ TEST(MdClosure2d, RestingCrystalAtZeroKelvinHasNoStress) {
 // turned by R.
 TEST(MdClosure2d, ShearedBoxMatchesADirectlyShearedSystem) {
   auto c = impact_2d(0.0, 1, false);
-  c.material.md.threads = 1;
+  auto md_cfg = test::closure_config(c);
+  md_cfg.threads = 1;
   const double rate = 0.02;  // 1/ps
-  md::System direct(md::fcc(3, 3, 3, material::MdClosure<2>(c.material.md).equilibrium().lattice_constant),
-                    md::Potential(c.material.md.potential));
+  md::System direct(md::fcc(3, 3, 3, multiscale::MdClosure<2>(md_cfg).equilibrium().lattice_constant),
+                    md::Potential(md_cfg.potential));
   direct.advance(100, gradient(rate, 0.0), 0.001);
   for (const bool lower : {false, true}) {
-    material::MdClosure<2> m(c.material.md);
+    multiscale::MdClosure<2> m(md_cfg);
     mpm::Particles<2> p;
     p.resize(1);
     p.mass = {1.0};
@@ -88,8 +90,9 @@ TEST(MdClosure2d, ShearedBoxMatchesADirectlyShearedSystem) {
 // has changed by exactly the continuum's work V sigma : D dt.
 TEST(MdClosure2d, EnergyConsistencyHoldsToRoundOffEachMacroStep) {
   auto c = impact_2d(100.0, 1, true);
-  c.material.md.threads = 1;
-  material::MdClosure<2> m(c.material.md);
+  auto md_cfg = test::closure_config(c);
+  md_cfg.threads = 1;
+  multiscale::MdClosure<2> m(md_cfg);
   mpm::Particles<2> p;
   p.resize(1);
   p.mass = {1.0};
@@ -126,17 +129,17 @@ TEST(MdClosure2d, SameParticlesOnOneAndTwoThreadsAndResumedBitForBit) {
     if (one.state.particles.x[0][q] < 0.9) v_flyer = std::max(v_flyer, one.state.particles.v[0][q]);
   EXPECT_LT(v_flyer, 0.5);
 
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   o.threads = 2;
   o.out_dir = test::scratch_dir("md_closure_2d_parts");
   o.stop_after = 2;
-  const auto first = mpm::run_mpm_dim<2>(c, o);
+  const auto first = app::run_mpm_dim<2>(c, o);
   EXPECT_TRUE(first.interrupted);
   o.stop_after = 0;
   o.resume = true;
-  const auto rest = mpm::run_mpm_dim<2>(c, o);
+  const auto rest = app::run_mpm_dim<2>(c, o);
   EXPECT_EQ(rest.steps, 4);
   test::expect_same_particles(two.state.particles, rest.state.particles);
 }

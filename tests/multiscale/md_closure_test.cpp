@@ -37,8 +37,9 @@ TEST(Equilibrium, CopperLatticeAndModulus) {
 
 TEST(MdClosure, UnstrainedPointAtZeroKelvinHasZeroStress) {
   auto c = test::tiny_bar(4, 3, 2);
-  c.material.md.threads = 1;
-  material::MdClosure<1> m(c.material.md);
+  auto md_cfg = test::closure_config(c);
+  md_cfg.threads = 1;
+  multiscale::MdClosure<1> m(md_cfg);
   mpm::Particles<1> p;
   p.resize(2);
   p.strain[0] = {0.0, -0.01};
@@ -63,12 +64,12 @@ TEST(MdClosure, UnstrainedPointAtZeroKelvinHasZeroStress) {
 
 TEST(MdClosure, SameResultOnOneAndTwoThreads) {
   const auto c = test::tiny_bar(8, 2, 4, 300.0);
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.threads = 1;
-  const auto one = mpm::run_mpm(c, o);
+  const auto one = app::run_mpm(c, o);
   o.threads = 2;
-  const auto two = mpm::run_mpm(c, o);
+  const auto two = app::run_mpm(c, o);
   EXPECT_EQ(one.threads, 1);
   EXPECT_EQ(two.threads, 2);
   expect_same_particles(one.state.particles, two.state.particles);
@@ -77,51 +78,51 @@ TEST(MdClosure, SameResultOnOneAndTwoThreads) {
 
 TEST(MdClosure, ResumedRunEqualsUninterruptedRun) {
   const auto c = test::tiny_bar(6, 2, 6, 300.0);
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   o.out_dir = test::scratch_dir("whole");
-  const auto whole = mpm::run_mpm(c, o);
+  const auto whole = app::run_mpm(c, o);
   o.out_dir = test::scratch_dir("parts");
   o.stop_after = 2;
-  const auto first = mpm::run_mpm(c, o);
+  const auto first = app::run_mpm(c, o);
   EXPECT_TRUE(first.interrupted);
   EXPECT_EQ(first.steps, 2);
   o.stop_after = 0;
   o.resume = true;
-  const auto rest = mpm::run_mpm(c, o);
+  const auto rest = app::run_mpm(c, o);
   EXPECT_FALSE(rest.interrupted);
   EXPECT_EQ(rest.steps, 6);
   expect_same_particles(whole.state.particles, rest.state.particles);
   EXPECT_EQ(whole.md_atom_steps, rest.md_atom_steps);
-  EXPECT_FALSE(std::filesystem::exists(mpm::checkpoint_path(o.out_dir)));  // removed once complete
+  EXPECT_FALSE(std::filesystem::exists(app::checkpoint_path(o.out_dir)));  // removed once complete
   // A changed deck does not resume.
   o.out_dir = test::scratch_dir("changed");
   o.resume = false;
   o.stop_after = 1;
-  mpm::run_mpm(c, o);
+  app::run_mpm(c, o);
   auto other = c;
   other.deck.insert_or_assign("extra", 1);
   o.resume = true;
   o.stop_after = 0;
-  EXPECT_THROW(mpm::run_mpm(other, o), InputError);
+  EXPECT_THROW(app::run_mpm(other, o), InputError);
 }
 
 TEST(MdClosure, ResumedTablesEqualUninterruptedTables) {
   auto c = test::tiny_bar(6, 2, 6);
   c.output_every = 1;
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   const std::string whole = test::scratch_dir("tables_whole"), parts = test::scratch_dir("tables_parts");
   o.out_dir = whole;
-  mpm::run_mpm(c, o);
+  app::run_mpm(c, o);
   o.out_dir = parts;
   o.stop_after = 3;
-  mpm::run_mpm(c, o);
+  app::run_mpm(c, o);
   o.stop_after = 0;
   o.resume = true;
-  mpm::run_mpm(c, o);
+  app::run_mpm(c, o);
   for (const char* f : {"particles.csv", "nodes.csv", "energy.csv"}) {
     const std::string a = test::read_file(whole + "/" + f), b = test::read_file(parts + "/" + f);
     EXPECT_FALSE(a.empty()) << f;
@@ -131,9 +132,9 @@ TEST(MdClosure, ResumedTablesEqualUninterruptedTables) {
 
 TEST(MdClosure, MomentumBalancesTheBoundaryImpulse) {
   const auto c = test::tiny_bar(10, 2, 5);
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
-  const auto r = mpm::run_mpm(c, o);
+  const auto r = app::run_mpm(c, o);
   EXPECT_GT(std::abs(r.boundary_impulse), 0.0);  // the compressed end pushes on its wall
   EXPECT_LT(r.momentum_error(), 1e-12 * r.momentum_scale + 1e-14);
 }
@@ -174,11 +175,11 @@ TEST(DirectMdReference, ComparedTimesMustBeInTheTable) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no record at t = 0.3"), std::string::npos) << e.what();
   }
-  mpm::RunOptions o;
+  app::RunOptions o;
   o.quiet = true;
   o.plot = false;
   o.out_dir = test::scratch_dir("direct_md_run");
-  const auto r = mpm::run_mpm(with_times(toml::array{0.1, 0.2}), o);
+  const auto r = app::run_mpm(with_times(toml::array{0.1, 0.2}), o);
   EXPECT_GT(r.stress_vs_direct_md, 0.0);
   EXPECT_LT(r.stress_vs_direct_md, 1.0);
   const std::string json = test::read_file(o.out_dir + "/run.json");
@@ -203,13 +204,13 @@ namespace {
 // deck it compares with: the same strain, and a grid spanning the strained bar.
 TEST(HDecks, ValidAndDescribeTheirDirectMdBar) {
   namespace fs = std::filesystem;
-  const auto cu = material::md_closure_properties(test::copper_spec(), *units::unit_system("nm_ps_GPa"));
+  const auto cu = multiscale::md_closure_properties(test::copper_spec(), *units::unit_system("nm_ps_GPa"));
   const double a0 = cu.equilibrium.lattice_constant;
   int n = 0;
   for (const auto& e : fs::directory_iterator(fs::path(MPMX_SOURCE_DIR) / "examples")) {
     const std::string name = e.path().filename().string();
     if (name[0] != 'H' || name.find("direct_md") != std::string::npos) continue;
-    const auto c = io::read_mpm_deck(e.path().string());
+    const auto c = app::read_mpm_deck(e.path().string());
     ASSERT_EQ(c.reference.name, "direct_md") << name;
     const std::string md_deck = fs::path(c.reference.file).parent_path().filename().string() + ".toml";
     auto deck = io::Deck::from_file((fs::path(MPMX_SOURCE_DIR) / "examples" / md_deck).string());

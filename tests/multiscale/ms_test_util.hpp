@@ -11,11 +11,18 @@
 
 #include "../md/md_test_util.hpp"
 #include "../mpm/mpm_test_util.hpp"
+#include "mpmx/app/mpm/materials.hpp"
+#include "mpmx/multiscale/md_closure_model.hpp"
 
 namespace mpmx::test {
 
 // The H2 small bar with `points` points of 4 x cells^3 atoms for `steps` steps of 0.1 ps.
-inline mpm::MpmConfig tiny_bar(int points, int cells, int steps, double temperature = 0.0) {
+// The MD closure's configuration of a deck whose material is md_closure.
+inline multiscale::MdClosureConfig closure_config(const app::MpmConfig& c) {
+  return app::model_as<multiscale::MdClosureModel>(*c.material.spec)->md;
+}
+
+inline app::MpmConfig tiny_bar(int points, int cells, int steps, double temperature = 0.0) {
   return deck_with(example("H2_strong_0K_256_small.toml"), [&](toml::table& t) {
     t["grid"].as_table()->insert_or_assign("cells", points);
     auto* md = t["material"]["md"].as_table();

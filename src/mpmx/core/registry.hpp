@@ -40,6 +40,12 @@ struct Registry {
     return with_impl<F, Otherwise, Entries...>(name, std::forward<F>(f), std::forward<Otherwise>(otherwise));
   }
 
+  // f.template operator()<E>() for the k-th entry (k < sizeof...(Entries)).
+  template <class F>
+  static decltype(auto) at(std::size_t k, F&& f) {
+    return at_impl<F, Entries...>(k, std::forward<F>(f));
+  }
+
   // f.template operator()<E>() for every entry, in list order.
   template <class F>
   static void each(F&& f) {
@@ -54,6 +60,15 @@ struct Registry {
       return with_impl<F, Otherwise, Rest...>(name, std::forward<F>(f), std::forward<Otherwise>(otherwise));
     else
       return otherwise();
+  }
+  template <class F, class E, class... Rest>
+  static decltype(auto) at_impl(std::size_t k, F&& f) {
+    if constexpr (sizeof...(Rest) == 0) {
+      return f.template operator()<E>();
+    } else {
+      if (k == 0) return f.template operator()<E>();
+      return at_impl<F, Rest...>(k - 1, std::forward<F>(f));
+    }
   }
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -161,19 +162,17 @@ Body read_body(Section s, int dim, const material::Context& ctx) {
   return b;
 }
 
-MpmConfig read(Deck& deck) {
-  MpmConfig c;
-  Section root = deck.root();
-  c.deck = deck.table();
-  c.deck_path = deck.name();
-
+// [case]: the id, title, seed section and units.
+void read_case(Section& root, MpmConfig& c) {
   Section cs = root.table("case");
   c.id = cs.string("id");
   c.title = cs.string("title", "");
   c.seed = cs.string("seed", "");
   c.units = cs.string("units", "consistent units");
-  const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
+}
 
+// [grid]: 1-D lower, upper, cells; 2-D and 3-D an array each.
+void read_grid(Section& root, MpmConfig& c) {
   Section g = root.table("grid");
   c.dim = g.integer_int("dim", 1, 1, 3);
   const int dim = c.dim;
@@ -193,7 +192,11 @@ MpmConfig read(Deck& deck) {
     for (int d = 0; d < dim && d < static_cast<int>(n.size()); ++d) c.cells_all[d] = static_cast<int>(n[d]);
     c.lower = c.lower_all[0], c.upper = c.upper_all[0], c.cells = c.cells_all[0];
   }
+}
 
+// [particles]: per cell along each axis, and whether they move.
+void read_particles(Section& root, MpmConfig& c) {
+  const int dim = c.dim;
   Section pt = root.table("particles");
   if (dim == 1 || !pt.has("per_cell") || pt.value_text("per_cell").find('[') == std::string::npos) {
     const int n = pt.integer_int("per_cell", 2, 1, 1'000'000);
@@ -205,12 +208,21 @@ MpmConfig read(Deck& deck) {
   }
   c.per_cell = c.per_cell_all[0];
   c.move = pt.boolean("move", true);
+}
+
+// [[body]] regions (2-D, 3-D).
+void read_bodies(Section& root, MpmConfig& c, const std::string& deck_dir) {
+  const int dim = c.dim;
   if (dim > 1)
     for (auto& b : root.tables("body"))
       c.bodies.push_back(read_body(b, dim, material_context(dim, deck_dir, c.units)));
   else if (root.has("body"))
     root.check(false, "body", "1-D decks fill the grid; [[body]] regions are for 2-D and 3-D");
+}
 
+// [scheme]: the shape scheme, its sub-points, the velocity update, DDMP's alpha.
+void read_scheme(Section& root, MpmConfig& c) {
+  const int dim = c.dim;
   Section sc = root.table("scheme");
   const std::string name = sc.choice("name", mpm::scheme_names());
   c.scheme.scheme = mpm::scheme_from_name(name);
@@ -237,7 +249,11 @@ MpmConfig read(Deck& deck) {
                                                                                      : mpm::DdmpAlpha::axis_product;
   else if (sc.has("alpha"))
     sc.check(false, "alpha", "only ddmp and ddmp_subpoints in 2-D and 3-D choose their alpha");
+}
 
+// [material], and each body's own: one kind (solid or gas) for the whole deck.
+void read_materials(Section& root, MpmConfig& c, const std::string& deck_dir) {
+  const int dim = c.dim;
   // [material] is every point's law unless its body names its own; it may be left out
   // when every body does.
   const bool bodies_own = !c.bodies.empty() && std::all_of(c.bodies.begin(), c.bodies.end(), [](const Body& b) {
@@ -272,8 +288,11 @@ MpmConfig read(Deck& deck) {
     if (const auto* gas = model_as<material::IdealGasModel>(*mat.spec)) mat.sound_speed = gas->c, mat.gamma = gas->gamma;
     if (const auto* md = model_as<multiscale::MdClosureModel>(*mat.spec)) mat.youngs_modulus = md->c11;
   }
+}
 
-  Section in = root.optional_table("initial");
+// [initial]: velocity always; strain (solids) or pressure (gases).
+void read_initial(Section& in, MpmConfig& c) {
+  const auto& mat = c.material;
   c.velocity = read_profile(in.optional_table("velocity"), 0.0, c);
   const bool solid = mat.solid();
   if (solid) {
@@ -285,7 +304,11 @@ MpmConfig read(Deck& deck) {
     c.pressure = read_profile(in.optional_table("pressure"), p_default, c);
     if (in.has("strain")) in.check(false, "strain", "a gas takes [initial.pressure], not strain");
   }
+}
 
+// [boundary]: each face's condition.
+void read_boundary(Section& root, MpmConfig& c) {
+  const int dim = c.dim;
   Section b = root.optional_table("boundary");
   if (dim == 1) {
     c.boundary.left() = read_side(b.optional_table("left"), 1);
@@ -293,7 +316,11 @@ MpmConfig read(Deck& deck) {
   } else {
     for (int f = 0; f < 2 * dim; ++f) c.boundary.face[f] = read_side(b.optional_table(mpm::face_name(f)), dim);
   }
+}
 
+// [viscosity] (ch. 6; the tensor form eqs. 7.8-7.10) and [mass_distribution] (eqs. 7.4-7.7).
+void read_viscosity(Section& root, MpmConfig& c) {
+  const int dim = c.dim;
   Section v = root.optional_table("viscosity");
   c.viscosity = v.number("linear", 0.0);
   v.non_negative("linear", c.viscosity);
@@ -311,8 +338,11 @@ MpmConfig read(Deck& deck) {
   c.mass_distribution = md.boolean("on", dim > 1);
   c.mass_fraction = md.number("fraction", 0.04);
   md.check(c.mass_fraction >= 0.0 && c.mass_fraction < 1.0, "fraction", "must lie in [0, 1) (of a point's mass)");
+}
 
-  Section t = root.table("time");
+// [time]: dt (or "cfl" in 2-D and 3-D) and end; returns cfl_limit.
+double read_time(Section& t, MpmConfig& c) {
+  const int dim = c.dim;
   if (dim > 1 && t.has("dt") && t.value_text("dt").find("cfl") != std::string::npos) {
     c.cfl_dt = t.choice("dt", {"cfl"}) == "cfl";
     c.cfl = t.number("cfl", 0.5);
@@ -327,18 +357,28 @@ MpmConfig read(Deck& deck) {
   const double cfl_limit = t.number("cfl_limit", 1.0);
   t.positive("cfl_limit", cfl_limit);
 
+  return cfl_limit;
+}
+
+// [output]: record times, every, the tables, figures and VTK files.
+void read_output(Section& root, MpmConfig& c) {
+  const int dim = c.dim;
   Section o = root.optional_table("output");
   c.output_times = o.numbers("times", {});
   for (double x : c.output_times)
     o.check(x >= 0.0 && x <= c.end * (1 + 1e-12), "times",
             fmt::format("every time must lie in [0, time.end = {}]", c.end));
-  c.output_every = o.integer("every", 0);
-  o.check(c.output_every >= 0, "every", "must not be negative");
+  c.output_every = o.integer("every", 0, 0, std::numeric_limits<std::int64_t>::max());
   c.write_nodes = o.boolean("nodes", true);
   c.write_particles = o.boolean("particles", true);
   c.plot = o.boolean("plot", true);
   c.write_vtk = o.boolean("vtk", dim > 1);
+}
 
+// [manufactured]: the solution that drives the run (VALIDATION.md N4).
+void read_manufactured(Section& root, Section& in, MpmConfig& c) {
+  const int dim = c.dim;
+  const auto& mat = c.material;
   Section mf = root.optional_table("manufactured");
   if (mf.present()) {
     c.manufactured.on = true;
@@ -349,11 +389,15 @@ MpmConfig read(Deck& deck) {
              "must lie in (0, 1 / (2 pi)): the stretch 1 + 2 pi A cos(2 pi X) sin(c pi t) stays positive");
     mf.positive("speed", c.manufactured.speed);
     if (dim == 1) mf.error("the manufactured solution drives 2-D and 3-D decks");
-    if (mat.model != "linear_elastic" || !c.bodies.empty())
+    if (!mat.spec || !model_as<material::LinearElasticModel>(*mat.spec) || !c.bodies.empty())
       mf.error("the manufactured solution is exact for one linear_elastic body filling the grid (no [[body]])");
     if (in.has("velocity")) in.check(false, "velocity", "the manufactured solution sets the initial velocity");
   }
+}
 
+// [reference] and [convergence].
+void read_reference(Section& root, MpmConfig& c, const std::string& deck_dir) {
+  const int dim = c.dim;
   Section r = root.optional_table("reference");
   // The entry of the name (app/mpm/references.hpp) reads its own keys.
   if (r.present()) {
@@ -378,7 +422,12 @@ MpmConfig read(Deck& deck) {
   c.convergence_levels = cv.integer_int("levels", 1, 1, 8);
   if (c.convergence_levels > 1 && c.reference.name.empty())
     cv.check(false, "levels", "a convergence study needs a [reference] to measure the error against");
+}
 
+// The checks that need several tables: the CFL limit, whole steps, the law's own.
+void check_time_step(Section& t, MpmConfig& c, double cfl_limit) {
+  const int dim = c.dim;
+  const auto& mat = c.material;
   // Checks that need several sections.
   double dx_min = c.dx();
   for (int d = 1; d < dim; ++d) dx_min = std::min(dx_min, (c.upper_all[d] - c.lower_all[d]) / c.cells_all[d]);
@@ -411,6 +460,30 @@ MpmConfig read(Deck& deck) {
     if (const std::string why = mat.spec ? mat.spec->time_step_problem(c.dt) : ""; !why.empty())
       t.check(false, "dt", why);
   }
+}
+
+MpmConfig read(Deck& deck) {
+  MpmConfig c;
+  Section root = deck.root();
+  c.deck = deck.table();
+  c.deck_path = deck.name();
+  const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
+  read_case(root, c);
+  read_grid(root, c);
+  read_particles(root, c);
+  read_bodies(root, c, deck_dir);
+  read_scheme(root, c);
+  read_materials(root, c, deck_dir);
+  Section in = root.optional_table("initial");
+  read_initial(in, c);
+  read_boundary(root, c);
+  read_viscosity(root, c);
+  Section t = root.table("time");
+  const double cfl_limit = read_time(t, c);
+  read_output(root, c);
+  read_manufactured(root, in, c);
+  read_reference(root, c, deck_dir);
+  check_time_step(t, c, cfl_limit);
   deck.finish();
   return c;
 }

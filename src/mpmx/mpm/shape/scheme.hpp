@@ -16,9 +16,10 @@
 
 namespace mpmx::mpm {
 
+// A scheme's id: its place in the list of shape/schemes.hpp (one file per scheme).
 enum class Scheme { mpm, ugimp, cpgimp, cpdi, ddmp, ddmp_subpoints };
 
-// The registry of schemes: name and what the step needs to know of each.
+// What the step needs to know of each scheme (from its entry).
 struct SchemeInfo {
   Scheme scheme;
   std::string name;
