@@ -2,7 +2,7 @@
 // Checkpoints of a continuum run: the whole state (particles, tallies, time, the
 // material's per-point state such as every MD box) plus whatever the run loop needs to
 // carry on, in one binary file written atomically. A run resumed from it continues
-// bit-for-bit (tests/multiscale/checkpoint_test.cpp).
+// bit-for-bit (tests/app/mpm/interrupt_test.cpp, tests/app/mpm/mpm_run_nd_test.cpp).
 #include <cstdint>
 #include <iosfwd>
 #include <string>

@@ -2,7 +2,7 @@
 // S4 of VALIDATION.md: momentum and energy conservation of the step.
 #include <gtest/gtest.h>
 
-#include "mpm_test_util.hpp"
+#include "mpm/mpm_test_util.hpp"
 
 using namespace mpmx;
 

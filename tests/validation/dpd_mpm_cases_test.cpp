@@ -25,7 +25,7 @@
 
 #include <fmt/format.h>
 
-#include "../md/md_test_util.hpp"
+#include "md/md_test_util.hpp"
 #include "mpmx/dpd/config.hpp"
 #include "mpmx/dpd/elastic.hpp"
 #include "mpmx/dpd/run.hpp"

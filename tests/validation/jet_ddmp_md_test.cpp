@@ -13,7 +13,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/io/vtk.hpp"
 #include "mpmx/reference/jet_history.hpp"
-#include "ms_test_util.hpp"
+#include "multiscale/ms_test_util.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpmx;

@@ -2,7 +2,7 @@
 // A3: the small shock's front runs at the sound speed (ADMPM measured 1.039 c).
 #include <gtest/gtest.h>
 
-#include "mpm_test_util.hpp"
+#include "mpm/mpm_test_util.hpp"
 
 using namespace mpmx;
 

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mpm_test_util.hpp"
+#include "mpm/mpm_test_util.hpp"
 
 using namespace mpmx;
 

@@ -5,7 +5,7 @@
 
 #include <map>
 
-#include "mpm_test_util.hpp"
+#include "mpm/mpm_test_util.hpp"
 
 using namespace mpmx;
 

@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "../md/md_test_util.hpp"
-#include "mpm_test_util.hpp"
+#include "md/md_test_util.hpp"
+#include "mpm/mpm_test_util.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/app/mpm/budget.hpp"

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "ms_test_util.hpp"
+#include "multiscale/ms_test_util.hpp"
 
 namespace {
 

@@ -11,7 +11,7 @@
 
 #include "mpmx/material/cubic_elastic.hpp"
 #include "mpmx/mpm/tensor_viscosity.hpp"
-#include "point_set.hpp"
+#include "material/point_set.hpp"
 
 namespace mpmx::mpm {
 namespace {

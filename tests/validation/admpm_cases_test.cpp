@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "mpm_test_util.hpp"
+#include "mpm/mpm_test_util.hpp"
 
 using namespace mpmx;
 

@@ -13,7 +13,7 @@
 #include "mpmx/core/exit_codes.hpp"
 #include "mpmx/io/checked_file.hpp"
 #include "mpmx/app/mpm/checkpoint.hpp"
-#include "ms_test_util.hpp"
+#include "multiscale/ms_test_util.hpp"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "mpm_test_util.hpp"
+#include "mpm/mpm_test_util.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/app/mpm/materials.hpp"
 #include "mpmx/mpm/points.hpp"
