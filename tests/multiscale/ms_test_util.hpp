@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <variant>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -20,6 +21,14 @@ namespace mpmx::test {
 // The MD closure's configuration of a deck whose material is md_closure.
 inline multiscale::MdClosureConfig closure_config(const app::MpmConfig& c) {
   return app::model_as<multiscale::MdClosureModel>(*c.material.spec)->md;
+}
+
+// A figure the run's md_closure reports (its Subscale): md.atom_steps_unshared, ...
+template <class Result>
+std::variant<std::int64_t, double> closure_figure(const Result& r, const std::string& key) {
+  for (const auto& [k, v] : r.state.material->subscale()->figures())
+    if (k == key) return v;
+  return std::nan("");
 }
 
 inline app::MpmConfig tiny_bar(int points, int cells, int steps, double temperature = 0.0) {

@@ -39,6 +39,27 @@ void System::refresh() {
   valid_ = true;
 }
 
+void System::compact() {
+  builds_ += nb_.builds;
+  nb_ = Neighbors{};
+  work_ = ForceWork{};
+}
+
+std::size_t System::bytes() const {
+  std::size_t b = sizeof(*this);
+  for (const auto* v : {&atoms_.x, &atoms_.y, &atoms_.z, &atoms_.vx, &atoms_.vy, &atoms_.vz, &atoms_.fx, &atoms_.fy,
+                        &atoms_.fz})
+    b += v->capacity() * sizeof(double);
+  b += atoms_.type.capacity() * sizeof(int) + atoms_.id.capacity() * sizeof(std::int64_t);
+  b += mass_.capacity() * sizeof(double);
+  b += nb_.x.capacity() * 24 + nb_.xyz.capacity() * 8 + nb_.type.capacity() * 4 + nb_.owner.capacity() * 4 +
+       nb_.n1.capacity() * 3 + nb_.first.capacity() * 4 + nb_.list.capacity() * 4;
+  b += (work_.fx.capacity() + work_.fy.capacity() + work_.fz.capacity() + work_.rho.capacity() +
+        work_.fp.capacity() + work_.energy_atom.capacity() + work_.virial_atom.capacity()) *
+       sizeof(double);
+  return b;
+}
+
 void System::rebuild() {
   box_.reduce_tilt();
   const int nt = opt_.threads;
@@ -140,6 +161,7 @@ void System::advance(int nsteps, const Mat3& grad, double dt) {
   if (!(dt > 0)) throw InputError(fmt::format("MD time step dt = {}: must be positive", dt));
   const Mat3 g = is_upper_triangular(grad) ? grad : upper_triangular(grad);  // eq. 5.20
   if (!valid_) refresh();
+  else if (!nb_.built()) rebuild();  // after compact(): the forces are the stored ones
   g_ = g;
   const bool affine = opt_.deformation == Deformation::affine;
   const bool deforming = std::any_of(g.begin(), g.end(), [](double v) { return v != 0.0; });
@@ -277,11 +299,16 @@ void System::save(std::ostream& o) const {
   put_vec(o, atoms_.type);
   put_vec(o, atoms_.id);
   // The neighbour list's build state, so a restart rebuilds the very same list (same
-  // pairs, same order) and continues bit-for-bit.
-  const std::uint8_t built = nb_.built() && nb_.nlocal == static_cast<int>(n);
+  // pairs, same order) and continues bit-for-bit; a compacted box keeps its forces and
+  // tallies instead (its next advance builds a list afresh).
+  const bool compacted = valid_ && !nb_.built();
+  const std::uint8_t built = compacted ? 2 : nb_.built() && nb_.nlocal == static_cast<int>(n);
   put(o, built);
-  put(o, nb_.builds);
-  if (built) {
+  put(o, neighbor_builds());
+  if (compacted) {
+    for (auto* v : {&atoms_.fx, &atoms_.fy, &atoms_.fz}) put_vec(o, *v);
+    put(o, sums_);
+  } else if (built) {
     put(o, nb_.box_at_build());
     put_vec(o, nb_.x_at_build());
     put_vec(o, nb_.y_at_build());
@@ -354,6 +381,18 @@ System System::load(std::istream& in, Potential potential, SystemOptions options
   s.g_ = g;
   s.rng_.set_state(rng);
   s.walls_ = walls;
+  if (built == 2) {  // compacted: the stored forces and tallies
+    for (auto* v : {&s.atoms_.fx, &s.atoms_.fy, &s.atoms_.fz}) get_vec(in, *v, n);
+    get(in, s.sums_);
+    for (const auto* v : {&s.atoms_.fx, &s.atoms_.fy, &s.atoms_.fz})
+      for (double x : *v)
+        if (!std::isfinite(x)) throw InputError("MD checkpoint: a non-finite atom force");
+    s.nb_ = Neighbors{};  // the constructor's list is of its own copy of the atoms
+    s.work_ = ForceWork{};
+    s.builds_ = builds;
+    s.valid_ = true;
+    return s;
+  }
   if (!built) {
     s.refresh();
     return s;

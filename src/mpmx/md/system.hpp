@@ -106,7 +106,7 @@ class System {
   const SystemOptions& options() const { return opt_; }
   std::int64_t step() const { return step_; }
   double time() const { return time_; }
-  std::int64_t neighbor_builds() const { return nb_.builds; }
+  std::int64_t neighbor_builds() const { return builds_ + nb_.builds; }
   const Mat3& gradient() const { return g_; }
   void set_walls(const Walls& w) { walls_ = w; }
   // Atoms with id <= max_id are held at rest (a rigid piston, sec. 7.1): their
@@ -117,6 +117,12 @@ class System {
   const Walls& walls() const { return walls_; }
   // Forces for the current state (recomputed if atoms or box were edited).
   void refresh();
+  // Keeps only what the next advance needs (atoms with their forces, box, stream,
+  // tallies): the neighbour list and force buffers are freed, rebuilt when it advances.
+  // The multiscale boxes between macro steps (about 90 bytes per atom).
+  void compact();
+  // Bytes this box holds now (its arrays' capacity).
+  std::size_t bytes() const;
 
   // Atoms with positions in the fundamental box and the velocities of those images.
   Atoms snapshot() const;
@@ -146,6 +152,7 @@ class System {
   std::int64_t frozen_ids_ = 0;
   std::int64_t step_ = 0;
   double time_ = 0;
+  std::int64_t builds_ = 0;  // neighbour-list builds before the last compact()
   bool valid_ = false;
 };
 

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <cstdlib>
 #include <istream>
 #include <limits>
@@ -37,9 +38,9 @@ MdClosureProperties properties(const md::FccEquilibrium& eq, const units::UnitSy
   return r;
 }
 
-// The record a point's box returns to every rank: its stress (GPa), its box and its
-// neighbour-list builds.
-constexpr int kRecord = 16;
+// The record a group's box returns to every rank: its stress (GPa), its box, its
+// neighbour-list builds and eq. 7.11's energy in and short.
+constexpr int kGroupRecord = 18;
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -99,23 +100,44 @@ md::SystemOptions MdClosure<Dim>::box_options() const {
 }
 
 template <int Dim>
+double MdClosure<Dim>::audit_rel_rms() const {
+  return audit_samples_ > 0 && audit_s2_ > 0 ? std::sqrt(audit_d2_ / audit_s2_) : std::nan("");
+}
+
+template <int Dim>
+void MdClosure<Dim>::spread_groups(const std::vector<double>& cost) {
+  const Spread s = Spread::balanced(cost);
+  owner_.assign(cost.size(), 0);
+  for (int r = 0; r < s.ranks(); ++r)
+    for (std::size_t g = s.start(r); g < s.start(r + 1); ++g) owner_[g] = r;
+}
+
+template <int Dim>
 void MdClosure<Dim>::initialize(const Points<Dim>& p) {
-  spread_ = multiscale::Spread(p.size());
-  const std::size_t first = spread_.begin(), m = spread_.count();
+  const std::size_t n = p.size();
   if (const char* v = std::getenv("MPMX_TEST_NAN_POINT")) nan_point_ = std::strtoull(v, nullptr, 10);
+  groups_ = BoxGroups(std::vector<double>(p.strain[0], p.strain[0] + n), cfg_.share);
+  const std::size_t G = groups_.groups();
+  spread_groups(std::vector<double>(G, 1.0));
   const double a0 = props_.equilibrium.lattice_constant;
   const auto t0 = std::chrono::steady_clock::now();
-  // Each point's box built on the threads (section 6.2), then kept in point order.
-  std::vector<std::optional<md::System>> built(m);
+  // Each group's box built on the threads (section 6.2) from its first point's strain
+  // and random stream: one group per point gives every point the box it had alone.
+  std::vector<std::size_t> todo;
+  for (std::size_t g = 0; g < G; ++g)
+    if (mine(g)) todo.push_back(g);
+  boxes_.clear();
+  boxes_.resize(G);
   std::optional<ranks::Failure> failed;
   try {
-    batch_.for_each(m, [&](std::size_t k) {
-      const std::size_t q = first + k;
+    batch_.for_each(todo.size(), [&](std::size_t k) {
+      const std::size_t g = todo[k], q = groups_.members(g).front();
       try {
         md::System box(md::fcc(cfg_.cells, cfg_.cells, cfg_.cells, a0, p.strain[0][q]), pot_, box_options());
         if (cfg_.temperature > 0) box.thermalize(cfg_.temperature, cfg_.seed, q);
         box.advance(static_cast<int>(cfg_.relax_steps), cfg_.dt);  // zero strain rate
-        built[k].emplace(std::move(box));
+        box.compact();
+        boxes_[g] = std::make_unique<md::System>(std::move(box));
       } catch (const std::exception&) {  // the same kind of error, naming the point
         ranks::Failure f = ranks::current_failure();
         f.message = fmt::format("the MD box of material point {}: {}", q, f.message);
@@ -126,139 +148,274 @@ void MdClosure<Dim>::initialize(const Points<Dim>& p) {
     failed = ranks::current_failure();
     failed->message = fmt::format("{}building {}", where(), failed->message);
   }
-  boxes_.clear();
-  boxes_.reserve(m);
-  stress_.assign(m, md::Mat3{});
-  if (!failed)
-    for (std::size_t k = 0; k < m; ++k) {
-      boxes_.push_back(std::move(*built[k]));
-      stress_[k] = boxes_[k].stress_gpa();
-    }
-  gradients_.assign(m, md::Mat3{});
-  box_seconds_.assign(m, 0.0);
-  rotation_.assign(p.size(), as_array(Mat3d::Identity()));
+  if (failed) {
+    boxes_.clear();
+    boxes_.resize(G);
+  }
+  stress_.assign(G, md::Mat3{});
+  for (std::size_t g = 0; g < G; ++g)
+    if (boxes_[g]) stress_[g] = boxes_[g]->stress_gpa();
+  shape_.assign(G, {});
+  group_seconds_.assign(G, 0.0);
+  rotation_.assign(n, as_array(Mat3d::Identity()));
+  audits_.clear();
+  if (!failed) start_audits(groups_.draw_auditors(0));
   md_seconds_ += seconds_since(t0);
-  publish(p, failed, false, 0.0);
-  atom_steps_ = static_cast<std::int64_t>(p.size()) * atoms_per_point() * cfg_.relax_steps;
+  publish(p, failed, false, 0.0, {}, {}, {});
+  atom_steps_ = static_cast<std::int64_t>(G) * atoms_per_point() * cfg_.relax_steps;
+  atom_steps_unshared_ = static_cast<std::int64_t>(n) * atoms_per_point() * cfg_.relax_steps;
+}
+
+// New auditors' private boxes start as copies of their groups' boxes.
+template <int Dim>
+void MdClosure<Dim>::start_audits(const std::vector<std::size_t>& points) {
+  for (std::size_t q : points) {
+    const std::size_t g = groups_.group_of(q);
+    if (!mine(g)) continue;
+    audits_.insert_or_assign(q, *boxes_[g]);
+    audit_stress_[q] = stress_[g];
+  }
+}
+
+template <int Dim>
+void MdClosure<Dim>::apply_split(const BoxGroups::Split& split) {
+  for (std::size_t q : split.dropped) audits_.erase(q), audit_stress_.erase(q);
+  const std::size_t G = groups_.groups();
+  boxes_.resize(G);
+  owner_.resize(G, 0);
+  stress_.resize(G);
+  shape_.resize(G);
+  group_seconds_.resize(G, 0.0);
+  for (const auto& c : split.clones) {  // a new group runs where its parent did, from a copy
+    owner_[c.to] = owner_[c.from];
+    stress_[c.to] = stress_[c.from];
+    shape_[c.to] = shape_[c.from];
+    if (mine(c.from)) boxes_[c.to] = std::make_unique<md::System>(*boxes_[c.from]);
+  }
+}
+
+template <int Dim>
+double MdClosure<Dim>::power_of(const Points<Dim>& p, std::size_t q, const md::Mat3& box_stress) const {
+  // The stress the continuum used this step on the point (the box's turned by R, plus
+  // the tensor viscous stress where it is on; GPa) over the rate of deformation.
+  const Mat3d R = as_matrix(rotation_[q]);
+  Mat3d sigma = R * as_matrix(box_stress) * R.transpose();
+  Mat3d L = Mat3d::Zero();
+  for (int a = 0; a < Dim; ++a)
+    for (int b = 0; b < Dim; ++b) {
+      if (p.viscous[a * Dim + b]) sigma(a, b) += p.viscous[a * Dim + b][q] * cfg_.units.stress_GPa;
+      L(a, b) = p.L(q, a, b) / cfg_.units.time_ps;
+    }
+  return (sigma.array() * (0.5 * (L + L.transpose())).array()).sum();  // GPa/ps
+}
+
+template <int Dim>
+std::pair<double, double> MdClosure<Dim>::advance(md::System& box, const md::Mat3& L, double power, int steps,
+                                                  md::Mat3& stress) {
+  if (!consistent()) {
+    multiscale::advance_box(box, L, steps, cfg_.dt, cfg_.sample, stress);
+    box.compact();
+    return {0.0, 0.0};
+  }
+  // Eq. 7.11: the continuum's work on the box over the step against its own energy change.
+  constexpr double GPa_A3_in_eV = 1.0 / 160.21766208;  // 1 GPa x 1 A^3 in eV
+  const double dt_ps = steps * cfg_.dt;
+  const double e0 = box.potential_energy() + box.thermal_kinetic_energy(), v0 = box.box().volume();
+  multiscale::advance_box(box, L, steps, cfg_.dt, cfg_.sample, stress);
+  const double work = 0.5 * (v0 + box.box().volume()) * power * dt_ps * GPa_A3_in_eV;
+  double add = work - (box.potential_energy() + box.thermal_kinetic_energy() - e0);
+  const double room = box.thermal_kinetic_energy();
+  double short_of = 0.0;
+  if (add < -room) short_of = -room - add, add = -room;
+  box.add_energy(add);
+  box.compact();
+  return {add, short_of};
 }
 
 template <int Dim>
 void MdClosure<Dim>::update_stress(const Points<Dim>& p, double dt) {
-  const std::size_t n = p.size(), first = spread_.begin(), m = spread_.count();
+  const std::size_t n = p.size();
   const int steps = cfg_.md_steps(dt);
   if (steps == 0)
     throw InputError(fmt::format("md_closure: the continuum step ({} ps) is not a whole number of MD "
                                  "steps of {} ps",
                                  dt * cfg_.units.time_ps, cfg_.dt));
   const double dt_ps = dt * cfg_.units.time_ps;
-  for (std::size_t k = 0; k < m; ++k)
+  std::vector<md::Mat3> L(n, md::Mat3{});
+  for (std::size_t q = 0; q < n; ++q)
     for (int a = 0; a < Dim; ++a)
-      for (int b = 0; b < Dim; ++b) gradients_[k][3 * a + b] = p.L(first + k, a, b) / cfg_.units.time_ps;  // 1/ps
-  const bool consistent = cfg_.energy_consistency < 0 ? Dim > 1 : cfg_.energy_consistency == 1;
+      for (int b = 0; b < Dim; ++b) L[q][3 * a + b] = p.L(q, a, b) / cfg_.units.time_ps;  // 1/ps
+  // Who leaves, before any box steps; then each group's gradient, its members' mean.
+  apply_split(groups_.split(L, dt_ps));
+  ++macro_step_;
+  start_audits(groups_.draw_auditors(macro_step_));
+  groups_.keep_means(L);
+  const std::size_t G = groups_.groups();
+  // Eq. 7.11's power: each group's the mean over its members; each auditor's its own.
+  std::vector<std::size_t> todo;
+  for (std::size_t g = 0; g < G; ++g)
+    if (mine(g)) todo.push_back(g);
+  std::vector<double> power(G, 0.0);
+  std::map<std::size_t, double> audit_power;
+  if (consistent()) {
+    for (std::size_t g : todo) {
+      double sum = 0.0;
+      for (std::size_t q : groups_.members(g)) sum += power_of(p, q, stress_[g]);
+      power[g] = sum / static_cast<double>(groups_.members(g).size());
+    }
+  }
+  std::vector<std::pair<std::size_t, md::System*>> audited;
+  for (auto& [q, box] : audits_) {
+    audited.emplace_back(q, &box);
+    if (consistent()) audit_power[q] = power_of(p, q, audit_stress_.at(q));
+  }
+  std::vector<double> injected(G, 0.0), short_of(G, 0.0);
+  std::vector<md::Mat3> audit_stress(audited.size());
   std::optional<ranks::Failure> failed;
-  std::vector<double> injected(consistent ? m : 0), short_of(consistent ? m : 0);
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    if (!consistent) {
-      batch_.advance(boxes_, gradients_, steps, cfg_.dt, cfg_.sample, stress_, first, &box_seconds_);
-    } else {
-      // Eq. 7.11 per box, on the box's thread: the work of the stress the continuum used
-      // this step on the point (the box's turned by R, plus the tensor viscous stress
-      // where it is on; GPa) over the rate of deformation.
-      constexpr double GPa_A3_in_eV = 1.0 / 160.21766208;  // 1 GPa x 1 A^3 in eV
-      batch_.each_box(m, first, &box_seconds_, [&](std::size_t k) {
-        const std::size_t q = first + k;
-        md::System& box = boxes_[k];
-        const Mat3d R = as_matrix(rotation_[q]);
-        Mat3d sigma = R * as_matrix(stress_[k]) * R.transpose();
-        for (int a = 0; a < Dim; ++a)
-          for (int b = 0; b < Dim; ++b)
-            if (p.viscous[a * Dim + b]) sigma(a, b) += p.viscous[a * Dim + b][q] * cfg_.units.stress_GPa;
-        const Mat3d L = as_matrix(gradients_[k]);
-        const double power = (sigma.array() * (0.5 * (L + L.transpose())).array()).sum();  // GPa/ps
-        const double e0 = box.potential_energy() + box.thermal_kinetic_energy(), v0 = box.box().volume();
-        multiscale::advance_box(box, gradients_[k], steps, cfg_.dt, cfg_.sample, stress_[k]);
-        const double work = 0.5 * (v0 + box.box().volume()) * power * dt_ps * GPa_A3_in_eV;
-        double add = work - (box.potential_energy() + box.thermal_kinetic_energy() - e0);
-        const double room = box.thermal_kinetic_energy();
-        if (add < -room) short_of[k] = -room - add, add = -room;
-        box.add_energy(add);
-        injected[k] = add;
-      });
-    }
+    // The groups' boxes, then the auditors' (failures name the lowest point).
+    std::vector<double> seconds(todo.size(), 0.0);
+    batch_.each_box(todo.size(), 0, &seconds, [&](std::size_t k) {
+      const std::size_t g = todo[k];
+      try {
+        std::tie(injected[g], short_of[g]) = advance(*boxes_[g], groups_.kept(g), power[g], steps, stress_[g]);
+      } catch (const std::exception& e) {
+        throw RunError(fmt::format("(point {}) {}", groups_.members(g).front(), e.what()));
+      }
+    });
+    for (std::size_t k = 0; k < todo.size(); ++k) group_seconds_[todo[k]] += seconds[k];
+    batch_.each_box(audited.size(), 0, nullptr, [&](std::size_t k) {
+      const std::size_t q = audited[k].first;
+      advance(*audited[k].second, L[q], consistent() ? audit_power[q] : 0.0, steps, audit_stress[k]);
+    });
   } catch (const std::exception& e) {
     failed = ranks::Failure{ranks::Failure::run, where() + e.what()};
   }
   md_seconds_ += seconds_since(t0);
-  if (consistent) {  // collective; summed in point order: the same on any rank count
-    std::vector<double> mine(2 * m);
-    for (std::size_t k = 0; k < m; ++k) mine[2 * k] = injected[k], mine[2 * k + 1] = short_of[k];
-    const std::vector<double> all = spread_.all(mine, 2);
-    for (std::size_t q = 0; q < n; ++q) injected_ev_ += all[2 * q], shortfall_ev_ += all[2 * q + 1];
+  // The audit: each auditor's private stress against its group's (box frame).
+  std::vector<std::array<double, 4>> audit(audited.size());
+  for (std::size_t k = 0; k < audited.size(); ++k) {
+    const std::size_t q = audited[k].first;
+    const md::Mat3& own = audit_stress[k];
+    const md::Mat3& shared = stress_[groups_.group_of(q)];
+    audit[k] = {static_cast<double>(q), 0.0, 0.0, 0.0};
+    for (int c = 0; c < 9; ++c) {
+      const double d = own[c] - shared[c];
+      audit[k][1] += d * d, audit[k][2] += own[c] * own[c];
+      audit[k][3] = std::max(audit[k][3], std::abs(d));
+    }
+    audit_stress_[q] = own;
   }
+  groups_.accumulate(L, dt_ps);
+  turn(p, dt_ps);
+  if (nan_point_ && *nan_point_ < n && mine(groups_.group_of(*nan_point_)))
+    stress_[groups_.group_of(*nan_point_)][0] = std::nan("");
+  std::int64_t auditors = 0;
+  for (std::size_t q = 0; q < n; ++q) auditors += groups_.auditor(q);
+  publish(p, failed, true, dt, injected, short_of, audit);
+  atom_steps_ += (static_cast<std::int64_t>(G) + auditors) * atoms_per_point() * steps;
+  atom_steps_unshared_ += static_cast<std::int64_t>(n) * atoms_per_point() * steps;
+}
+
+// R <- C(W dt) R C(W' dt)^T: the crystal turns with the point's spin W, the box's with
+// the spin W' its upper-triangular gradient keeps. Every point, on every rank.
+template <int Dim>
+void MdClosure<Dim>::turn(const Points<Dim>& p, double dt_ps) {
   if constexpr (Dim > 1) {
-    // R <- C(W dt) R C(W' dt)^T: the crystal turns with the point's spin W, the box's
-    // with the spin W' its upper-triangular gradient keeps. Every point, on every rank.
-    for (std::size_t q = 0; q < n; ++q) {
+    for (std::size_t q = 0; q < p.size(); ++q) {
       md::Mat3 g{};
       for (int a = 0; a < Dim; ++a)
         for (int b = 0; b < Dim; ++b) g[3 * a + b] = p.L(q, a, b) / cfg_.units.time_ps;
-      if (md::is_upper_triangular(g)) continue;  // W' = W: R unchanged
-      const Mat3d G = as_matrix(g), Gu = as_matrix(md::upper_triangular(g));
+      const md::Mat3& box = groups_.kept(groups_.group_of(q));  // the gradient its box followed
+      if (box == g && md::is_upper_triangular(g)) continue;    // W' = W: R unchanged
+      const Mat3d G = as_matrix(g), Gu = as_matrix(md::upper_triangular(box));
       const Mat3d W = 0.5 * (G - G.transpose()), Wb = 0.5 * (Gu - Gu.transpose());
       rotation_[q] = as_array(cayley(W, dt_ps) * as_matrix(rotation_[q]) * cayley(Wb, dt_ps).transpose());
     }
   }
-  if (nan_point_ && spread_.owns(*nan_point_)) stress_[*nan_point_ - first][0] = std::nan("");
-  publish(p, failed, true, dt);
-  atom_steps_ += static_cast<std::int64_t>(n) * atoms_per_point() * steps;
 }
 
-// The point's stress: its box's, turned by the point's rotation (identity in 1-D).
+// The point's stress: its group's box's, turned by the point's rotation (identity in 1-D).
 template <int Dim>
 void MdClosure<Dim>::set_point_stress(const Points<Dim>& p, std::size_t q) const {
+  const md::Mat3& box = stress_[groups_.group_of(q)];
   if constexpr (Dim == 1) {
-    p.stress[0][q] = all_stress_[q][0] / cfg_.units.stress_GPa;
+    p.stress[0][q] = box[0] / cfg_.units.stress_GPa;
   } else {
     const Mat3d R = as_matrix(rotation_[q]);
-    const Mat3d s = R * as_matrix(all_stress_[q]) * R.transpose();
+    const Mat3d s = R * as_matrix(box) * R.transpose();
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) p.sigma(q, a, b) = s(a, b) / cfg_.units.stress_GPa;
   }
 }
 
 template <int Dim>
-void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure> failed, bool strain, double dt) {
-  const std::size_t first = spread_.begin(), m = spread_.count();
-  std::vector<double> mine(m * kRecord, std::nan(""));
-  for (std::size_t k = 0; k < m && !failed; ++k) {
-    double* r = &mine[k * kRecord];
-    for (int c = 0; c < 9; ++c) r[c] = stress_[k][c];
-    const md::Box& b = boxes_[k].box();
-    int i = 9;
-    for (const double v : {b.lx, b.ly, b.lz, b.xy, b.xz, b.yz}) r[i++] = v;
-    r[i] = static_cast<double>(boxes_[k].neighbor_builds());
+void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure> failed, bool strain, double dt,
+                             const std::vector<double>& injected, const std::vector<double>& short_of,
+                             const std::vector<std::array<double, 4>>& audit) {
+  const std::size_t G = groups_.groups();
+  // This rank's records in group order, then its auditors'; every rank knows how many
+  // every other sends (the groups and their owners are replicated).
+  std::vector<double> out;
+  for (std::size_t g = 0; g < G && !failed; ++g) {
+    if (!mine(g)) continue;
+    for (int c = 0; c < 9; ++c) out.push_back(stress_[g][c]);
+    const md::Box& b = boxes_[g]->box();
+    for (const double v : {b.lx, b.ly, b.lz, b.xy, b.xz, b.yz}) out.push_back(v);
+    out.push_back(static_cast<double>(boxes_[g]->neighbor_builds()));
+    out.push_back(injected.empty() ? 0.0 : injected[g]);
+    out.push_back(short_of.empty() ? 0.0 : short_of[g]);
     for (int c = 0; c < 9; ++c)
-      if (!std::isfinite(stress_[k][c]))
+      if (!std::isfinite(stress_[g][c]))
         failed = ranks::Failure{ranks::Failure::run,
                                 fmt::format("{}the MD box of material point {} gave a non-finite stress ({} GPa)",
-                                            where(), first + k, stress_[k][c])};
+                                            where(), groups_.members(g).front(), stress_[g][c])};
   }
-  const std::vector<double> all = spread_.all(mine, kRecord);
+  for (const auto& a : audit) out.insert(out.end(), a.begin(), a.end());
+  std::vector<int> counts(static_cast<std::size_t>(ranks::size()), 0);
+  for (std::size_t g = 0; g < G; ++g) counts[owner_[g]] += kGroupRecord;
+  for (std::size_t q = 0; q < groups_.points(); ++q)
+    if (groups_.auditor(q)) counts[owner_[groups_.group_of(q)]] += 4;
+  if (failed) out.assign(static_cast<std::size_t>(counts[ranks::rank()]), std::nan(""));
+  const std::vector<double> all = ranks::all_gather(out, counts);
   if (const auto f = ranks::first_failure(failed)) {
     ranks::mark_agreed();
     ranks::raise(*f);
   }
-  all_stress_.resize(p.size());
+  // Read back in rank order: each rank's groups by id, then its auditors.
+  std::vector<std::array<double, 4>> audits;
+  std::size_t at = 0;
+  for (int r = 0; r < ranks::size(); ++r) {
+    for (std::size_t g = 0; g < G; ++g) {
+      if (owner_[g] != r) continue;
+      const double* rec = &all[at];
+      at += kGroupRecord;
+      for (int c = 0; c < 9; ++c) stress_[g][c] = rec[c];
+      for (int c = 0; c < 7; ++c) shape_[g][c] = rec[9 + c];
+      injected_ev_ += rec[16], shortfall_ev_ += rec[17];
+    }
+    for (std::size_t q = 0; q < groups_.points(); ++q) {
+      if (!groups_.auditor(q) || owner_[groups_.group_of(q)] != r) continue;
+      audits.push_back({all[at], all[at + 1], all[at + 2], all[at + 3]});
+      at += 4;
+    }
+  }
+  // The audit's sums in point order: the same on any rank count.
+  std::sort(audits.begin(), audits.end());
+  for (const auto& a : audits) {
+    audit_d2_ += a[1], audit_s2_ += a[2];
+    audit_max_gpa_ = std::max(audit_max_gpa_, a[3]);
+    ++audit_samples_;
+  }
   neighbor_builds_ = 0;
-  for (std::size_t q = 0; q < p.size(); ++q) neighbor_builds_ += static_cast<std::int64_t>(all[q * kRecord + 15]);
+  for (std::size_t g = 0; g < G; ++g) neighbor_builds_ += static_cast<std::int64_t>(shape_[g][6]);
   const double l0 = cfg_.cells * props_.equilibrium.lattice_constant;
   for (std::size_t q = 0; q < p.size(); ++q) {
-    for (int c = 0; c < 9; ++c) all_stress_[q][c] = all[q * kRecord + c];
     set_point_stress(p, q);
     if (!strain) continue;
     if constexpr (Dim == 1) {
-      p.strain[0][q] = all[q * kRecord + 9] / l0 - 1.0;  // the box's engineering strain
+      p.strain[0][q] = shape_[groups_.group_of(q)][0] / l0 - 1.0;  // the box's engineering strain
     } else {
       for (int a = 0; a < Dim; ++a)
         for (int b = 0; b < Dim; ++b) p.eps(q, a, b) += 0.5 * dt * (p.L(q, a, b) + p.L(q, b, a));
@@ -271,104 +428,203 @@ double MdClosure<Dim>::sound_speed(const Points<Dim>& p, std::size_t q) const {
   return std::sqrt(modulus() / p.density(q));
 }
 
+namespace {
+
+// Boxes keyed by an index (a group, or an auditor's point), each written with its
+// length so that rank 0 can put every rank's in order.
+// A box's bytes, with the last stress an auditor's power needs after them.
+std::string box_bytes(const md::System& box, const md::Mat3* stress = nullptr) {
+  std::ostringstream b(std::ios::binary);
+  box.save(b);
+  if (stress) b.write(reinterpret_cast<const char*>(stress->data()), sizeof(double) * 9);
+  return b.str();
+}
+void pack(std::ostream& out, std::uint64_t key, const std::string& bytes) {
+  write_raw(out, key);
+  write_raw(out, static_cast<std::uint64_t>(bytes.size()));
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+std::map<std::uint64_t, std::string> unpack(const std::string& all) {
+  std::map<std::uint64_t, std::string> r;
+  std::istringstream in(all, std::ios::binary);
+  std::uint64_t key = 0, len = 0;
+  while (in.peek() != std::char_traits<char>::eof()) {
+    read_raw(in, key);
+    read_raw(in, len);
+    std::string bytes(len, '\0');
+    in.read(bytes.data(), static_cast<std::streamsize>(len));
+    r[key] = std::move(bytes);
+  }
+  return r;
+}
+
+}  // namespace
+
 template <int Dim>
 void MdClosure<Dim>::save(std::ostream& out) const {
-  std::ostringstream mine(std::ios::binary);
-  for (const auto& b : boxes_) b.save(mine);
-  const std::string all = ranks::gather_to_root(mine.str());  // System::save delimits each box
+  std::ostringstream group_boxes(std::ios::binary), audit_boxes(std::ios::binary);
+  for (std::size_t g = 0; g < boxes_.size(); ++g)
+    if (boxes_[g]) pack(group_boxes, g, box_bytes(*boxes_[g]));
+  for (const auto& [q, box] : audits_) pack(audit_boxes, q, box_bytes(box, &audit_stress_.at(q)));
+  const auto groups = unpack(ranks::gather_to_root(group_boxes.str()));
+  const auto audits = unpack(ranks::gather_to_root(audit_boxes.str()));
   if (!ranks::root()) return;
-  const std::uint64_t n = spread_.points();
+  const std::uint64_t n = groups_.points();
   write_raw(out, n);
   write_raw(out, atom_steps_);
-  out.write(all.data(), static_cast<std::streamsize>(all.size()));
-  // Eq. 7.11's tallies, every point's rotation and its box's last stress (the next
-  // step's sigma^n): the same on every rank.
-  write_raw(out, injected_ev_);
-  write_raw(out, shortfall_ev_);
+  write_raw(out, atom_steps_unshared_);
+  write_raw(out, macro_step_);
+  groups_.save(out);
+  for (const auto& [g, bytes] : groups) out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  write_raw(out, static_cast<std::uint64_t>(audits.size()));
+  for (const auto& [q, bytes] : audits) {  // each box, then its last stress
+    write_raw(out, q);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  // Eq. 7.11's and the audit's tallies, every point's rotation and every group's box
+  // shape and last stress (the next step's sigma^n): the same on every rank.
+  for (const double v : {injected_ev_, shortfall_ev_, audit_d2_, audit_s2_, audit_max_gpa_}) write_raw(out, v);
+  write_raw(out, audit_samples_);
   for (const auto& r : rotation_) out.write(reinterpret_cast<const char*>(r.data()), sizeof(double) * 9);
-  for (const auto& s : all_stress_) out.write(reinterpret_cast<const char*>(s.data()), sizeof(double) * 9);
+  for (const auto& s : stress_) out.write(reinterpret_cast<const char*>(s.data()), sizeof(double) * 9);
+  for (const auto& s : shape_) out.write(reinterpret_cast<const char*>(s.data()), sizeof(double) * 7);
 }
 
 template <int Dim>
 void MdClosure<Dim>::load(std::istream& in) {
   // Each box takes far more than 64 bytes: the bound only keeps a damaged count from an
-  // allocation; the box count is checked against the deck's points by the caller.
-  const std::uint64_t n = read_count(in, 64, "md_closure boxes");
+  // allocation; the point count is checked against the deck's points by the caller.
+  const std::uint64_t n = read_count(in, 64, "md_closure points");
   read_raw(in, atom_steps_);
+  read_raw(in, atom_steps_unshared_);
+  read_raw(in, macro_step_);
   if (!in) throw InputError("checkpoint: the MD boxes are truncated");
-  spread_ = multiscale::Spread(n);
+  groups_.load(in);
+  if (groups_.points() != n)
+    throw InputError(fmt::format("checkpoint: the groups hold {} points, the boxes {}", groups_.points(), n));
+  const std::size_t G = groups_.groups();
+  spread_groups(std::vector<double>(G, 1.0));
   boxes_.clear();
-  boxes_.reserve(spread_.count());
-  // Every box is read (the run's own figures follow them); this rank keeps its block.
-  for (std::uint64_t q = 0; q < n; ++q) {
+  boxes_.resize(G);
+  // Every box is read (the run's own figures follow them); this rank keeps its own.
+  for (std::size_t g = 0; g < G; ++g) {
     try {
       md::System box = md::System::load(in, pot_, box_options());
-      if (spread_.owns(q)) boxes_.push_back(std::move(box));
+      if (mine(g)) boxes_[g] = std::make_unique<md::System>(std::move(box));
     } catch (const RunError& e) {  // a box the file describes that no run makes
-      throw InputError(fmt::format("the MD box of point {}: {}", q, e.what()));
+      throw InputError(fmt::format("the MD box of group {} (point {}): {}", g, groups_.members(g).front(), e.what()));
     }
   }
-  read_raw(in, injected_ev_);
-  read_raw(in, shortfall_ev_);
+  const std::uint64_t auditors = read_count(in, 64, "md_closure auditors");
+  audits_.clear();
+  audit_stress_.clear();
+  for (std::uint64_t k = 0; k < auditors; ++k) {
+    std::uint64_t q = 0;
+    read_raw(in, q);
+    if (!in || q >= n || !groups_.auditor(q)) throw InputError(fmt::format("checkpoint: an auditor {} out of place", q));
+    md::System box = md::System::load(in, pot_, box_options());
+    md::Mat3 s{};
+    in.read(reinterpret_cast<char*>(s.data()), sizeof(double) * 9);
+    if (mine(groups_.group_of(q))) audits_.insert_or_assign(q, std::move(box)), audit_stress_[q] = s;
+  }
+  for (double* v : {&injected_ev_, &shortfall_ev_, &audit_d2_, &audit_s2_, &audit_max_gpa_}) read_raw(in, *v);
+  read_raw(in, audit_samples_);
   rotation_.assign(n, md::Mat3{});
-  all_stress_.assign(n, md::Mat3{});
+  stress_.assign(G, md::Mat3{});
+  shape_.assign(G, {});
   for (auto& r : rotation_) in.read(reinterpret_cast<char*>(r.data()), sizeof(double) * 9);
-  for (auto& s : all_stress_) in.read(reinterpret_cast<char*>(s.data()), sizeof(double) * 9);
+  for (auto& s : stress_) in.read(reinterpret_cast<char*>(s.data()), sizeof(double) * 9);
+  for (auto& s : shape_) in.read(reinterpret_cast<char*>(s.data()), sizeof(double) * 7);
   if (!in) throw InputError("checkpoint: the MD boxes' rotations and stresses are truncated");
-  gradients_.assign(spread_.count(), md::Mat3{});
-  stress_.assign(all_stress_.begin() + static_cast<std::ptrdiff_t>(spread_.begin()),
-                 all_stress_.begin() + static_cast<std::ptrdiff_t>(spread_.begin() + spread_.count()));
-  box_seconds_.assign(spread_.count(), 0.0);
+  neighbor_builds_ = 0;
+  for (const auto& s : shape_) neighbor_builds_ += static_cast<std::int64_t>(s[6]);
+  group_seconds_.assign(G, 0.0);
   if (const char* v = std::getenv("MPMX_TEST_NAN_POINT")) nan_point_ = std::strtoull(v, nullptr, 10);
 }
 
 template <int Dim>
 bool MdClosure<Dim>::rebalance(double threshold) {
   if (ranks::size() == 1) return false;
-  double mine = 0.0;
-  for (double t : box_seconds_) mine += t;
-  const double slowest = ranks::max({mine})[0], mean = ranks::sum(mine) / ranks::size();
-  const std::vector<double> cost = spread_.all(box_seconds_, 1);
-  box_seconds_.assign(box_seconds_.size(), 0.0);  // the next check measures afresh
+  const std::size_t G = groups_.groups();
+  std::vector<double> mine_cost;
+  double total = 0.0;
+  std::vector<int> counts(static_cast<std::size_t>(ranks::size()), 0);
+  for (std::size_t g = 0; g < G; ++g) {
+    ++counts[owner_[g]];
+    if (mine(g)) mine_cost.push_back(group_seconds_[g]), total += group_seconds_[g];
+  }
+  const double slowest = ranks::max({total})[0], mean = ranks::sum(total) / ranks::size();
+  const std::vector<double> gathered = ranks::all_gather(mine_cost, counts);
+  std::vector<double> cost(G, 0.0);
+  std::size_t at = 0;
+  for (int r = 0; r < ranks::size(); ++r)
+    for (std::size_t g = 0; g < G; ++g)
+      if (owner_[g] == r) cost[g] = gathered[at++];
+  group_seconds_.assign(G, 0.0);  // the next check measures afresh
   if (!(mean > 0.0) || slowest <= threshold * mean) return false;
-  const multiscale::Spread next = multiscale::Spread::balanced(cost);
-  if (next == spread_) return false;
-  // Each box goes to the rank whose new block holds its point, as the checkpoint
-  // writes it (state, neighbour list, random stream): the run goes on bit for bit.
+  const std::vector<int> before = owner_;
+  spread_groups(cost);
+  if (owner_ == before) return false;
+  // Each box (and its auditors') goes to its group's new rank as a checkpoint writes it:
+  // the run goes on bit for bit.
   std::vector<std::ostringstream> out(static_cast<std::size_t>(ranks::size()));
-  int to = 0;
-  for (std::size_t k = 0; k < boxes_.size(); ++k) {
-    const std::size_t q = spread_.begin() + k;
-    while (q >= next.start(to + 1)) ++to;
-    boxes_[k].save(out[static_cast<std::size_t>(to)]);
+  for (std::size_t g = 0; g < G; ++g) {
+    if (before[g] != ranks::rank() || owner_[g] == ranks::rank()) continue;
+    auto& o = out[static_cast<std::size_t>(owner_[g])];
+    pack(o, 2 * g, box_bytes(*boxes_[g]));
+    boxes_[g].reset();
+  }
+  for (auto it = audits_.begin(); it != audits_.end();) {
+    const std::size_t g = groups_.group_of(it->first);
+    if (owner_[g] == ranks::rank()) {
+      ++it;
+      continue;
+    }
+    auto& o = out[static_cast<std::size_t>(owner_[g])];
+    pack(o, 2 * it->first + 1, box_bytes(it->second, &audit_stress_.at(it->first)));
+    audit_stress_.erase(it->first);
+    it = audits_.erase(it);
   }
   std::vector<std::string> bytes;
   for (auto& o : out) bytes.push_back(o.str());
-  boxes_.clear();
-  // What arrives is in the senders' rank order, that is in point order.
-  std::istringstream in(ranks::exchange(bytes));
-  spread_ = next;
-  boxes_.reserve(spread_.count());
-  for (std::size_t k = 0; k < spread_.count(); ++k) boxes_.push_back(md::System::load(in, pot_, box_options()));
-  gradients_.assign(spread_.count(), md::Mat3{});
-  stress_.assign(all_stress_.begin() + static_cast<std::ptrdiff_t>(spread_.begin()),
-                 all_stress_.begin() + static_cast<std::ptrdiff_t>(spread_.begin() + spread_.count()));
-  box_seconds_.assign(spread_.count(), 0.0);
+  for (const auto& [key, box] : unpack(ranks::exchange(bytes))) {
+    std::istringstream b(box, std::ios::binary);
+    md::System s = md::System::load(b, pot_, box_options());
+    if (key % 2 == 0) {
+      boxes_[key / 2] = std::make_unique<md::System>(std::move(s));
+    } else {
+      const std::size_t q = key / 2;
+      audits_.insert_or_assign(q, std::move(s));
+      md::Mat3 last{};
+      b.read(reinterpret_cast<char*>(last.data()), sizeof(double) * 9);
+      audit_stress_[q] = last;
+    }
+  }
   return true;
 }
 
 template <int Dim>
 std::vector<material::Figure> MdClosure<Dim>::figures() const {
   const auto& eq = props_.equilibrium;
-  return {{"md.atoms_per_point", std::int64_t{atoms_per_point()}},
-          {"md.points", static_cast<std::int64_t>(spread_.points())},
-          {"md.lattice_constant_A", eq.lattice_constant},
-          {"md.energy_per_atom_eV", eq.energy_per_atom},
-          {"md.c11_GPa", eq.c11_gpa},
-          {"md.density", density()},
-          {"md.energy_injected_eV", injected_ev_},  // eq. 7.11, running total
-          {"md.energy_shortfall_eV", shortfall_ev_},
-          {"md.neighbor_builds", neighbor_builds_}};
+  std::vector<material::Figure> f{{"md.atoms_per_point", std::int64_t{atoms_per_point()}},
+                                  {"md.points", static_cast<std::int64_t>(groups_.points())},
+                                  {"md.lattice_constant_A", eq.lattice_constant},
+                                  {"md.energy_per_atom_eV", eq.energy_per_atom},
+                                  {"md.c11_GPa", eq.c11_gpa},
+                                  {"md.density", density()},
+                                  {"md.energy_injected_eV", injected_ev_},  // eq. 7.11, running total
+                                  {"md.energy_shortfall_eV", shortfall_ev_},
+                                  {"md.neighbor_builds", neighbor_builds_},
+                                  {"md.atom_steps", atom_steps_},
+                                  {"md.atom_steps_unshared", atom_steps_unshared_},
+                                  {"md.boxes.initial", static_cast<std::int64_t>(groups_.groups_initial())},
+                                  {"md.boxes.max", static_cast<std::int64_t>(groups_.groups_max())},
+                                  {"md.boxes.final", static_cast<std::int64_t>(groups_.groups())}};
+  if (audit_samples_ > 0) {
+    f.emplace_back("md.share.audit_rel_rms", audit_rel_rms());
+    f.emplace_back("md.share.audit_max_gpa", audit_max_gpa());
+  }
+  return f;
 }
 
 template class MdClosure<1>;

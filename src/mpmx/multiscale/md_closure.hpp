@@ -1,20 +1,27 @@
 #pragma once
 // md_closure: the heterogeneous multiscale closure of chapter 6. Every material point
-// owns a periodic MD box (section 6.2): fcc at the potential's least-energy lattice
+// takes its stress from a periodic MD box (section 6.2): fcc at the potential's least-energy lattice
 // constant, n x n x n cells, the point's initial engineering strain along x, atoms at
 // twice the point's temperature, relaxed at zero strain rate. It is built once and
 // never re-initialised; each continuum step its velocity gradient (eq. 6.3) deforms
 // the box for dt / dt_md MD steps and the box's virial stress (eq. 2.25) is the point's
 // stress. Units are converted here only (core/units).
 //
-// Under MPI each rank builds and advances the boxes of its block of points
-// (multiscale/spread); every rank then holds every point's result (stress and box) and
-// the continuum step is replicated on all ranks. Replicated rather than run on rank 0:
+// Points whose boxes follow one history share one box (multiscale/box_groups.hpp: a
+// group is cloned when a member's history departs, a few members are audited on private
+// boxes). Under MPI each rank builds and advances the boxes of its groups; every rank then
+// holds every group's result (stress and box) and the continuum step is replicated on
+// all ranks. Replicated rather than run on rank 0:
 // the continuum costs nothing beside the MD, every rank then takes the same decisions
 // from the same state (records, the CFL step, the checks) without a protocol of
 // commands, and the gradients need no scatter. A box's state and random stream depend
-// only on its point's index, so the results do not depend on the ranks or threads.
+// only on its group's first point, so the results do not depend on the ranks or threads.
+// Between macro steps a box holds only its atoms' state (md::System::compact): the lists
+// and buffers are rebuilt when it is advanced.
+#include <array>
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -24,6 +31,7 @@
 #include "mpmx/md/equilibrium.hpp"
 #include "mpmx/md/system.hpp"
 #include "mpmx/multiscale/batch.hpp"
+#include "mpmx/multiscale/box_groups.hpp"
 #include "mpmx/multiscale/spread.hpp"
 
 namespace mpmx::multiscale {
@@ -35,7 +43,7 @@ struct MdClosureConfig {
   md::PotentialSpec potential;
   int cells = 4;                   // n x n x n fcc cells: 4 -> 256 atoms, 5 -> 500
   double temperature = 0.0;        // K
-  std::uint64_t seed = 1;          // with the point index: one random stream per point
+  std::uint64_t seed = 1;          // with a group's first point: one random stream per box
   double dt = 0.001;               // MD step, ps
   std::int64_t relax_steps = 0;    // zero-strain-rate relaxation after the thermal start
   multiscale::StressSample sample = multiscale::StressSample::last;
@@ -44,6 +52,7 @@ struct MdClosureConfig {
   units::UnitSystem units{"nm_ps_GPa", 10.0, 1.0, 1.0};
   int threads = 0;                 // 0: OpenMP default
   int energy_consistency = -1;     // eq. 7.11: 1 on, 0 off, -1 the default (on in 2-D and 3-D)
+  ShareOptions share;              // [material.md.share]: boxes shared by history
 
   int atoms_per_point() const { return 4 * cells * cells * cells; }
   // MD steps in a continuum step `dt` (continuum units); 0 when not a whole number.
@@ -65,35 +74,36 @@ MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, co
 // deformation but another spin than the point's, so each point carries the rotation R
 // between the box's crystal and the point's (dR/dt = W R - R W') and returns R sigma R^T.
 // Energy consistency (eq. 7.11, on by default in 2-D and 3-D): each macro step the
-// difference between the continuum's work V sigma : D dt and the box's own energy change
-// goes into the box as kinetic energy about its mean velocity.
+// difference between the continuum's work V sigma : D dt (its members' mean) and the
+// box's own energy change goes into the box as kinetic energy about its mean velocity.
 template <int Dim>
 class MdClosure final : public Material<Dim>, public material::Subscale {
  public:
   explicit MdClosure(const MdClosureConfig& config);
 
   std::string name() const override { return "md_closure"; }
-  // Builds one box per point of this rank's block from p.strain (engineering, along
-  // x); sets every point's stress. Collective under MPI, as are update_stress, save
-  // and load; a failure on any rank throws the same RunError on every rank.
+  // Builds one box per group of points that start alike (p.strain: engineering, along
+  // x), relaxed once; sets every point's stress. Collective under MPI, as are
+  // update_stress, save and load; a failure on any rank throws the same RunError on
+  // every rank.
   void initialize(const Points<Dim>& p) override;
   void update_stress(const Points<Dim>& p, double dt) override;
   // sqrt(C11 / rho): the 0 K uniaxial-strain wave speed, for the viscosity.
   double sound_speed(const Points<Dim>& p, std::size_t q) const override;
-  // The boxes of every rank, in point order, written by rank 0 alone: the file is the
-  // single-process one. load keeps this rank's block, so any rank count resumes it.
+  // The groups and every rank's boxes in group order, written by rank 0 alone: the file
+  // is the single-process one. load keeps this rank's share, so any rank count resumes it.
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;
-  // Moves boxes between ranks so that each block's measured cost is about equal.
+  // Moves boxes between ranks so that each rank's measured cost is about equal.
   bool rebalance(double threshold) override;
-  // Every point's box (all ranks'): what a checkpoint holds, checked against the deck.
-  long long state_points() const override { return static_cast<long long>(spread_.points()); }
+  long long state_points() const override { return static_cast<long long>(groups_.points()); }
 
   const md::FccEquilibrium& equilibrium() const { return props_.equilibrium; }
   double density() const { return props_.density; }  // unstrained crystal, continuum units
   double modulus() const { return props_.modulus; }  // C11, continuum units
   int atoms_per_point() const { return cfg_.atoms_per_point(); }
-  std::int64_t atom_steps() const { return atom_steps_; }  // all ranks' boxes
+  std::int64_t atom_steps() const { return atom_steps_; }  // all ranks' boxes, audits included
+  std::int64_t atom_steps_unshared() const { return atom_steps_unshared_; }  // one box per point
   double md_seconds() const { return md_seconds_; }        // wall time in this rank's boxes
   int threads() const override { return batch_.threads(); }
   // The boxes spread over the run's --threads (0: OpenMP's default), set before
@@ -105,39 +115,65 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   std::int64_t steps() const override { return atom_steps_; }
   double seconds() const override { return md_seconds_; }
   std::vector<material::Figure> figures() const override;
-  // This rank's boxes: those of points spread().begin() + k.
-  const std::vector<md::System>& boxes() const { return boxes_; }
-  const multiscale::Spread& spread() const { return spread_; }
+
+  const BoxGroups& groups() const { return groups_; }
+  // Group g's box, where this rank runs it (null elsewhere).
+  const md::System* box(std::size_t g) const { return g < boxes_.size() ? boxes_[g].get() : nullptr; }
   // Eq. 7.11: energy put into (positive) or taken from the boxes so far, eV, all ranks;
   // and what could not be taken from a box with too little thermal energy.
   double energy_injected_ev() const { return injected_ev_; }
   double energy_shortfall_ev() const { return shortfall_ev_; }
-  // Neighbour-list builds of every box since it was made (all ranks, at the last step):
-  // against the MD steps, how often the boxes' atoms outran the skin.
+  // Neighbour-list builds of every box since it was made (all ranks, at the last step).
   std::int64_t neighbor_builds() const { return neighbor_builds_; }
+  // The audit: the auditors' private stress against their groups', relative RMS over
+  // the run and the largest difference of a component (GPa); NaN before any.
+  double audit_rel_rms() const;
+  double audit_max_gpa() const { return audit_samples_ > 0 ? audit_max_gpa_ : std::nan(""); }
 
  private:
   md::SystemOptions box_options() const;
-  // Every rank's results into the points (stress; strain when `strain`, and in 2-D/3-D
-  // the strain increment of this step's dt), after the ranks agree on the first
-  // failure, if any.
-  void publish(const Points<Dim>& p, std::optional<ranks::Failure> failed, bool strain, double dt);
+  bool consistent() const { return cfg_.energy_consistency < 0 ? Dim > 1 : cfg_.energy_consistency == 1; }
+  // The groups' boxes on the ranks: contiguous runs of groups of about equal cost.
+  void spread_groups(const std::vector<double>& cost);
+  bool mine(std::size_t g) const { return owner_[g] == ranks::rank(); }
+  // New groups from a split (copies of their parents' boxes where this rank runs
+  // them), new auditors' private boxes, dropped ones ended.
+  void apply_split(const BoxGroups::Split& split);
+  void start_audits(const std::vector<std::size_t>& points);
+  // Advances group g's box (or auditor q's, with `audit`) by steps under gradient L;
+  // returns what eq. 7.11 put in and could not take out.
+  std::pair<double, double> advance(md::System& box, const md::Mat3& L, double power, int steps, md::Mat3& stress);
+  // The stress power (GPa/ps) of the stress the continuum used on point q this step.
+  double power_of(const Points<Dim>& p, std::size_t q, const md::Mat3& box_stress) const;
+  // Every rank's results into the groups and the points, after the ranks agree on the
+  // first failure, if any.
+  void publish(const Points<Dim>& p, std::optional<ranks::Failure> failed, bool strain, double dt,
+               const std::vector<double>& injected, const std::vector<double>& short_of,
+               const std::vector<std::array<double, 4>>& audit);
   void set_point_stress(const Points<Dim>& p, std::size_t q) const;
+  void turn(const Points<Dim>& p, double dt_ps);
 
   MdClosureConfig cfg_;
   md::Potential pot_;
   MdClosureProperties props_;
   multiscale::Batch batch_;
-  multiscale::Spread spread_;
-  std::vector<md::System> boxes_;                // this rank's block
-  std::vector<md::Mat3> gradients_, stress_;     // this rank's block (stress: box frame, GPa)
-  std::vector<md::Mat3> all_stress_, rotation_;  // every point, on every rank
-  std::int64_t atom_steps_ = 0;
+  BoxGroups groups_;                                 // every rank
+  std::vector<int> owner_;                           // the rank running each group
+  std::vector<std::unique_ptr<md::System>> boxes_;   // by group; this rank's
+  std::map<std::size_t, md::System> audits_;         // auditors' private boxes (this rank's groups), by point
+  std::map<std::size_t, md::Mat3> audit_stress_;     // their last stress (box frame, GPa)
+  std::vector<md::Mat3> stress_;                     // by group, box frame, GPa (every rank)
+  std::vector<std::array<double, 7>> shape_;         // by group: lx, ly, lz, xy, xz, yz, neighbour builds
+  std::vector<md::Mat3> rotation_;                   // every point, on every rank
+  std::vector<double> group_seconds_;                // each group's cost since the last rebalance check
+  std::int64_t atom_steps_ = 0, atom_steps_unshared_ = 0;
+  std::int64_t macro_step_ = 0;
   double md_seconds_ = 0.0;
-  std::vector<double> box_seconds_;  // each box's cost since the last rebalance check
   double injected_ev_ = 0.0, shortfall_ev_ = 0.0;
   std::int64_t neighbor_builds_ = 0;
-  // MPMX_TEST_NAN_POINT: the point whose box reports a NaN stress (tests only).
+  double audit_d2_ = 0.0, audit_s2_ = 0.0, audit_max_gpa_ = 0.0;
+  std::int64_t audit_samples_ = 0;
+  // MPMX_TEST_NAN_POINT: the point whose stress comes back NaN (tests only).
   std::optional<std::size_t> nan_point_;
 };
 

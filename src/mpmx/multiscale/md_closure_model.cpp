@@ -68,6 +68,14 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   s.non_negative("skin", md.skin);
   md.mixed_precision = s.choice("precision", {"double", "mixed"}, "double") == "mixed";
   if (s.has("energy_consistency")) md.energy_consistency = s.boolean("energy_consistency", true) ? 1 : 0;
+  // [material.md.share]: boxes shared by history (multiscale/box_groups.hpp).
+  auto share_table = s.optional_sub("share");
+  Table& share = *share_table;
+  md.share.enabled = share.boolean("enabled", md.share.enabled);
+  md.share.tolerance = share.number("tolerance", md.share.tolerance);
+  share.non_negative("tolerance", md.share.tolerance);
+  md.share.audit = share.integer_int("audit", md.share.audit, 0, 1000);
+  md.share.seed = md.seed;
   if (md.potential.style != "eam" || !md.potential.file.empty()) {
     try {
       const auto props = md_closure_properties(md.potential, md.units);
