@@ -17,7 +17,6 @@
 
 namespace mpmx::test {
 
-// The H2 small bar with `points` points of 4 x cells^3 atoms for `steps` steps of 0.1 ps.
 // The MD closure's configuration of a deck whose material is md_closure.
 inline multiscale::MdClosureConfig closure_config(const app::MpmConfig& c) {
   return app::model_as<multiscale::MdClosureModel>(*c.material.spec)->md;
@@ -31,6 +30,7 @@ std::variant<std::int64_t, double> closure_figure(const Result& r, const std::st
   return std::nan("");
 }
 
+// The H2 small bar with `points` points of 4 x cells^3 atoms for `steps` steps of 0.1 ps.
 inline app::MpmConfig tiny_bar(int points, int cells, int steps, double temperature = 0.0) {
   return deck_with(example("H2_strong_0K_256_small.toml"), [&](toml::table& t) {
     t["grid"].as_table()->insert_or_assign("cells", points);

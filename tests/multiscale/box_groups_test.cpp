@@ -1,0 +1,150 @@
+// ctest-label: unit
+// The bookkeeping of history-shared boxes: who starts together, who leaves when, where
+// leavers go, and that a group's kept gradient never holds a leaver's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/multiscale/box_groups.hpp"
+
+using namespace mpmx;
+using multiscale::BoxGroups;
+using multiscale::ShareOptions;
+
+namespace {
+
+BoxGroups::Mat3 shear(double rate) {
+  BoxGroups::Mat3 m{};
+  m[1] = rate;
+  return m;
+}
+
+}  // namespace
+
+TEST(BoxGroups, PointsThatStartAlikeShareOneGroup) {
+  const BoxGroups g({0.0, -0.01, 0.0, -0.01, 0.02}, ShareOptions{});
+  ASSERT_EQ(g.groups(), 3u);
+  EXPECT_EQ(g.members(0), (std::vector<std::size_t>{0, 2}));
+  EXPECT_EQ(g.members(1), (std::vector<std::size_t>{1, 3}));
+  EXPECT_EQ(g.members(2), (std::vector<std::size_t>{4}));
+  ShareOptions off;
+  off.enabled = false;
+  EXPECT_EQ(BoxGroups({0.0, 0.0, 0.0}, off).groups(), 3u);
+}
+
+// With tolerance 0 every member leaves at its first departure from what the group kept;
+// members whose gradients are equal leave together, into one new group.
+TEST(BoxGroups, ToleranceZeroSplitsAtTheFirstDeparture) {
+  ShareOptions o;
+  o.tolerance = 0.0;
+  BoxGroups g(std::vector<double>(6, 0.0), o);
+  std::vector<BoxGroups::Mat3> L(6, BoxGroups::Mat3{});
+  auto s = g.split(L, 0.01);  // nobody departs from the rest the group kept
+  EXPECT_TRUE(s.clones.empty());
+  g.keep_means(L);
+  g.accumulate(L, 0.01);
+  L[2] = L[4] = shear(1e-6);
+  L[5] = shear(-1e-6);
+  s = g.split(L, 0.01);
+  ASSERT_EQ(g.groups(), 3u);
+  EXPECT_EQ(g.members(0), (std::vector<std::size_t>{0, 1, 3}));
+  EXPECT_EQ(g.members(1), (std::vector<std::size_t>{2, 4}));
+  EXPECT_EQ(g.members(2), (std::vector<std::size_t>{5}));
+  ASSERT_EQ(s.clones.size(), 2u);
+  EXPECT_EQ(s.clones[0].from, 0u);
+  EXPECT_EQ(s.clones[0].to, 1u);
+  EXPECT_EQ(s.clones[1].to, 2u);
+  // The group's box steps with its stayers' mean: the leavers' gradients are not in it.
+  g.keep_means(L);
+  EXPECT_EQ(g.kept(0), BoxGroups::Mat3{});
+  EXPECT_EQ(g.kept(1), shear(1e-6));
+}
+
+// A member driven off its group leaves at the step its deviation passes the tolerance.
+TEST(BoxGroups, AMemberLeavesWhenItsDeviationPassesTheTolerance) {
+  ShareOptions o;
+  o.tolerance = 1e-4;
+  BoxGroups g(std::vector<double>(3, 0.0), o);
+  const double dt = 0.01, rate = 0.4e-3;  // point 2 departs by 4e-6 per step: 25 steps to 1e-4
+  std::vector<BoxGroups::Mat3> L(3, BoxGroups::Mat3{});
+  L[2] = shear(rate);
+  int left_at = -1;
+  for (int step = 1; step <= 40 && left_at < 0; ++step) {
+    const auto s = g.split(L, dt);
+    if (!s.clones.empty()) left_at = step;
+    g.keep_means(L);
+    g.accumulate(L, dt);
+  }
+  // The kept gradient is the mean of three, so the stayers deviate by rate/3 per unit
+  // time and the driven member by 2 rate/3: it passes 1e-4 at step ceil(1e-4 / (2/3 rate dt)).
+  const double per_step = 2.0 / 3.0 * rate * dt;
+  EXPECT_EQ(left_at, static_cast<int>(std::ceil(1e-4 / per_step - 1e-9))) << per_step;
+  ASSERT_EQ(g.groups(), 2u);
+  EXPECT_EQ(g.members(1), (std::vector<std::size_t>{2}));
+  EXPECT_EQ(g.deviation(2), 0.0 + BoxGroups::distance(L[2], g.kept(1)) * dt);
+}
+
+TEST(BoxGroups, WhenEveryMemberLeavesTheFirstNewGroupKeepsTheBox) {
+  ShareOptions o;
+  o.tolerance = 0.0;
+  BoxGroups g(std::vector<double>(4, 0.0), o);
+  std::vector<BoxGroups::Mat3> L{shear(1.0), shear(1.0), shear(2.0), shear(2.0)};
+  const auto s = g.split(L, 0.01);
+  ASSERT_EQ(g.groups(), 2u);
+  EXPECT_EQ(g.members(0), (std::vector<std::size_t>{0, 1}));
+  EXPECT_EQ(g.members(1), (std::vector<std::size_t>{2, 3}));
+  ASSERT_EQ(s.clones.size(), 1u);
+  EXPECT_EQ(s.clones[0].from, 0u);
+}
+
+TEST(BoxGroups, AuditorsAreDrawnFromTheSeedAndDroppedWhenTheyLeave) {
+  ShareOptions o;
+  o.audit = 2;
+  BoxGroups a(std::vector<double>(10, 0.0), o), b(std::vector<double>(10, 0.0), o);
+  const auto da = a.draw_auditors(0), db = b.draw_auditors(0);
+  EXPECT_EQ(da.size(), 2u);
+  EXPECT_EQ(da, db);
+  EXPECT_TRUE(a.draw_auditors(1).empty());  // the group has its two
+  o.seed = 7;
+  BoxGroups c(std::vector<double>(10, 0.0), o);
+  const auto dc = c.draw_auditors(0);
+  EXPECT_EQ(dc.size(), 2u);
+  // An auditor that leaves its group ends its audit.
+  o.tolerance = 0.0;
+  BoxGroups d(std::vector<double>(10, 0.0), o);
+  const auto dd = d.draw_auditors(0);
+  std::vector<BoxGroups::Mat3> L(10, BoxGroups::Mat3{});
+  L[dd[0]] = shear(1.0);
+  const auto s = d.split(L, 0.01);
+  EXPECT_EQ(s.dropped, (std::vector<std::size_t>{dd[0]}));
+  EXPECT_FALSE(d.auditor(dd[0]));
+}
+
+TEST(BoxGroups, SavedGroupsLoadWholeAndDamagedOnesAreRefused) {
+  ShareOptions o;
+  o.tolerance = 0.0;
+  BoxGroups g(std::vector<double>(5, 0.0), o);
+  std::vector<BoxGroups::Mat3> L{shear(1.0), {}, shear(1.0), {}, shear(3.0)};
+  g.split(L, 0.01);
+  g.keep_means(L);
+  g.accumulate(L, 0.01);
+  g.draw_auditors(3);
+  std::stringstream out;
+  g.save(out);
+  BoxGroups back;
+  back.load(out);
+  ASSERT_EQ(back.groups(), g.groups());
+  for (std::size_t k = 0; k < g.groups(); ++k) {
+    EXPECT_EQ(back.members(k), g.members(k));
+    EXPECT_EQ(back.kept(k), g.kept(k));
+  }
+  for (std::size_t p = 0; p < 5; ++p) {
+    EXPECT_EQ(back.deviation(p), g.deviation(p));
+    EXPECT_EQ(back.auditor(p), g.auditor(p));
+  }
+  std::string bytes = out.str();
+  std::stringstream cut(bytes.substr(0, bytes.size() / 2));
+  EXPECT_THROW(back.load(cut), InputError);
+}
