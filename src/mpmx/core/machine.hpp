@@ -9,6 +9,9 @@ namespace mpmx {
 // Physical memory in bytes (sysconf; /proc/meminfo as a fallback); 0 when unknown.
 std::uint64_t physical_memory_bytes();
 
+// The most memory this process has held so far (its peak resident set), in bytes.
+std::uint64_t peak_memory_bytes();
+
 // std::thread::hardware_concurrency(), at least 1.
 unsigned hardware_threads();
 

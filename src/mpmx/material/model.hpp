@@ -37,6 +37,7 @@ struct Context {
 // The cost a law adds to every point beyond the continuum's own (md_closure: its MD box).
 struct PointCost {
   double bytes = 0;          // held per point
+  double scratch_bytes = 0;  // held per thread while the model steps
   double atoms = 0;          // atoms per point (0: no model inside the points)
   double steps_per_step = 0; // its steps per continuum step
   double setup_steps = 0;    // its steps before the first continuum step (relaxation)

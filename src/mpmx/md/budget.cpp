@@ -38,6 +38,12 @@ double box_bytes(const double n[3], double a, double reach) {
   return kBytesPerLocal * atoms + kBytesPerEntry * entries + kBytesPerPair * pairs;
 }
 
+double compact_box_bytes(double atoms) {
+  constexpr double kBytesPerAtom = 9 * 8 + 4 + 8;  // x, v, f; type; id
+  constexpr double kBytesPerBox = 2048;            // the System itself, its vectors and stream
+  return kBytesPerAtom * atoms + kBytesPerBox;
+}
+
 MdBudget estimate_md(const MdConfig& c, double cutoff) {
   MdBudget b;
   const double a = c.lattice_constant, reach = cutoff + c.options.skin;

@@ -28,6 +28,10 @@ struct MdBudget {
 // same fit as estimate_md, for the md_closure boxes of a continuum deck.
 double box_bytes(const double n[3], double a, double reach);
 
+// Bytes a box holds between the macro steps of a multiscale run (System::compact: its
+// atoms' positions, velocities, forces, types and ids, and the box's own small state).
+double compact_box_bytes(double atoms);
+
 // `cutoff`: the potential's (Potential::cutoff()).
 MdBudget estimate_md(const MdConfig& c, double cutoff);
 

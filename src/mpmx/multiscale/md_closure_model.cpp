@@ -27,7 +27,10 @@ std::string MdClosureModel::time_step_problem(double dt) const {
 material::PointCost MdClosureModel::point_cost(double dt) const {
   material::PointCost c;
   const double n[3] = {double(md.cells), double(md.cells), double(md.cells)};
-  c.bytes = md::box_bytes(n, 3.615, 8.0 + md.skin);
+  constexpr double kClosureBytesPerPoint = 256;  // rotation, group, deviation, stress and shape records
+  c.bytes = md::compact_box_bytes(md.atoms_per_point()) + kClosureBytesPerPoint;
+  // A Cu-like fcc box (a = 3.615 A) reached by an 8 A cutoff plus skin, whole (md/budget's fit).
+  c.scratch_bytes = md::box_bytes(n, 3.615, 8.0 + md.skin);
   c.atoms = md.atoms_per_point();
   c.steps_per_step = dt > 0 && md.dt > 0 ? std::max(1.0, dt / md.dt) : 1.0;
   c.setup_steps = static_cast<double>(md.relax_steps);

@@ -22,8 +22,10 @@ struct MdClosureModel final : material::Model {
   bool per_body() const override { return false; }
   // A continuum step must be a whole number of MD steps.
   std::string time_step_problem(double dt) const override;
-  // The box of a point (its bytes by the md/budget fit of a Cu-like fcc box reached by
-  // an 8 A cutoff plus skin) and its atom-steps.
+  // The box of a point as it is kept between macro steps (md/budget's compact box), the
+  // closure's own records of the point, and its atom-steps: one box per point, the most
+  // sharing can cost (it cannot know the groups before the run). The lists and buffers of
+  // a box being advanced are per thread (scratch_bytes).
   material::PointCost point_cost(double dt) const override;
   std::string build_note() const override;
   std::unique_ptr<material::Material<1>> make1() const override;

@@ -114,7 +114,9 @@ void add_mpm_commands(CLI::App& app) {
                budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string(),
                budget.ranks > 1 ? fmt::format(" (each of {} ranks)", budget.ranks) : std::string());
     if (budget.md_atom_steps > 0)
-      fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.0e} atom-steps/s per core\n",
+      fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.0e} atom-steps/s per core, "
+                 "with one box per point: the most it can cost (boxes shared by history run fewer, as run.json's "
+                 "md.atom_steps against md.atom_steps_unshared says; the memory is that of one box per point too)\n",
                  budget.points, budget.md_atoms_per_point, budget.md_atom_steps,
                  budget.md_atom_steps / md::kMdAtomStepsPerSecond / 3600.0, md::kMdAtomStepsPerSecond);
   });

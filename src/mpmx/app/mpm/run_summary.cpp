@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/core/machine.hpp"
+#include "mpmx/core/ranks.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/mpm/phase_times.hpp"
 
@@ -82,6 +84,8 @@ void record_run(const MpmConfig& c, const RunResultOf<Dim>& r, const std::string
   rec.set("time", s.time);
   rec.set("wall_seconds", r.wall_seconds);
   rec.set("particles", static_cast<std::int64_t>(s.particles.size()));
+  // The largest rank's peak resident memory.
+  rec.set("peak_memory_bytes", static_cast<std::int64_t>(ranks::max({static_cast<double>(peak_memory_bytes())})[0]));
   rec.set("particle_steps_per_second",
           r.wall_seconds > 0 ? static_cast<double>(s.particles.size()) * r.steps / r.wall_seconds : 0.0);
   if (s.phases.total() > 0)  // the stencil step's phases, seconds of this invocation (not the fused 1-D step's)
