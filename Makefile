@@ -21,7 +21,7 @@ build: deps
 # Release build with every label, then the sanitizer build (long validation runs are
 # labelled slow and stay in the Release pass only). Both are portable builds: the 1-D and
 # MD vector kernels hold every vector path in any build (CMakeLists.txt), and both passes
-# run their tests on each path this machine has (fused_path_test, md_eam_isa_test).
+# run their tests on each path this machine has (fused_path_test, eam_one_type_test).
 test: test-release test-sanitize
 
 test-release: build

@@ -21,8 +21,8 @@
 #include <string>
 #include <unistd.h>
 
+#include "mpmx/app/dpd/lammps_deck.hpp"
 #include "mpmx/core/units.hpp"
-#include "mpmx/dpd/lammps_deck.hpp"
 #include "mpmx/dpd/setup.hpp"
 #include "mpmx/dpd/system.hpp"
 
@@ -100,16 +100,16 @@ int main(int argc, char** argv) {
                 r2[k], r2[k] / r1[k]);
   }
 
-  if (!dpd::lammps_available()) {
+  if (!app::dpd::lammps_available()) {
     std::printf("LAMMPS: lmp is not installed (apt-get install lammps): no ratio\n");
     return 0;
   }
   const std::string dir =
       (std::filesystem::temp_directory_path() / ("mpmx_dpd_bench_" + std::to_string(getpid()))).string();
   const dpd::System s = make(cells, cases[2], 1);
-  dpd::write_lammps_dpd(s, {.steps = steps + 5, .dt = 0.005, .dump_forces = false}, dir);
+  app::dpd::write_lammps_dpd(s, {.steps = steps + 5, .dt = 0.005, .dump_forces = false}, dir);
   double loop = 1e300;
-  for (int r = 0; r < repeats; ++r) loop = std::min(loop, dpd::run_lammps_dpd(dir).loop_seconds);
+  for (int r = 0; r < repeats; ++r) loop = std::min(loop, app::dpd::run_lammps_dpd(dir).loop_seconds);
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);
   const double lmp = static_cast<double>(n) * (steps + 5) / loop;

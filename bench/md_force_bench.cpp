@@ -4,15 +4,15 @@
 // (a multiscale box under shear and shock) pays.
 #include <benchmark/benchmark.h>
 
-#include "mpmx/md/lattice.hpp"
-#include "mpmx/md/neighbor.hpp"
 #include "mpmx/md/system.hpp"
+#include "mpmx/particles/lattice.hpp"
+#include "mpmx/particles/neighbor.hpp"
 
 using namespace mpmx::md;
 
 namespace {
 System make(int cells, bool mixed) {
-  PotentialSpec spec;
+  EamSpec spec;
   spec.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
   SystemOptions o;
   o.mixed_precision = mixed;

@@ -12,24 +12,12 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/exit_codes.hpp"
+#include "cli_util.hpp"
 
 namespace {
+using Result = mpmx::test::CliResult;
+constexpr auto mpmx_cli = mpmx::test::run_cli;
 
-struct Result {
-  int status;
-  std::string output;
-};
-
-Result mpmx_cli(const std::string& args) {
-  const std::string cmd = std::string(MPMX_BINARY) + " " + args + " 2>&1";
-  Result r{-1, {}};
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, p)) r.output += buf;
-  const int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
 
 std::size_t count(const std::string& s, const std::string& what) {
   std::size_t n = 0;

@@ -10,7 +10,7 @@
 
 #include "mpmx/dpd/setup.hpp"
 #include "mpmx/dpd/system.hpp"
-#include "mpmx/md/rng.hpp"
+#include "mpmx/particles/rng.hpp"
 
 namespace mpmx::test {
 

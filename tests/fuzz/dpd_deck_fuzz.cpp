@@ -4,8 +4,8 @@
 #include <cstdint>
 
 #include "fuzz_util.hpp"
+#include "mpmx/app/dpd/config.hpp"
 #include "mpmx/core/error.hpp"
-#include "mpmx/dpd/config.hpp"
 #include "mpmx/dpd/elastic.hpp"
 #include "mpmx/io/deck.hpp"
 
@@ -16,7 +16,7 @@ inline int dpd_deck(const std::uint8_t* data, std::size_t size) {
   const std::string path = fuzz::as_file("dpd.toml", fuzz::view(data, size));
   try {
     auto deck = io::Deck::from_file(path);
-    const dpd::DpdConfig c = dpd::read_dpd_config(deck);
+    const app::dpd::DpdConfig c = app::dpd::read_dpd_config(deck);
     if (c.continuum.on && c.continuum.from_potential)
       (void)dpd::fcc_born_constants(c.potential, c.continuum.lattice_constant);
   } catch (const InputError&) {

@@ -18,8 +18,7 @@ inline int eam(const std::uint8_t* data, std::size_t size) {
   try {
     const md::EamTables t = md::read_eam(path);
     if (t.elements.empty()) return 0;
-    md::PotentialSpec spec;
-    spec.style = "eam";
+    md::EamSpec spec;
     spec.file = path;
     spec.elements = {t.elements.front()};
     const md::Potential pot(spec);

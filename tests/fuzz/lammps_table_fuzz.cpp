@@ -3,8 +3,8 @@
 #include <cstdint>
 
 #include "fuzz_util.hpp"
+#include "mpmx/app/md/lammps_bar.hpp"
 #include "mpmx/core/error.hpp"
-#include "mpmx/md/lammps_bar.hpp"
 
 namespace mpmx::fuzz {
 
@@ -14,7 +14,7 @@ inline int lammps_table(const std::uint8_t* data, std::size_t size) {
   const int bins = 1 + data[0] % 8;
   const std::string path = fuzz::as_file("bar_stress.lammps", fuzz::view(data + 1, size - 1));
   try {
-    (void)md::read_lammps_bar_stress(path, 0.001, bins);
+    (void)app::md::read_lammps_bar_stress(path, 0.001, bins);
   } catch (const InputError&) {
   }
   return 0;

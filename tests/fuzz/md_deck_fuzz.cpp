@@ -3,10 +3,10 @@
 #include <cstdint>
 
 #include "fuzz_util.hpp"
+#include "mpmx/app/md/budget.hpp"
+#include "mpmx/app/md/config.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/io/deck.hpp"
-#include "mpmx/md/budget.hpp"
-#include "mpmx/md/config.hpp"
 #include "mpmx/md/potential/potential.hpp"
 
 namespace mpmx::fuzz {
@@ -16,9 +16,9 @@ inline int md_deck(const std::uint8_t* data, std::size_t size) {
   const std::string path = fuzz::as_file("md.toml", fuzz::view(data, size));
   try {
     auto deck = io::Deck::from_file(path);
-    const md::MdConfig c = md::read_md_config(deck);
+    const app::md::MdConfig c = app::md::read_md_config(deck);
     const md::Potential pot(c.potential);
-    md::check_md_budget(md::estimate_md(c, pot.cutoff()), std::uint64_t{1} << 34, false);
+    app::md::check_md_budget(app::md::estimate_md(c, pot.cutoff()), std::uint64_t{1} << 34, false);
   } catch (const InputError&) {
   }
   return 0;

@@ -291,8 +291,8 @@ TEST(CubicElastic, ConstantsFromThePotential) {
   EXPECT_NEAR(cubic->c.c12, 122.6, 0.01 * 122.6);
   EXPECT_NEAR(cubic->c.c44, 76.2, 0.01 * 76.2);
   EXPECT_NEAR(cubic->density(), 8.93, 0.01);  // g/cm^3 in nm_ps_GPa
-  md::PotentialSpec spec;
-  spec.style = "eam", spec.file = md::resolve_potential_file("Cu_mishin1.eam.alloy", ""), spec.elements = {"Cu"};
+  md::EamSpec spec;
+  spec.file = md::resolve_potential_file("Cu_mishin1.eam.alloy", ""), spec.elements = {"Cu"};
   EXPECT_DOUBLE_EQ(cubic->c.c11, multiscale::md_closure_properties(spec, *units::unit_system("nm_ps_GPa")).modulus);
 
   auto bad = io::Deck::from_string(

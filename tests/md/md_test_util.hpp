@@ -12,7 +12,7 @@
 namespace mpmx::test {
 
 inline md::PotentialSpec copper_spec() {
-  md::PotentialSpec spec;
+  md::EamSpec spec;
   spec.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
   return spec;
 }

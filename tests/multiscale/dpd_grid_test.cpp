@@ -26,7 +26,7 @@ dpd::Particles rod(std::uint64_t seed) {
 }
 
 multiscale::DpdGrid grid_over(const dpd::Particles& p, double cell, int threads = 1) {
-  md::Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  particles::Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double x[3] = {p.x[i], p.y[i], p.z[i]};
     for (int d = 0; d < 3; ++d) lo[d] = std::min(lo[d], x[d] - 10), hi[d] = std::max(hi[d], x[d] + 10);

@@ -10,7 +10,7 @@
 
 #include "mpmx/app/mpm/deck.hpp"
 #include "mpmx/multiscale/md_closure.hpp"
-#include "mpmx/md/lattice.hpp"
+#include "mpmx/particles/lattice.hpp"
 #include "mpmx/mpm/points.hpp"
 #include "mpmx/app/mpm/run.hpp"
 #include "ms_test_util.hpp"

@@ -9,7 +9,8 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/multiscale/md_closure.hpp"
-#include "mpmx/md/config.hpp"
+#include "mpmx/app/md/config.hpp"
+#include "mpmx/md/potential/registry.hpp"
 #include "mpmx/md/equilibrium.hpp"
 #include "mpmx/mpm/points.hpp"
 #include "ms_test_util.hpp"
@@ -214,7 +215,7 @@ TEST(HDecks, ValidAndDescribeTheirDirectMdBar) {
     ASSERT_EQ(c.reference.name, "direct_md") << name;
     const std::string md_deck = fs::path(c.reference.file).parent_path().filename().string() + ".toml";
     auto deck = io::Deck::from_file((fs::path(MPMX_SOURCE_DIR) / "examples" / md_deck).string());
-    const auto md = md::read_md_config(deck);
+    const auto md = app::md::read_md_config(deck);
     ASSERT_TRUE(md.bar) << md_deck;
     const auto& b = md.bar_config;
     EXPECT_EQ(c.strain.left, b.strain_left) << name;

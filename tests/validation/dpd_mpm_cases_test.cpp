@@ -26,9 +26,9 @@
 #include <fmt/format.h>
 
 #include "md/md_test_util.hpp"
-#include "mpmx/dpd/config.hpp"
+#include "mpmx/app/dpd/config.hpp"
+#include "mpmx/app/dpd/run.hpp"
 #include "mpmx/dpd/elastic.hpp"
-#include "mpmx/dpd/run.hpp"
 #include "mpmx/io/deck.hpp"
 #include "mpmx/multiscale/dpd_mpm.hpp"
 
@@ -79,12 +79,12 @@ std::string grid(double cell) {
   return cell > 0 ? fmt::format("[grid]\ncell = {}\nmargin = 30.0\n", cell) : std::string();
 }
 
-dpd::DpdRunSummary run(const std::string& name, const std::string& text) {
+app::dpd::DpdRunSummary run(const std::string& name, const std::string& text) {
   io::Deck deck = io::Deck::from_string(text, name);
-  const dpd::DpdConfig c = dpd::read_dpd_config(deck);
+  const app::dpd::DpdConfig c = app::dpd::read_dpd_config(deck);
   const fs::path out = dir() / name;
   fs::create_directories(out);
-  return dpd::run_dpd(c, out.string(), deck.table(), 2, true, multiscale::dpd_mpm_mover(c, 2));
+  return app::dpd::run_dpd(c, out.string(), deck.table(), 2, true, multiscale::dpd_mpm_mover(c.grid, c.continuum, c.potential, 2));
 }
 
 std::map<std::string, std::vector<double>> csv(const fs::path& p) {
@@ -234,7 +234,7 @@ double zero_pressure_lattice() {
   io::Deck deck = io::Deck::from_string(fmt::format("[potential]\nfile = \"{}/examples/cu_sc_298K_morse.toml\"\n",
                                                     MPMX_SOURCE_DIR),
                                         "potential");
-  const dpd::PairPotential pot = dpd::read_pair_potential(deck.root().table("potential"));
+  const dpd::PairPotential pot = app::dpd::read_potential(deck.root().table("potential"));
   double lo = 6.5, hi = 8.0;
   for (int it = 0; it < 60; ++it) {
     const double mid = 0.5 * (lo + hi);

@@ -86,7 +86,7 @@ def first_peak_end(u, step, start=0):
 
 
 def onset_time(t, u, rise, sign):
-    """The run's onset rule (dpd/analysis.cpp, Recorder::onset_time): the first time u has
+    """The run's onset rule (app/dpd/analysis.cpp, Recorder::onset_time): the first time u has
     risen `rise` along `sign` above its lowest value so far, interpolated in the record."""
     lowest = sign * u[0] if u else 0.0
     for r in range(1, len(u)):

@@ -19,6 +19,11 @@ Progress::Progress(std::string label, std::int64_t total, bool quiet, std::int64
     : label_(std::move(label)), total_(total), from_(from), active_(!quiet), terminal_(isatty(fileno(stderr))),
       start_(clock::now()), last_(start_) {}
 
+void Progress::show_rate(double items, std::string unit) {
+  items_ = items;
+  unit_ = std::move(unit);
+}
+
 void Progress::update(std::int64_t done) {
   if (!active_) return;
   const auto now = clock::now();
@@ -28,18 +33,21 @@ void Progress::update(std::int64_t done) {
   const double frac = total_ > 0 ? static_cast<double>(done) / total_ : 1.0;
   const double rate = done > from_ ? (done - from_) / elapsed : 0.0;
   const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
-  fmt::print(stderr, "{}{}: {:5.1f}%  step {}/{}  elapsed {}  ETA {}{}", terminal_ ? "\r" : "", label_,
-             100.0 * frac, done, total_, duration(elapsed), duration(eta), terminal_ ? "   " : "\n");
+  const std::string shown_rate = unit_.empty() ? "" : fmt::format("  {:.3g} {}/s", items_ * rate, unit_);
+  fmt::print(stderr, "{}{}: {:5.1f}%  step {}/{}{}  elapsed {}  ETA {}{}", terminal_ ? "\r" : "", label_,
+             100.0 * frac, done, total_, shown_rate, duration(elapsed), duration(eta), terminal_ ? "   " : "\n");
   std::fflush(stderr);
 }
 
-void Progress::finish() {
+void Progress::finish() { finish(total_); }
+
+void Progress::finish(std::int64_t done) {
   if (!active_) return;
   const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
   if (terminal_)
-    fmt::print(stderr, "\r{}: done, {} steps in {}{:30}\n", label_, total_ - from_, duration(elapsed), "");
+    fmt::print(stderr, "\r{}: done, {} steps in {}{:30}\n", label_, done - from_, duration(elapsed), "");
   else if (elapsed > 60)
-    fmt::print(stderr, "{}: done, {} steps in {}\n", label_, total_ - from_, duration(elapsed));
+    fmt::print(stderr, "{}: done, {} steps in {}\n", label_, done - from_, duration(elapsed));
 }
 
 }  // namespace mpmx

@@ -12,13 +12,19 @@ class Progress {
  public:
   // `from`: steps already done before this process (a resumed run); the ETA uses the rate since.
   Progress(std::string label, std::int64_t total, bool quiet = false, std::int64_t from = 0);
+  // Also show the rate of `items` x steps a second (an MD box's atoms: "atom-steps").
+  void show_rate(double items, std::string unit);
   void update(std::int64_t done);
   void finish();
+  // A run that stopped early (a state gone non-finite): the steps it did.
+  void finish(std::int64_t done);
 
  private:
   using clock = std::chrono::steady_clock;
   std::string label_;
   std::int64_t total_, from_;
+  double items_ = 0;
+  std::string unit_;
   bool active_, terminal_;
   clock::time_point start_, last_;
 };

@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace mpmx {
@@ -71,5 +72,16 @@ struct Registry {
     }
   }
 };
+
+// The variant of a registry's entries, alternatives in list order (so Registry::index
+// of a name is the index of its entry's alternative): a spec that holds one entry.
+template <class R>
+struct VariantOfRegistry;
+template <class... Entries>
+struct VariantOfRegistry<Registry<Entries...>> {
+  using type = std::variant<Entries...>;
+};
+template <class R>
+using VariantOf = typename VariantOfRegistry<R>::type;
 
 }  // namespace mpmx

@@ -6,12 +6,12 @@
 #include <array>
 #include <cmath>
 
-#include "mpmx/md/box.hpp"
+#include "mpmx/particles/box.hpp"
 
 namespace mpmx::dpd {
 
 struct Domain {
-  md::Box box;                                     // orthogonal: xy = xz = yz = 0
+  particles::Box box;                                     // orthogonal: xy = xz = yz = 0
   std::array<bool, 3> periodic{true, true, true};
 
   double length(int d) const { return d == 0 ? box.lx : d == 1 ? box.ly : box.lz; }

@@ -15,15 +15,15 @@ namespace {
 // Pairs closer than this are skipped (coincident soft particles; LAMMPS pair dpd does the same).
 constexpr double kMinR2 = 1e-20;
 
-// Pair forces tile by tile (md::Neighbors tiles: runs of consecutive particles): each
-// pair's force added to its particle i's sum and taken from its partner's entry in the
+// Pair forces tile by tile (particles::Neighbors tiles: runs of consecutive particles):
+// each pair's force added to its particle i's sum and taken from its partner's entry in the
 // tile's own force array (3 per entry of the tile, small enough for a core's cache);
 // energy and virial per particle i when Tally. Which thread takes which tile changes
 // no number.
 template <class Pot, bool Stochastic, bool Tally>
 void pair_pass(const Pot& pot, const PairList& list, const Particles& p, const StochasticForces& st, ForceBuffers& buf,
                int threads, const std::uint8_t* no_pair) {
-  const md::Neighbors& nb = list.nb;
+  const particles::Neighbors& nb = list.nb;
   const int ntile = static_cast<int>(nb.tile_atom.size()) - 1;
   const double* __restrict q = nb.xyz.data();
   const int* __restrict first = nb.first.data();
@@ -94,7 +94,7 @@ void pair_pass(const Pot& pot, const PairList& list, const Particles& p, const S
 
 }  // namespace
 
-md::ForceSums compute_pair_forces(const PairPotential& pot, const PairList& list, Particles& p,
+particles::ForceSums compute_pair_forces(const PairPotential& pot, const PairList& list, Particles& p,
                                   const StochasticForces* stochastic, ForceBuffers& buf, int threads, bool tally,
                                   const std::uint8_t* no_pair) {
   const int n = list.nb.nlocal;
@@ -130,7 +130,7 @@ md::ForceSums compute_pair_forces(const PairPotential& pot, const PairList& list
     fx[j] = sx, fy[j] = sy, fz[j] = sz;
   }
 
-  md::ForceSums sums;
+  particles::ForceSums sums;
   if (!tally) return sums;
   for (int i = 0; i < n; ++i) {
     sums.energy += buf.energy[i];

@@ -20,7 +20,7 @@
 #include "mpmx/dpd/pair_list.hpp"
 #include "mpmx/dpd/particles.hpp"
 #include "mpmx/dpd/potential/registry.hpp"
-#include "mpmx/md/forces.hpp"
+#include "mpmx/particles/force_sums.hpp"
 
 namespace mpmx::dpd {
 
@@ -46,7 +46,7 @@ struct ForceBuffers {
 // list's positions must be current (PairList::update_positions).
 // `no_pair` (null: none): particles flagged there do not interact with each other (the
 // continuum points of a concurrent run); their pairs with the others count as usual.
-md::ForceSums compute_pair_forces(const PairPotential& pot, const PairList& list, Particles& p,
+particles::ForceSums compute_pair_forces(const PairPotential& pot, const PairList& list, Particles& p,
                                   const StochasticForces* stochastic, ForceBuffers& buf, int threads,
                                   bool tally = true, const std::uint8_t* no_pair = nullptr);
 

@@ -4,6 +4,9 @@
 // eV/Angstrom), a mover sets the velocities and positions of every particle (mobile,
 // rigid and external) one step dt later. The DPD/MPM-grid model (seed 004 sec. 3.2,
 // steps s1-s14) is one: its grid lives in multiscale/, so dpd/ knows only this.
+#include <functional>
+#include <memory>
+
 #include <toml++/toml.h>
 
 #include "mpmx/dpd/particles.hpp"
@@ -17,5 +20,12 @@ class Mover {
   // What run.json records of the model (its name, grid, counters).
   virtual void report(toml::table& out) const = 0;
 };
+
+class System;
+
+// Makes the mover of a run (the DPD/MPM grid) from the system at the run's start, after
+// the equilibration and the continuum's points are marked; empty: the system's own
+// velocity Verlet.
+using MoverFactory = std::function<std::unique_ptr<Mover>(System&)>;
 
 }  // namespace mpmx::dpd

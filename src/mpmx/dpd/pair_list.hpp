@@ -1,6 +1,6 @@
 #pragma once
-// The DPD pair list: the MD engine's cell-binned half Verlet list with a skin
-// (md::Neighbors: each physical pair once, ghosts for periodic images, open axes
+// The DPD pair list: the particle layer's cell-binned half Verlet list with a skin
+// (particles::Neighbors: each physical pair once, ghosts for periodic images, open axes
 // allowed) with its tiles (the pair forces' fixed order for any thread count,
 // forces.hpp), the particle i of each slot, and optionally the order of the Shardlow
 // sweep: slabs of thickness >= (cutoff + skin)/2 across the longest axis (by the
@@ -15,7 +15,7 @@
 
 #include "mpmx/dpd/domain.hpp"
 #include "mpmx/dpd/particles.hpp"
-#include "mpmx/md/neighbor.hpp"
+#include "mpmx/particles/neighbor.hpp"
 
 namespace mpmx::dpd {
 
@@ -31,7 +31,7 @@ class PairList {
   int slots() const { return static_cast<int>(nb.list.size()); }
   int slabs() const { return static_cast<int>(slab_first.size()) - 1; }
 
-  md::Neighbors nb;               // with its tiles
+  particles::Neighbors nb;               // with its tiles
   std::vector<int> slot_i;        // particle i of each slot
   std::vector<int> sweep;         // Shardlow order: slots grouped by slab, slabs by phase
   std::vector<int> slab_first;    // slab b owns sweep[slab_first[b] .. slab_first[b+1])

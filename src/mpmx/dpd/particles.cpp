@@ -3,14 +3,14 @@
 namespace mpmx::dpd {
 
 void Particles::resize(std::size_t n) {
-  md::Atoms::resize(n);
+  particles::Atoms::resize(n);
   mass.resize(n, 0.0);
   u.resize(n, 0.0);
   group.resize(n, kMobile);
 }
 
 void Particles::push_back(double px, double py, double pz, double m, int t, std::int64_t ident) {
-  md::Atoms::push_back(px, py, pz, t, ident);
+  particles::Atoms::push_back(px, py, pz, t, ident);
   mass.push_back(m);
   u.push_back(0.0);
   group.push_back(kMobile);
@@ -26,7 +26,7 @@ void apply(std::vector<T>& v, const std::vector<std::size_t>& order) {
 }  // namespace
 
 void Particles::permute(const std::vector<std::size_t>& order) {
-  md::Atoms::permute(order);
+  particles::Atoms::permute(order);
   apply(mass, order);
   apply(u, order);
   apply(group, order);

@@ -1,22 +1,23 @@
 #pragma once
-// DPD mesoparticles as structure-of-arrays: md::Atoms' kinematics (positions,
+// DPD mesoparticles as structure-of-arrays: particles::Atoms' kinematics (positions,
 // velocities, forces, type, id) plus, per particle, a mass, an internal energy (DPDE,
 // seed 004 sec. 2.2) and the rigid group it belongs to (kMobile when it is free).
 //
-// Particles is an md::Atoms so that the MD engine's neighbour lists (md::Neighbors)
-// serve it unchanged; resize, push_back and permute here keep the extra fields in step
-// (call them on a Particles, not through an md::Atoms reference).
+// Particles is a particles::Atoms so that the neighbour lists both engines use
+// (particles::Neighbors) serve it unchanged; resize, push_back and permute here keep the
+// extra fields in step (call them on a Particles, not through a particles::Atoms
+// reference).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "mpmx/md/atoms.hpp"
+#include "mpmx/particles/atoms.hpp"
 
 namespace mpmx::dpd {
 
 inline constexpr int kMobile = -1;
 
-struct Particles : md::Atoms {
+struct Particles : particles::Atoms {
   std::vector<double> mass;  // amu
   std::vector<double> u;     // internal energy, eV (DPDE; 0 in isothermal DPD)
   std::vector<int> group;    // rigid group index, or kMobile

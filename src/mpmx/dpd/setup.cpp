@@ -8,14 +8,14 @@
 #include "mpmx/core/units.hpp"
 #include "mpmx/dpd/pair_random.hpp"
 #include "mpmx/dpd/thermostat.hpp"
-#include "mpmx/md/lattice.hpp"
-#include "mpmx/md/rng.hpp"
+#include "mpmx/particles/lattice.hpp"
+#include "mpmx/particles/rng.hpp"
 
 namespace mpmx::dpd {
 
-Particles fcc_block(const std::array<int, 3>& cells, double a, const md::Vec3& origin, double mass, int type,
+Particles fcc_block(const std::array<int, 3>& cells, double a, const particles::Vec3& origin, double mass, int type,
                     std::int64_t first_id) {
-  const md::Crystal c = md::fcc(cells[0], cells[1], cells[2], a, 0.0, type);
+  const particles::Crystal c = particles::fcc(cells[0], cells[1], cells[2], a, 0.0, type);
   Particles p;
   for (std::size_t i = 0; i < c.atoms.size(); ++i)
     p.push_back(origin[0] + c.atoms.x[i], origin[1] + c.atoms.y[i], origin[2] + c.atoms.z[i], mass, type,
@@ -23,12 +23,12 @@ Particles fcc_block(const std::array<int, 3>& cells, double a, const md::Vec3& o
   return p;
 }
 
-Particles random_block(long count, const md::Vec3& size, const md::Vec3& origin, double mass, int type,
+Particles random_block(long count, const particles::Vec3& size, const particles::Vec3& origin, double mass, int type,
                        std::int64_t first_id, std::uint64_t seed) {
   if (count < 0 || !(size[0] > 0 && size[1] > 0 && size[2] > 0))
     throw InputError(fmt::format("random block: count {} in {} x {} x {}: need count >= 0 and a positive size",
                                  count, size[0], size[1], size[2]));
-  md::RngStream rng(seed, 0);
+  particles::RngStream rng(seed, 0);
   Particles p;
   for (long i = 0; i < count; ++i) {
     const double x = origin[0] + size[0] * rng.uniform();
@@ -55,7 +55,7 @@ void maxwell_velocities(Particles& p, double temperature_K, std::uint64_t seed) 
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.rigid(i)) continue;
     // Three normal components from the particle's own stream: independent of order.
-    md::RngStream rng(seed, mix64(static_cast<std::uint64_t>(p.id[i])));
+    particles::RngStream rng(seed, mix64(static_cast<std::uint64_t>(p.id[i])));
     const double sd = std::sqrt(units::boltzmann_eV_per_K * temperature_K / (p.mass[i] * units::mvv2e));
     p.vx[i] = sd * rng.normal(), p.vy[i] = sd * rng.normal(), p.vz[i] = sd * rng.normal();
     mt += p.mass[i], px += p.mass[i] * p.vx[i], py += p.mass[i] * p.vy[i], pz += p.mass[i] * p.vz[i];

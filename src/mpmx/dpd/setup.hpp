@@ -5,17 +5,17 @@
 #include <cstdint>
 
 #include "mpmx/dpd/particles.hpp"
-#include "mpmx/md/box.hpp"
+#include "mpmx/particles/box.hpp"
 
 namespace mpmx::dpd {
 
 // nx x ny x nz cubic fcc cells of lattice constant a with the lower corner at `origin`;
 // ids first_id, first_id + 1, ...
-Particles fcc_block(const std::array<int, 3>& cells, double a, const md::Vec3& origin, double mass, int type,
+Particles fcc_block(const std::array<int, 3>& cells, double a, const particles::Vec3& origin, double mass, int type,
                     std::int64_t first_id);
 
 // `count` particles uniformly in [origin, origin + size), from the stream (seed, 0).
-Particles random_block(long count, const md::Vec3& size, const md::Vec3& origin, double mass, int type,
+Particles random_block(long count, const particles::Vec3& size, const particles::Vec3& origin, double mass, int type,
                        std::int64_t first_id, std::uint64_t seed);
 
 // Appends b's particles to a.

@@ -12,7 +12,7 @@ namespace {
 
 template <bool Dpde>
 void sweep(const PairList& list, Particles& p, const SweepParams& sp, SweepWork& work, int threads) {
-  const md::Neighbors& nb = list.nb;
+  const particles::Neighbors& nb = list.nb;
   const int n = nb.nlocal;
   const double* __restrict q = nb.xyz.data();
   const int* __restrict slot_i = list.slot_i.data();

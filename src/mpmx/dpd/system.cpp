@@ -138,7 +138,7 @@ void System::compute_forces(double dt, bool tally) {
     st.seed = par_.seed;
     st.step = step_;
   }
-  const md::ForceSums s = compute_pair_forces(pot_, list_, p_, stochastic ? &st : nullptr, buf_, opt_.threads, tally,
+  const particles::ForceSums s = compute_pair_forces(pot_, list_, p_, stochastic ? &st : nullptr, buf_, opt_.threads, tally,
                                               no_pair_.empty() ? nullptr : no_pair_.data());
   if (tally) sums_ = s;
 }
@@ -229,8 +229,8 @@ double System::internal_temperature() const {
   return internal_energy() / (static_cast<double>(p_.size()) * par_.heat_capacity);
 }
 
-md::Vec3 System::momentum() const {
-  md::Vec3 m{};
+particles::Vec3 System::momentum() const {
+  particles::Vec3 m{};
   for (std::size_t i = 0; i < p_.size(); ++i) {
     m[0] += p_.mass[i] * p_.vx[i];
     m[1] += p_.mass[i] * p_.vy[i];
@@ -239,7 +239,7 @@ md::Vec3 System::momentum() const {
   return m;
 }
 
-md::Mat3 System::stress_gpa() const {
+particles::Mat3 System::stress_gpa() const {
   double k[6] = {};
   for (std::size_t i = 0; i < p_.size(); ++i) {
     const double m = p_.mass[i];
@@ -253,11 +253,11 @@ md::Mat3 System::stress_gpa() const {
 }
 
 double System::pressure_gpa() const {
-  const md::Mat3 s = stress_gpa();
+  const particles::Mat3 s = stress_gpa();
   return -(s[0] + s[4] + s[8]) / 3.0;
 }
 
-void System::set_group_velocity(int g, const md::Vec3& v) {
+void System::set_group_velocity(int g, const particles::Vec3& v) {
   if (g < 0 || g >= static_cast<int>(groups_.size()))
     throw InputError(fmt::format("dpd: rigid group {}: there are {}", g, groups_.size()));
   if (groups_[g].external)
@@ -281,8 +281,8 @@ void System::release_group(int g) {
 void System::kick_free_groups(double dt) {
   for (std::size_t g = 0; g < groups_.size(); ++g) {
     if (!groups_[g].free) continue;
-    const md::Vec3 f = group_force(static_cast<int>(g));
-    md::Vec3 v = groups_[g].velocity;
+    const particles::Vec3 f = group_force(static_cast<int>(g));
+    particles::Vec3 v = groups_[g].velocity;
     for (int d = 0; d < 3; ++d) v[d] += dt * units::ftm2v * f[d] / groups_[g].mass;
     set_group_velocity(static_cast<int>(g), v);
   }
@@ -308,8 +308,8 @@ void System::make_external(int g, const std::vector<std::int64_t>& ids) {
   valid_ = false;
 }
 
-md::Vec3 System::group_force(int g) const {
-  md::Vec3 f{};
+particles::Vec3 System::group_force(int g) const {
+  particles::Vec3 f{};
   for (std::size_t i = 0; i < p_.size(); ++i)
     if (p_.group[i] == g) f[0] += p_.fx[i], f[1] += p_.fy[i], f[2] += p_.fz[i];
   return f;

@@ -31,7 +31,7 @@
 #include "mpmx/dpd/potential/registry.hpp"
 #include "mpmx/dpd/shardlow.hpp"
 #include "mpmx/dpd/thermostat.hpp"
-#include "mpmx/md/box.hpp"
+#include "mpmx/particles/box.hpp"
 
 namespace mpmx::dpd {
 
@@ -56,7 +56,7 @@ struct SystemOptions {
 
 struct RigidGroup {
   std::string name;
-  md::Vec3 velocity{};  // Angstrom/ps
+  particles::Vec3 velocity{};  // Angstrom/ps
   // Moved by the mover (the MPM points of a concurrent run), not at a set velocity; they
   // take part in the pair forces with the other particles (not among themselves) and,
   // as particles of infinite mass, in the sweep.
@@ -84,13 +84,13 @@ class System {
   double total_energy() const { return kinetic_energy() + potential_energy() + internal_energy(); }
   double temperature() const { return kinetic_temperature(p_); }  // K, mobile, 3N-3
   double internal_temperature() const;                      // K, mean u_i / C_v (DPDE)
-  md::Vec3 momentum() const;                                // amu Angstrom/ps
-  const md::Sym6& virial() const { return sums_.virial; }   // eV: sum over pairs r_a F_b
+  particles::Vec3 momentum() const;                                // amu Angstrom/ps
+  const particles::Sym6& virial() const { return sums_.virial; }   // eV: sum over pairs r_a F_b
   // Cauchy stress of the domain's volume, kinetic + virial, compression negative (GPa).
-  md::Mat3 stress_gpa() const;
+  particles::Mat3 stress_gpa() const;
   double pressure_gpa() const;
   // Sum of the pair forces on a rigid group's particles (eV/Angstrom).
-  md::Vec3 group_force(int group) const;
+  particles::Vec3 group_force(int group) const;
 
   const Particles& particles() const { return p_; }
   // Mutable access: neighbours and forces are rebuilt before the next use.
@@ -107,7 +107,7 @@ class System {
   int group_index(std::string_view name) const;
   void set_threads(int n) { opt_.threads = n; }
   // Sets a rigid group's velocity (its particles take it at once).
-  void set_group_velocity(int group, const md::Vec3& v);
+  void set_group_velocity(int group, const particles::Vec3& v);
   // From now on rigid group g moves as a free rigid body (translation) from its velocity.
   void release_group(int g);
   // Moves the mobile particles of `ids` into the external group `group` (at rest).
@@ -135,7 +135,7 @@ class System {
   PairList list_;
   ForceBuffers buf_;
   SweepWork sweep_work_;
-  md::ForceSums sums_;
+  particles::ForceSums sums_;
   std::int64_t step_ = 0;
   double time_ = 0;
   double dt_ = 0;  // the step the stored forces were computed for (random force ~ 1/sqrt(dt))

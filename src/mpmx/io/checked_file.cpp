@@ -121,5 +121,4 @@ std::string read_checked(const std::string& path, const CheckedKind& k) {
   return std::string(unframe(bytes, k, path));
 }
 
-
 }  // namespace mpmx::io

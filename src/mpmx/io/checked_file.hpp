@@ -41,6 +41,8 @@ std::string_view unframe(std::string_view bytes, const CheckedKind& k, const std
 void write_checked(const std::string& path, const CheckedKind& k, std::string_view payload);
 std::string read_checked(const std::string& path, const CheckedKind& k);
 
-// read_count and payload_offset: core/binary.hpp.
+// The payload readers' count check and offset (core/binary.hpp), under io's names too.
+using mpmx::payload_offset;
+using mpmx::read_count;
 
 }  // namespace mpmx::io

@@ -4,7 +4,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
-#include "mpmx/md/lattice.hpp"
+#include "mpmx/md/particles.hpp"
 #include "mpmx/md/stress.hpp"
 
 namespace mpmx::md {

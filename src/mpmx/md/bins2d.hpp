@@ -6,8 +6,7 @@
 // Atoms outside [x0, x0 + nx dx) are ignored; y is periodic over [0, ny dy).
 #include <vector>
 
-#include "mpmx/md/atoms.hpp"
-#include "mpmx/md/box.hpp"
+#include "mpmx/md/particles.hpp"
 
 namespace mpmx::md {
 

@@ -1,42 +1,37 @@
 #pragma once
-// What an MD deck will cost before it runs: atoms, peak memory, work (atom-steps). A
-// deck the machine cannot hold is refused always; one that would run for more than
-// about a day is refused unless forced. Both name the key and the figure.
-#include <string>
-
-#include "mpmx/md/config.hpp"
-
+// What MD costs in this engine, the figures a run's budget is scaled by: the atom-steps
+// a core runs a second, and the bytes of a periodic box, fitted to measured peak memory
+// (the MD deck's budget, app/md/budget.hpp, and the md_closure boxes of a continuum deck).
 namespace mpmx::md {
 
 // mpmx's MD on one core, Cu EAM: 2.1e6-3.2e6 atom-steps/s in an AVX2 -march=native
 // build (docs/performance.md), 4e5-5e5 in the portable Release build on a shared core.
 // The figure the work limit is scaled by lies between, on the cautious side.
 inline constexpr double kMdAtomStepsPerSecond = 1e6;
-// About a day of it: the most work a run takes without --force.
-inline constexpr double kMdWorkLimit = 86400.0 * kMdAtomStepsPerSecond;
 
-struct MdBudget {
-  double atoms = 0;        // atoms of the system (the bar's for a bar deck)
-  std::string size_key;    // the key that sets them ("lattice.cells", "bar.cells_x and bar.cells_yz")
-  double bytes = 0;        // estimated peak memory
-  double atom_steps = 0;   // atoms x (relax_steps + steps), plus one per atom per scan point
-  std::string work_key;    // "run.steps" or "thermal.relax_steps + run.steps"
-};
+// Bytes, fitted to the peak RSS of `mpmx md` (Cu EAM, Release): boxes of 500, 32,000
+// and 131,072 atoms (14.5, 65 and 221 MB) and a 144,000-atom bar (287 MB, estimate
+// within 2%); refitted to the tiled force loop with boxes of 32,000, 131,072 and 340,736
+// atoms (86.7, 303 and 743 MB). Per local atom: its fields and copies (300), and per
+// pair of its half list the list, its tiled copy and the force passes' pair buffers
+// (36); per entry of locals plus ghosts (positions in three layouts, type, owner, image,
+// bins, forces, density) 110, and 56 more for a bar's per-atom energy and virial; a
+// jet's atom 1,500 more (its records and tiles' per-atom tallies: the s = 0.05 and 0.1
+// samples, 28 and 122 MB); the program and potential tables 16 MiB.
+inline constexpr double kBytesPerLocal = 300.0;
+inline constexpr double kBytesPerPair = 36.0;
+inline constexpr double kBytesPerEntry = 110.0;
+inline constexpr double kBytesPerEntryPerAtom = 56.0;
+inline constexpr double kBytesPerJetAtom = 1500.0;
+inline constexpr double kBytesFixed = 16.0 * 1024 * 1024;
 
 // Bytes of one periodic fcc box of n[0] x n[1] x n[2] cells of lattice constant `a`
 // whose forces reach `reach` (cutoff + skin), without the program's fixed share: the
-// same fit as estimate_md, for the md_closure boxes of a continuum deck.
+// same fit as the MD deck's estimate, for the md_closure boxes of a continuum deck.
 double box_bytes(const double n[3], double a, double reach);
 
 // Bytes a box holds between the macro steps of a multiscale run (System::compact: its
 // atoms' positions, velocities, forces, types and ids, and the box's own small state).
 double compact_box_bytes(double atoms);
-
-// `cutoff`: the potential's (Potential::cutoff()).
-MdBudget estimate_md(const MdConfig& c, double cutoff);
-
-// Throws InputError when the estimate exceeds `memory_bytes` (always), or the work
-// exceeds kMdWorkLimit unless `force`; `memory_bytes` 0: unknown, not checked.
-void check_md_budget(const MdBudget& b, std::uint64_t memory_bytes, bool force);
 
 }  // namespace mpmx::md

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
-#include "mpmx/md/lattice.hpp"
+#include "mpmx/md/particles.hpp"
 #include "mpmx/md/system.hpp"
 
 namespace mpmx::md {

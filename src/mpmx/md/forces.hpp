@@ -1,13 +1,11 @@
 #pragma once
 // What a potential writes: forces on locals and ghosts (folded into the owners by the
-// caller), the total energy and the pair virial W_ab = sum over pairs of
-// r_ab,a r_ab,b f_ab/r (eq. 2.25 first line, potential part, times the volume).
-#include <array>
+// caller), the total energy and the pair virial (ForceSums, particles/force_sums.hpp).
 #include <vector>
 
-namespace mpmx::md {
+#include "mpmx/md/particles.hpp"
 
-using Sym6 = std::array<double, 6>;  // xx, yy, zz, xy, xz, yz
+namespace mpmx::md {
 
 struct ForceWork {
   std::vector<double> fx, fy, fz;    // size nall
@@ -27,11 +25,6 @@ struct ForceWork {
   // force arrays it accumulates into (zero_forces()).
   void reset(int nall);
   void zero_forces();
-};
-
-struct ForceSums {
-  double energy = 0;  // eV
-  Sym6 virial{};      // eV
 };
 
 }  // namespace mpmx::md

@@ -4,8 +4,7 @@
 // for any count).
 #include <vector>
 
-#include "mpmx/md/atoms.hpp"
-#include "mpmx/md/box.hpp"
+#include "mpmx/md/particles.hpp"
 
 namespace mpmx::md {
 

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
-#include "mpmx/md/lattice.hpp"
+#include "mpmx/md/particles.hpp"
 
 namespace mpmx::md {
 

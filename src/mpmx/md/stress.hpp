@@ -5,9 +5,8 @@
 // Results in eV/Angstrom^3 (multiply by units::eV_per_A3_in_GPa for GPa).
 #include <vector>
 
-#include "mpmx/md/atoms.hpp"
-#include "mpmx/md/box.hpp"
 #include "mpmx/md/forces.hpp"
+#include "mpmx/md/particles.hpp"
 
 namespace mpmx::md {
 

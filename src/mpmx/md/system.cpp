@@ -10,9 +10,9 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/core/binary.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
-#include "mpmx/io/checked_file.hpp"
 #include "mpmx/md/integrate.hpp"
 #include "mpmx/md/stress.hpp"
 #include "mpmx/md/thermal.hpp"

@@ -15,13 +15,9 @@
 #include <iosfwd>
 #include <vector>
 
-#include "mpmx/md/atoms.hpp"
-#include "mpmx/md/box.hpp"
 #include "mpmx/md/forces.hpp"
-#include "mpmx/md/lattice.hpp"
-#include "mpmx/md/neighbor.hpp"
+#include "mpmx/md/particles.hpp"
 #include "mpmx/md/potential/potential.hpp"
-#include "mpmx/md/rng.hpp"
 
 namespace mpmx::md {
 

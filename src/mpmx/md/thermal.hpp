@@ -2,8 +2,7 @@
 // Thermal initialisation (section 6.2) and energy injection (eq. 7.11).
 #include <vector>
 
-#include "mpmx/md/atoms.hpp"
-#include "mpmx/md/rng.hpp"
+#include "mpmx/md/particles.hpp"
 
 namespace mpmx::md {
 

@@ -21,7 +21,7 @@ constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
 
 }  // namespace
 
-DpdGrid::DpdGrid(double cell, const md::Vec3& lo, const md::Vec3& hi, int threads) : threads_(threads) {
+DpdGrid::DpdGrid(double cell, const particles::Vec3& lo, const particles::Vec3& hi, int threads) : threads_(threads) {
   if (!(cell > 0) || !std::isfinite(cell)) throw InputError(fmt::format("grid.cell = {}: must be positive", cell));
   std::array<double, 3> a{}, b{};
   std::array<int, 3> n{};

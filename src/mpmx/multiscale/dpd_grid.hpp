@@ -33,15 +33,15 @@
 #include "mpmx/dpd/mover.hpp"
 #include "mpmx/material/material.hpp"
 #include "mpmx/material/points.hpp"
-#include "mpmx/md/box.hpp"
 #include "mpmx/mpm/grid.hpp"
+#include "mpmx/particles/box.hpp"
 
 namespace mpmx::multiscale {
 
 class DpdGrid final : public dpd::Mover {
  public:
   // Cells of edge `cell` (Angstrom) covering [lo, hi] (rounded out to whole cells).
-  DpdGrid(double cell, const md::Vec3& lo, const md::Vec3& hi, int threads = 1);
+  DpdGrid(double cell, const particles::Vec3& lo, const particles::Vec3& hi, int threads = 1);
 
   // The particles of external group `group` become continuum points of density
   // mass / volume_per_point with their stress from `law` (stress in eV/Angstrom^3).

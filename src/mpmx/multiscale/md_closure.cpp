@@ -1,6 +1,7 @@
 #include "mpmx/multiscale/md_closure.hpp"
 
 #include <chrono>
+#include <stdexcept>
 #include <cmath>
 #include <algorithm>
 #include <cstdlib>
@@ -15,7 +16,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/binary.hpp"
-#include "mpmx/md/lattice.hpp"
+#include "mpmx/particles/lattice.hpp"
 
 namespace mpmx::multiscale {
 
@@ -375,8 +376,12 @@ void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure>
   for (const auto& a : audit) out.insert(out.end(), a.begin(), a.end());
   std::vector<int> counts(static_cast<std::size_t>(ranks::size()), 0);
   for (std::size_t g = 0; g < G; ++g) counts[owner_[g]] += kGroupRecord;
-  for (std::size_t q = 0; q < groups_.points(); ++q)
+  // Auditors report from a macro step only (`strain`): the relaxation has none to send.
+  for (std::size_t q = 0; q < groups_.points() && strain; ++q)
     if (groups_.auditor(q)) counts[owner_[groups_.group_of(q)]] += 4;
+  if (!failed && out.size() != static_cast<std::size_t>(counts[ranks::rank()]))
+    throw std::logic_error(fmt::format("md_closure: {} values to publish where the groups expect {}", out.size(),
+                                       counts[ranks::rank()]));
   if (failed) out.assign(static_cast<std::size_t>(counts[ranks::rank()]), std::nan(""));
   const std::vector<double> all = ranks::all_gather(out, counts);
   if (const auto f = ranks::first_failure(failed)) {
@@ -395,7 +400,7 @@ void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure>
       for (int c = 0; c < 7; ++c) shape_[g][c] = rec[9 + c];
       injected_ev_ += rec[16], shortfall_ev_ += rec[17];
     }
-    for (std::size_t q = 0; q < groups_.points(); ++q) {
+    for (std::size_t q = 0; q < groups_.points() && strain; ++q) {
       if (!groups_.auditor(q) || owner_[groups_.group_of(q)] != r) continue;
       audits.push_back({all[at], all[at + 1], all[at + 2], all[at + 3]});
       at += 4;

@@ -8,7 +8,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/budget.hpp"
-#include "mpmx/md/config.hpp"
+#include "mpmx/md/potential/registry.hpp"
 
 namespace mpmx::multiscale {
 
@@ -79,7 +79,7 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   share.non_negative("tolerance", md.share.tolerance);
   md.share.audit = share.integer_int("audit", md.share.audit, 0, 1000);
   md.share.seed = md.seed;
-  if (md.potential.style != "eam" || !md.potential.file.empty()) {
+  if (md::complete(md.potential)) {
     try {
       const auto props = md_closure_properties(md.potential, md.units);
       r->rho = props.density;
@@ -96,7 +96,7 @@ std::optional<material::Crystal> potential_crystal(Table& table, std::string_vie
   const auto u = units::unit_system(units);
   if (!u) return std::nullopt;  // the caller names the missing units
   const md::PotentialSpec spec = md::read_potential(*table.sub(key), deck_dir);
-  if (spec.style == "eam" && spec.file.empty()) return std::nullopt;  // read_potential said why
+  if (!md::complete(spec)) return std::nullopt;  // read_potential said why
   try {
     const auto props = md_closure_properties(spec, *u);
     return material::Crystal{props.density, props.modulus, props.c12, props.c44};

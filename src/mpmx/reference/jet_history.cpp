@@ -32,7 +32,7 @@ struct Bin {
   double x = 0, y = 0, sxx = 0;
 };
 
-// ix,iy,x_A,y_A,atoms,...,sxx_GPa (column 10), as md/jet_run.cpp writes them.
+// ix,iy,x_A,y_A,atoms,...,sxx_GPa (column 10), as app/md/jet_run.cpp writes them.
 std::vector<Bin> read_bins(const fs::path& path) {
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("direct-MD jet bins {} cannot be read", path.string()));
@@ -106,7 +106,7 @@ JetHistory JetHistory::read(const std::string& dir) {
     for (const auto& b : bins) nx = std::max(nx, b.ix + 1), ny = std::max(ny, b.iy + 1);
     if (static_cast<std::size_t>(nx) * ny != bins.size())
       throw InputError(fmt::format("{}: {} bins are not a full {} x {} grid", csv.string(), bins.size(), nx, ny));
-    if (h.times_.empty()) {  // the bins cover the sample's length and period (md/jet_run.cpp)
+    if (h.times_.empty()) {  // the bins cover the sample's length and period (app/md/jet_run.cpp)
       h.nx_ = nx, h.ny_ = ny;
       h.x0_ = x0, h.dx_ = length / nx, h.dy_ = ly / ny;
     } else if (nx != h.nx_ || ny != h.ny_) {

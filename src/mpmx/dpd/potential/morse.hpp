@@ -7,13 +7,14 @@
 // Deck: style = "morse", d0 (eV), alpha (1/Angstrom), r0 (Angstrom), cutoff, shift.
 #include <cmath>
 #include <string>
+#include <string_view>
 
-#include "mpmx/io/deck.hpp"
+#include "mpmx/core/table.hpp"
 
 namespace mpmx::dpd {
 
 struct MorsePotential {
-  static constexpr const char* name = "morse";
+  static constexpr std::string_view name = "morse";
   double d0 = 0, alpha = 1, r0 = 1, rc = 1;
   bool shift = true;
   double offset = 0;  // U_raw(rc) when shifted
@@ -31,7 +32,7 @@ struct MorsePotential {
     offset = shift ? d0 * (dexp * dexp - dexp - dexp) : 0.0;
   }
   std::string describe() const;
-  static MorsePotential read(io::Section& s);
+  static MorsePotential read(Table& s);
 };
 
 }  // namespace mpmx::dpd

@@ -6,13 +6,14 @@
 // Deck: style = "nm", e0 (eV), r0 (Angstrom), n, m (n > m > 0), cutoff, shift.
 #include <cmath>
 #include <string>
+#include <string_view>
 
-#include "mpmx/io/deck.hpp"
+#include "mpmx/core/table.hpp"
 
 namespace mpmx::dpd {
 
 struct NmPotential {
-  static constexpr const char* name = "nm";
+  static constexpr std::string_view name = "nm";
   double e0 = 0, r0 = 1, n = 12, m = 6, rc = 1;
   bool shift = true;
   double offset = 0;
@@ -30,7 +31,7 @@ struct NmPotential {
     offset = shift ? e0 / (n - m) * (m * an - n * am) : 0.0;
   }
   std::string describe() const;
-  static NmPotential read(io::Section& s);
+  static NmPotential read(Table& s);
 };
 
 }  // namespace mpmx::dpd

@@ -1,61 +1,16 @@
 #include "mpmx/dpd/potential/registry.hpp"
 
-#include <filesystem>
-
 #include <fmt/format.h>
-
-#include "mpmx/core/error.hpp"
 
 namespace mpmx::dpd {
 
-namespace {
+std::vector<std::string> pair_potential_names() { return PairPotentials::names(); }
 
-template <std::size_t I = 0>
-void collect_names(std::vector<std::string>& out) {
-  if constexpr (I < std::variant_size_v<PairPotential>) {
-    out.emplace_back(std::variant_alternative_t<I, PairPotential>::name);
-    collect_names<I + 1>(out);
-  }
-}
-
-template <std::size_t I = 0>
-PairPotential read_by_name(const std::string& style, io::Section& s) {
-  if constexpr (I < std::variant_size_v<PairPotential>) {
-    using P = std::variant_alternative_t<I, PairPotential>;
-    if (style == P::name) return P::read(s);
-    return read_by_name<I + 1>(style, s);
-  } else {
-    return PairPotential{};
-  }
-}
-
-}  // namespace
-
-std::vector<std::string> pair_potential_names() {
-  std::vector<std::string> names;
-  collect_names(names);
-  return names;
-}
-
-PairPotential read_pair_potential(io::Section s, const std::string& deck_dir) {
-  if (s.has("file")) {
-    s.check(!s.has("style"), "style", "give either file or style and parameters, not both");
-    std::filesystem::path path = s.string("file");
-    if (path.is_relative() && !deck_dir.empty()) path = deck_dir / path;
-    try {
-      io::Deck d = io::Deck::from_file(path.string());
-      io::Section inner = d.root().table("potential");
-      inner.check(!inner.has("file"), "file", "a potential file cannot name another");
-      PairPotential p = inner.has("file") ? PairPotential{} : read_pair_potential(inner);
-      d.finish();
-      return p;
-    } catch (const InputError& e) {
-      s.check(false, "file", e.what());
-      return PairPotential{};
-    }
-  }
+PairPotential read_pair_potential(Table& s) {
   const std::string style = s.choice("style", pair_potential_names());
-  return read_by_name(style, s);
+  return PairPotentials::with(
+      style, [&]<class Entry>() -> PairPotential { return Entry::read(s); },
+      [] { return PairPotential{}; });  // a style that is no string: recorded by choice()
 }
 
 double cutoff(const PairPotential& p) {
@@ -66,13 +21,11 @@ std::string describe(const PairPotential& p) {
   return std::visit([](const auto& q) { return q.describe(); }, p);
 }
 
-std::string style_name(const PairPotential& p) {
-  return std::visit([](const auto& q) { return std::string(q.name); }, p);
-}
+std::string style_name(const PairPotential& p) { return pair_potential_names()[p.index()]; }
 
 std::string SoftPotential::describe() const { return fmt::format("dpd: a = {} eV/A, rc = {} A", a, rc); }
 
-SoftPotential SoftPotential::read(io::Section& s) {
+SoftPotential SoftPotential::read(Table& s) {
   SoftPotential p;
   p.a = s.number("a");
   s.non_negative("a", p.a);
@@ -86,7 +39,7 @@ std::string MorsePotential::describe() const {
                      shift ? ", shifted" : "");
 }
 
-MorsePotential MorsePotential::read(io::Section& s) {
+MorsePotential MorsePotential::read(Table& s) {
   MorsePotential p;
   p.d0 = s.number("d0");
   s.positive("d0", p.d0);
@@ -106,7 +59,7 @@ std::string NmPotential::describe() const {
                      shift ? ", shifted" : "");
 }
 
-NmPotential NmPotential::read(io::Section& s) {
+NmPotential NmPotential::read(Table& s) {
   NmPotential p;
   p.e0 = s.number("e0");
   s.positive("e0", p.e0);

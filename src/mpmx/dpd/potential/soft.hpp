@@ -4,13 +4,14 @@
 // Deck: style = "dpd", a (eV/Angstrom), cutoff (Angstrom).
 #include <cmath>
 #include <string>
+#include <string_view>
 
-#include "mpmx/io/deck.hpp"
+#include "mpmx/core/table.hpp"
 
 namespace mpmx::dpd {
 
 struct SoftPotential {
-  static constexpr const char* name = "dpd";
+  static constexpr std::string_view name = "dpd";
   double a = 0;   // eV/Angstrom, force at contact
   double rc = 1;  // Angstrom
 
@@ -23,7 +24,7 @@ struct SoftPotential {
     f_over_r = a * w / r;
   }
   std::string describe() const;
-  static SoftPotential read(io::Section& s);
+  static SoftPotential read(Table& s);
 };
 
 }  // namespace mpmx::dpd

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/format.h>
 
@@ -187,6 +188,65 @@ double Eam::pair_energy(double r, int ti, int tj) const {
   double phi, dedr;
   t.pair(r, ti, tj, 0.0, 0.0, phi, dedr);
   return phi;
+}
+
+EamSpec EamSpec::read(Table& t, const std::string& deck_dir) {
+  EamSpec spec;
+  const std::string file = t.string("file");
+  if (!file.empty()) {
+    try {
+      spec.file = resolve_potential_file(file, deck_dir);
+    } catch (const InputError& e) {
+      t.check(false, "file", e.what());
+    }
+  }
+  spec.elements = t.strings("elements", {});
+  if (!spec.file.empty()) {
+    try {
+      const EamTables tables = read_eam(spec.file);
+      if (tables.format != "funcfl")
+        for (const auto& el : spec.elements)
+          if (tables.element_index(el) < 0)
+            t.check(false, "elements",
+                    fmt::format("element '{}' is not in {} (it has: {})", el, spec.file,
+                                fmt::join(tables.elements, ", ")));
+    } catch (const InputError& e) {
+      t.check(false, "file", e.what());
+    }
+  }
+  return spec;
+}
+
+Eam EamSpec::make() const { return Eam(read_eam(file), elements); }
+
+namespace {
+
+// A path LAMMPS reads as one word: no blanks, quotes, '$' (variables) or '#' (comments).
+std::string lammps_path(const std::string& file) {
+  const std::string p = std::filesystem::absolute(file).lexically_normal().string();
+  if (p.find_first_of(" \t\"'$#&") != std::string::npos)
+    throw InputError(fmt::format("potential file '{}': LAMMPS input cannot name a path with blanks, quotes, "
+                                 "'$', '#' or '&'; copy or link it elsewhere",
+                                 p));
+  return p;
+}
+
+}  // namespace
+
+std::string EamSpec::lammps_pair_lines(const Eam& made) const {
+  const std::string path = lammps_path(file);
+  switch (eam_format_from_name(file)) {
+    case EamFormat::funcfl: {  // one file per type, i i (LAMMPS mixes i j)
+      std::string s = "pair_style eam\n";
+      for (int t = 1; t <= made.types(); ++t) s += fmt::format("pair_coeff {} {} {}\n", t, t, path);
+      return s;
+    }
+    case EamFormat::setfl:
+      return fmt::format("pair_style eam/alloy\npair_coeff * * {} {}\n", path, fmt::join(made.type_names(), " "));
+    case EamFormat::fs:
+      return fmt::format("pair_style eam/fs\npair_coeff * * {} {}\n", path, fmt::join(made.type_names(), " "));
+  }
+  return {};  // every format is handled above
 }
 
 }  // namespace mpmx::md

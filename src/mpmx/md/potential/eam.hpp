@@ -3,11 +3,16 @@
 // pieces with 7 coefficients per knot (value, and derivative coefficients scaled by
 // the grid spacing), looked up with p = r/dr + 1, m = int(p), clamped at the table
 // ends; F(rho) is continued linearly beyond the last rho knot.
+//
+// EamSpec is the potential registry's entry "eam" (registry.hpp): a file in a format
+// users already have (eam_file.hpp) and the file element of each atom type.
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "mpmx/core/table.hpp"
 #include "mpmx/md/forces.hpp"
-#include "mpmx/md/neighbor.hpp"
+#include "mpmx/md/particles.hpp"
 #include "mpmx/md/potential/eam_file.hpp"
 
 namespace mpmx::md {
@@ -50,6 +55,25 @@ class Eam {
   // c3..c6) and the force-pass record (rho c0..c2, z2r c0..c6).
   std::vector<double> rho1_, pair1_;
   std::vector<float> rho1f_, pair1f_;
+};
+
+// [potential] style = "eam": file (resolved against the deck's folder, then the LAMMPS
+// potentials folder) and elements.
+struct EamSpec {
+  static constexpr std::string_view name = "eam";
+  using Kernel = Eam;
+
+  std::string file;                   // the potential file (format from its name); empty: not found
+  std::vector<std::string> elements;  // the file element of each atom type
+
+  // Parses the file now, so that `check` refuses what `run` would: a corrupt or truncated
+  // file, an element it does not hold.
+  static EamSpec read(Table& t, const std::string& deck_dir);
+  // False when the file was not found (read said why).
+  bool complete() const { return !file.empty(); }
+  Eam make() const;
+  // pair_style eam, eam/alloy or eam/fs and its pair_coeff lines for the potential made.
+  std::string lammps_pair_lines(const Eam& made) const;
 };
 
 // LAMMPS's interpolate(): 7 coefficients per knot for values f[1..n] on spacing delta.

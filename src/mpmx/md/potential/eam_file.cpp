@@ -321,4 +321,24 @@ EamTables read_eam(const std::string& path, EamFormat format) {
 
 EamTables read_eam(const std::string& path) { return read_eam(path, eam_format_from_name(path)); }
 
+namespace fs = std::filesystem;
+
+std::string resolve_potential_file(const std::string& name, const std::string& deck_dir) {
+  std::vector<fs::path> tried;
+  fs::path p(name);
+  if (p.is_absolute()) {
+    tried.push_back(p);
+  } else {
+    tried.push_back(deck_dir.empty() ? p : fs::path(deck_dir) / p);
+    tried.push_back(fs::path("/usr/share/lammps/potentials") / p);
+  }
+  // The error_code form: a name the system cannot even look up (too long, bad bytes) is
+  // a file not found, not an exception from the filesystem.
+  for (const auto& t : tried)
+    if (std::error_code ec; fs::is_regular_file(t, ec)) return t.string();
+  std::vector<std::string> names;
+  for (const auto& t : tried) names.push_back(t.string());
+  throw InputError(fmt::format("potential file '{}' not found (tried: {})", name, fmt::join(names, ", ")));
+}
+
 }  // namespace mpmx::md

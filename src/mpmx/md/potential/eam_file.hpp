@@ -35,4 +35,8 @@ EamFormat eam_format_from_name(const std::string& path);
 EamTables read_eam(const std::string& path, EamFormat format);
 EamTables read_eam(const std::string& path);
 
+// Finds a potential file: an absolute path as given; a relative one against `deck_dir`
+// (the working directory when empty), then in /usr/share/lammps/potentials. Throws InputError listing the places tried.
+std::string resolve_potential_file(const std::string& name, const std::string& deck_dir);
+
 }  // namespace mpmx::md

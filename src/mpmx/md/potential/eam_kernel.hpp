@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "mpmx/md/forces.hpp"
-#include "mpmx/md/neighbor.hpp"
+#include "mpmx/md/particles.hpp"
 
 namespace mpmx::md {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "mpmx/md/forces.hpp"
-#include "mpmx/md/neighbor.hpp"
+#include "mpmx/md/particles.hpp"
 
 namespace mpmx::md {
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/md/potential/analytic.hpp"
 
 namespace mpmx::md {
 
@@ -58,6 +59,20 @@ ForceSums LennardJones::compute(const Neighbors& nb, ForceWork& w) const {
     }
   }
   return s;
+}
+
+LjSpec LjSpec::read(Table& t, const std::string& /*deck_dir*/) {
+  LjSpec s;
+  read_analytic_scale(t, s.epsilon, s.cutoff, s.mass);
+  s.sigma = t.number("sigma");
+  t.positive("sigma", s.sigma);
+  s.shift = t.boolean("shift", false);
+  return s;
+}
+
+std::string LjSpec::lammps_pair_lines(const LennardJones& /*made*/) const {
+  return fmt::format("pair_style lj/cut {:.17g}\npair_coeff * * {:.17g} {:.17g}\n{}", cutoff, epsilon, sigma,
+                     shift ? "pair_modify shift yes\n" : "");
 }
 
 }  // namespace mpmx::md

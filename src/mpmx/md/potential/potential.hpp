@@ -1,31 +1,23 @@
 #pragma once
-// A potential picked by name ("eam", "lj", "sutton_chen"); the variant is dispatched once
-// per force evaluation, never per pair.
+// A potential made from its spec (registry.hpp): the force kernel of its entry, held in
+// a variant dispatched once per force evaluation, never per pair.
 #include <memory>
 #include <string>
 #include <variant>
-#include <vector>
 
 #include "mpmx/md/forces.hpp"
-#include "mpmx/md/neighbor.hpp"
-#include "mpmx/md/potential/eam.hpp"
-#include "mpmx/md/potential/lj.hpp"
-#include "mpmx/md/potential/sutton_chen.hpp"
+#include "mpmx/md/particles.hpp"
+#include "mpmx/md/potential/registry.hpp"
 
 namespace mpmx::md {
 
-struct PotentialSpec {
-  std::string style = "eam";            // eam | lj | sutton_chen
-  std::string file;                     // eam: potential file (format from its name)
-  std::vector<std::string> elements;    // eam: file element of each atom type
-  double epsilon = 0, sigma = 0, a = 0, c = 0, cutoff = 0, mass = 0;  // lj, sutton_chen
-  int n = 0, m = 0;                     // sutton_chen exponents
-  bool shift = false;                   // lj: shift energy to zero at the cutoff
+// The force kernels of a registry's entries (Entry::Kernel), in list order.
+template <class R>
+struct KernelsOf;
+template <class... Entries>
+struct KernelsOf<Registry<Entries...>> {
+  using type = std::variant<typename Entries::Kernel...>;
 };
-
-// Finds a potential file: an absolute path as given; a relative one against `deck_dir`
-// (the working directory when empty), then in /usr/share/lammps/potentials. Throws InputError listing the places tried.
-std::string resolve_potential_file(const std::string& name, const std::string& deck_dir);
 
 class Potential {
  public:
@@ -38,11 +30,16 @@ class Potential {
   std::string describe() const;
   // Forces on locals and ghosts into w (zeroed by the caller), energy and virial.
   ForceSums compute(const Neighbors& nb, ForceWork& w, bool mixed_precision = false) const;
-  const Eam* eam() const { return std::get_if<Eam>(&impl_->v); }
+  // The kernel when it is a K (null otherwise).
+  template <class K>
+  const K* kernel() const {
+    return std::get_if<K>(&impl_->v);
+  }
+  const Eam* eam() const { return kernel<Eam>(); }
 
  private:
   struct Impl {
-    std::variant<Eam, LennardJones, SuttonChen> v;
+    KernelsOf<Potentials>::type v;
   };
   std::shared_ptr<const Impl> impl_;  // immutable, shared by copies of a System
 };

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/md/potential/analytic.hpp"
 #include "mpmx/md/potential/eam_kernel.hpp"
 
 namespace mpmx::md {
@@ -36,6 +37,23 @@ void SuttonChen::pair(double r, int, int, double fpi, double fpj, double& phi, d
 
 ForceSums SuttonChen::compute(const Neighbors& nb, ForceWork& w) const {
   return eam_compute<double>(*this, nb, w);
+}
+
+SuttonChenSpec SuttonChenSpec::read(Table& t, const std::string& /*deck_dir*/) {
+  SuttonChenSpec s;
+  read_analytic_scale(t, s.epsilon, s.cutoff, s.mass);
+  s.a = t.number("a");
+  t.positive("a", s.a);
+  s.c = t.number("c");
+  t.positive("c", s.c);
+  s.n = t.integer_int("n", 1, 100);
+  s.m = t.integer_int("m", 1, 100);
+  return s;
+}
+
+std::string SuttonChenSpec::lammps_pair_lines(const SuttonChen& /*made*/) const {
+  throw InputError(fmt::format("potential style '{}': the LAMMPS route supports eam (setfl, fs, funcfl) and lj only",
+                               name));
 }
 
 }  // namespace mpmx::md

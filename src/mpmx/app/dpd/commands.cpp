@@ -1,0 +1,86 @@
+// `mpmx dpd DECK --out DIR [--threads N] [--check] [--quiet] [--still]`: a DPD(E)-only run
+// (seed 004 sec. 2.2; issue 16); `mpmx fit-dpd DECK --out DIR [--threads N] [--check]`:
+// the MD-to-DPD fit of D0.
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "mpmx/app/commands.hpp"
+#include "mpmx/app/dpd/config.hpp"
+#include "mpmx/app/dpd/fit_run.hpp"
+#include "mpmx/app/dpd/run.hpp"
+#include "mpmx/core/machine.hpp"
+#include "mpmx/io/deck.hpp"
+#include "mpmx/io/plot.hpp"
+#include "mpmx/io/staged_dir.hpp"
+#include "mpmx/multiscale/dpd_mpm.hpp"
+
+namespace mpmx::app {
+
+void add_dpd_commands(CLI::App& app) {
+  auto* dpd = app.add_subcommand("dpd", "Run a DPD / DPDE mesoparticle deck (Shardlow or velocity Verlet)");
+  struct Args {
+    std::string deck, out;
+    int threads = 1;
+    bool check = false, quiet = false, no_plot = false, still = false;
+  };
+  auto args = std::make_shared<Args>();
+  dpd->add_option("deck", args->deck, "DPD deck (TOML)")->required();
+  dpd->add_option("--out", args->out, "output directory (default: run-<deck name>)");
+  dpd->add_option("--threads", args->threads,
+                  "OpenMP threads, 0 for all cores (default 1; results are the same for any count)");
+  dpd->add_flag("--check", args->check, "validate the deck and exit");
+  dpd->add_flag("--quiet", args->quiet, "no progress line");
+  dpd->add_flag("--no-plot", args->no_plot, "no figures (tools/plot/dpd_study.py) after the run");
+  dpd->add_flag("--still", args->still,
+                "the rigid groups (flyer, grips) start at rest: the undriven twin of the run, which "
+                "tools/plot/dpd_study.py subtracts to leave the wave alone");
+  dpd->callback([args] {
+    auto deck = io::Deck::from_file(args->deck);
+    dpd::DpdConfig config = dpd::read_dpd_config(deck);
+    config.still = args->still;
+    if (args->check) {
+      fmt::print("{}: ok\n", args->deck);
+      return;
+    }
+    std::string out = args->out;
+    if (out.empty()) out = "run-" + std::filesystem::path(args->deck).stem().string();
+    const int threads = args->threads > 0 ? args->threads : static_cast<int>(hardware_threads());
+    const auto r = io::run_staged(
+        out, [&](const std::string& dir) {
+          return dpd::run_dpd(config, dir, deck.table(), threads, args->quiet,
+                              multiscale::dpd_mpm_mover(config.grid, config.continuum, config.potential, threads));
+        });
+    fmt::print("{} particles, {} steps, {:.3g} s, {:.4g} particle-steps/s, mean T {:.2f} K -> {}/run.json\n",
+               r.particles, r.steps, r.wall_seconds, r.particle_steps_per_second, r.temperature, out);
+    if (config.analysis.records() && !args->no_plot && io::matplotlib_present())
+      io::run_plot_script("dpd_study.py", fmt::format("--out '{0}' '{0}' >/dev/null", out));
+  });
+
+  auto* fit = app.add_subcommand("fit-dpd", "Fit a DPD pair potential to an MD isotherm (D0: MD to DPD)");
+  auto fargs = std::make_shared<Args>();
+  fit->add_option("deck", fargs->deck, "fit deck (TOML)")->required();
+  fit->add_option("--out", fargs->out, "output directory (default: run-<deck name>)");
+  fit->add_option("--threads", fargs->threads, "threads over the densities, 0 for all cores (default 1)");
+  fit->add_flag("--check", fargs->check, "validate the deck and exit");
+  fit->callback([fargs] {
+    auto deck = io::Deck::from_file(fargs->deck);
+    const dpd::FitConfig config = dpd::read_fit_config(deck);
+    if (fargs->check) {
+      fmt::print("{}: ok\n", fargs->deck);
+      return;
+    }
+    std::string out = fargs->out;
+    if (out.empty()) out = "run-" + std::filesystem::path(fargs->deck).stem().string();
+    const int threads = fargs->threads > 0 ? fargs->threads : static_cast<int>(hardware_threads());
+    const auto r =
+        io::run_staged(out, [&](const std::string& dir) { return dpd::run_fit(config, dir, deck.table(), threads); });
+    fmt::print("morse D0 = {:.6g} eV, alpha = {:.6g} 1/A, r0 = {:.6g} A, rc = {} A; max |P_DPDE - P_MD| = {:.3g} of "
+               "the MD range; zero-pressure rho/rho0 MD {:.5f} DPDE {:.5f}; {:.3g} s -> {}/{}\n",
+               r.potential.d0, r.potential.alpha, r.potential.r0, r.potential.rc, r.max_deviation_over_range,
+               r.zero_pressure_md, r.zero_pressure_dpd, r.wall_seconds, out, config.potential_file);
+  });
+}
+
+}  // namespace mpmx::app

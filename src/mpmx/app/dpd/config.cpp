@@ -1,0 +1,347 @@
+#include "mpmx/app/dpd/config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/machine.hpp"
+#include "mpmx/core/units.hpp"
+
+namespace mpmx::app::dpd {
+
+namespace {
+
+bool read_vec3(io::Section& s, std::string_view key, particles::Vec3& out, bool required) {
+  if (!required && !s.has(key)) return false;
+  const auto v = s.numbers(key);
+  if (v.size() != 3) {
+    if (s.has(key)) s.check(false, key, "expected three numbers [x, y, z]");
+    return false;
+  }
+  std::copy(v.begin(), v.end(), out.begin());
+  return true;
+}
+
+}  // namespace
+
+PairPotential read_potential(io::Section s, const std::string& deck_dir) {
+  if (s.has("file")) {
+    s.check(!s.has("style"), "style", "give either file or style and parameters, not both");
+    std::filesystem::path path = s.string("file");
+    if (path.is_relative() && !deck_dir.empty()) path = deck_dir / path;
+    try {
+      io::Deck d = io::Deck::from_file(path.string());
+      io::Section inner = d.root().table("potential");
+      inner.check(!inner.has("file"), "file", "a potential file cannot name another");
+      PairPotential p = inner.has("file") ? PairPotential{} : read_pair_potential(inner);
+      d.finish();
+      return p;
+    } catch (const InputError& e) {
+      s.check(false, "file", e.what());
+      return PairPotential{};
+    }
+  }
+  return read_pair_potential(s);
+}
+
+namespace {
+
+// [[track]], [analysis], [tensile], [profile] (analysis.hpp); `groups` the rigid groups' names.
+void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>& groups) {
+  AnalysisSpec& a = c.analysis;
+  std::set<std::string> names;
+  for (auto& t : root.tables("track")) {
+    TrackSpec s;
+    s.name = t.string("name");
+    t.check(!s.name.empty() && names.insert(s.name).second, "name", "must be a new, non-empty track name");
+    const auto x = t.numbers("x");
+    if (x.size() == 2 && x[1] > x[0]) s.lo = x[0], s.hi = x[1];
+    else t.check(false, "x", "expected [lower, upper] with upper > lower (Angstrom)");
+    a.tracks.push_back(s);
+  }
+  auto an = root.optional_table("analysis");
+  a.every = an.integer("every", 5);
+  an.check(a.every >= 1 && a.every <= 1000000, "every", "must be from 1 to 1e6 steps");
+  an.check(c.thermo % std::max<std::int64_t>(a.every, 1) == 0, "every", "must divide run.thermo");
+  a.onset = an.number("onset", 0.3);
+  an.positive("onset", a.onset);
+  a.onset_direction = static_cast<int>(an.integer("onset_direction", 1));
+  an.check(a.onset_direction == 1 || a.onset_direction == -1, "onset_direction",
+           "must be 1 (the wave pushes along +x) or -1 (along -x)");
+  if (an.has("wave_speed")) {
+    const auto w = an.strings("wave_speed", {});
+    if (w.size() == 2 && names.count(w[0]) && names.count(w[1]) && w[0] != w[1]) a.wave_speed = {w[0], w[1]};
+    else an.check(false, "wave_speed", "expected two different names of [[track]] regions");
+  }
+  a.cna_lattice = an.number("cna_lattice", 0.0);
+  an.non_negative("cna_lattice", a.cna_lattice);
+  auto te = root.optional_table("tensile");
+  if (te.present()) {
+    const auto g = te.strings("grips", {});
+    if (g.size() == 2 && g[0] != g[1] && groups.count(g[0]) && groups.count(g[1])) a.grips = {g[0], g[1]};
+    else te.check(false, "grips", "expected the names of two different rigid groups [left, right]");
+    const auto r = te.numbers("slope_strain", {0.0, 0.05});
+    if (r.size() == 2 && r[1] > r[0]) a.slope_strain = {r[0], r[1]};
+    else te.check(false, "slope_strain", "expected [lower, upper] strains with upper > lower");
+  }
+  auto pr = root.optional_table("profile");
+  if (pr.present()) {
+    a.profile_bins = static_cast<int>(pr.integer("bins"));
+    pr.check(a.profile_bins >= 1 && a.profile_bins <= 100000, "bins", "must be from 1 to 1e5");
+    a.profile_every = pr.integer("every");
+    pr.check(a.profile_every >= 1 && a.profile_every % std::max<std::int64_t>(a.every, 1) == 0, "every",
+             "must be a positive multiple of analysis.every");
+  }
+}
+
+// The run's memory, roughly: per particle its fields and its share of the neighbour list
+// and pair-force buffer (about 1.5 KiB at the seed's 12 Angstrom cutoff and density), and
+// the grid's node fields; refused with the figure when it exceeds the machine's memory.
+void check_memory(io::Section& root, const DpdConfig& c) {
+  double particles = 0;
+  for (const auto& b : c.blocks)
+    particles += b.fcc ? 4.0 * b.cells[0] * b.cells[1] * b.cells[2] : static_cast<double>(b.count);
+  double bytes = 1536.0 * particles;
+  if (c.grid.cell > 0) {
+    double nodes = 1;
+    const double size[3] = {c.domain.box.lx, c.domain.box.ly, c.domain.box.lz};
+    for (int d = 0; d < 3; ++d) {
+      const double cells = (size[d] + 2 * c.grid.margin) / c.grid.cell;
+      root.check(cells <= 4096, "grid",
+                 fmt::format("cell = {} A and margin = {} A make {:.0f} cells along axis {} (at most 4096)", c.grid.cell,
+                             c.grid.margin, std::ceil(cells), d));
+      nodes *= cells + 3;
+    }
+    bytes += 16 * 8 * nodes;
+    root.check(nodes <= 4e9, "grid", fmt::format("cell = {} A makes {:.3g} grid nodes (at most 4e9)", c.grid.cell, nodes));
+  }
+  root.check(particles <= 1e8, "block", fmt::format("the blocks hold {:.3g} particles (at most 1e8)", particles));
+  const double have = static_cast<double>(physical_memory_bytes());
+  if (have > 0)
+    root.check(bytes <= 0.8 * have, "block",
+               fmt::format("{:.3g} particles{} need about {}, more than 80% of this machine's {}", particles,
+                           c.grid.cell > 0 ? " and their grid" : "", format_bytes(bytes), format_bytes(have)));
+}
+
+// [grid] and [continuum].
+void read_coupling(io::Section& root, DpdConfig& c) {
+  auto g = root.optional_table("grid");
+  if (g.present()) {
+    c.grid.cell = g.number("cell");
+    g.positive("cell", c.grid.cell);
+    g.check(c.grid.cell < cutoff(c.potential), "cell",
+            fmt::format("must be below the pair potential's cutoff {} A (seed 004 sec. 3: the DPD cutoff exceeds "
+                        "the cell edge)", cutoff(c.potential)));
+    c.grid.margin = g.number("margin", 30.0);
+    g.non_negative("margin", c.grid.margin);
+    g.check(!c.domain.periodic[0] && !c.domain.periodic[1] && !c.domain.periodic[2], "cell",
+            "the DPD/MPM grid needs open boundaries (box.boundary = [\"f\", \"f\", \"f\"])");
+  }
+  auto m = root.optional_table("continuum");
+  if (m.present()) {
+    multiscale::ContinuumSpec& s = c.continuum;
+    s.on = true;
+    root.check(c.grid.cell > 0, "continuum", "a concurrent DPD/MPM run needs [grid] cell");
+    const auto x = m.numbers("x");
+    if (x.size() == 2 && x[1] > x[0]) s.lo = x[0], s.hi = x[1];
+    else m.check(false, "x", "expected [lower, upper] with upper > lower (Angstrom)");
+    s.lattice_constant = m.number("lattice_constant");
+    m.check(s.lattice_constant >= 0.05 * cutoff(c.potential) && s.lattice_constant <= 1000, "lattice_constant",
+            fmt::format("must lie in [{:.3g}, 1000] Angstrom (at least a twentieth of the pair cutoff)",
+                        0.05 * cutoff(c.potential)));
+    s.from_potential = m.choice("constants_from", {"pair_potential", "given"}, "pair_potential") == "pair_potential";
+    s.pair_reaction = m.choice("interface", {"pair_reaction", "seed"}, "pair_reaction") == "pair_reaction";
+    if (!s.from_potential) {
+      s.c11 = m.number("c11"), s.c12 = m.number("c12"), s.c44 = m.number("c44");
+      m.positive("c11", s.c11), m.positive("c44", s.c44);
+      m.check(s.c11 > std::abs(s.c12) && s.c11 + 2 * s.c12 > 0, "c12", "C11 > |C12| and C11 + 2 C12 > 0 (Born stability)");
+    }
+  }
+}
+
+// One [[block]]; `groups`: the rigid groups' names so far (the block's own is added).
+BlockSpec read_block(io::Section& b, std::set<std::string>& groups) {
+  BlockSpec s;
+  s.fcc = b.choice("lattice", {"fcc", "random"}, "fcc") == "fcc";
+  if (s.fcc) {
+    s.constant = b.number("constant");
+    b.positive("constant", s.constant);
+    const auto cells = b.numbers("cells");
+    if (cells.size() == 3) {
+      for (int d = 0; d < 3; ++d) {
+        b.check(cells[d] >= 1 && cells[d] <= 1000 && cells[d] == std::floor(cells[d]), "cells",
+                "each entry must be a whole number of unit cells from 1 to 1000");
+        s.cells[d] = static_cast<int>(std::clamp(cells[d], 1.0, 1000.0));
+      }
+    } else {
+      b.check(false, "cells", "expected [nx, ny, nz]");
+    }
+  } else {
+    s.count = static_cast<long>(b.integer("count"));
+    b.check(s.count >= 1 && s.count <= 100000000, "count", "must be from 1 to 1e8");
+    read_vec3(b, "size", s.size, true);
+    for (int d = 0; d < 3; ++d) b.check(s.size[d] > 0, "size", "every edge must be positive");
+  }
+  read_vec3(b, "origin", s.origin, false);
+  s.mass = b.number("mass");
+  b.positive("mass", s.mass);
+  read_vec3(b, "velocity", s.velocity, false);
+  s.group = b.string("group", "");
+  if (!s.group.empty()) {
+    b.check(groups.insert(s.group).second, "group", "names a rigid group already defined");
+  }
+  s.free = b.boolean("free", false);
+  b.check(!s.free || !s.group.empty(), "free", "only a rigid group (group = \"name\") moves as a free body");
+  return s;
+}
+
+// [[rigid]]: rigid groups by region; `groups` as read_block's.
+void read_regions(io::Section& root, DpdConfig& c, std::set<std::string>& groups) {
+  for (auto& r : root.tables("rigid")) {
+    RegionGroupSpec g;
+    g.name = r.string("name");
+    r.check(!g.name.empty() && groups.insert(g.name).second, "name",
+            "must be a new, non-empty rigid group name");
+    static const char* axes[3] = {"x", "y", "z"};
+    bool any = false;
+    for (int d = 0; d < 3; ++d) {
+      if (!r.has(axes[d])) continue;
+      const auto v = r.numbers(axes[d]);
+      if (v.size() == 2 && v[1] > v[0]) {
+        g.lo[d] = v[0], g.hi[d] = v[1];
+        any = true;
+      } else {
+        r.check(false, axes[d], "expected [lower, upper] with upper > lower (Angstrom)");
+      }
+    }
+    r.check(any, "x", "a rigid region needs at least one of x, y, z = [lower, upper]");
+    read_vec3(r, "velocity", g.velocity, false);
+    c.regions.push_back(g);
+  }
+}
+
+// [box]: the domain's size (the blocks' extent unless given) and boundaries.
+void read_domain(io::Section& root, const particles::Vec3& extent, bool all_fcc, DpdConfig& c) {
+  auto box = root.optional_table("box");
+  particles::Vec3 size = extent;
+  if (box.has("size")) read_vec3(box, "size", size, true);
+  else box.check(all_fcc, "size", "is needed when a block is a random fill");
+  for (int d = 0; d < 3; ++d) box.check(size[d] > 0, "size", "every edge must be positive");
+  c.domain.box.lx = size[0], c.domain.box.ly = size[1], c.domain.box.lz = size[2];
+  const auto bnd = box.strings("boundary", {"p", "p", "p"});
+  if (bnd.size() == 3) {
+    for (int d = 0; d < 3; ++d) {
+      box.check(bnd[d] == "p" || bnd[d] == "f", "boundary", "each entry is \"p\" (periodic) or \"f\" (open)");
+      c.domain.periodic[d] = bnd[d] == "p";
+    }
+  } else {
+    box.check(false, "boundary", "expected three entries, e.g. [\"p\", \"p\", \"f\"]");
+  }
+}
+
+// [dpd]: the ensemble, the integrator and the DPD(E) parameters; `rc` the pair cutoff.
+void read_dpd_params(io::Section& dp, double rc, DpdConfig& c) {
+  DpdParams& p = c.params;
+  p.energy_conserving = dp.choice("ensemble", {"dpd", "dpde"}, "dpd") == "dpde";
+  p.integrator = dp.choice("integrator", {"shardlow", "velocity_verlet"}, "shardlow") == "shardlow"
+                     ? Integrator::shardlow
+                     : Integrator::velocity_verlet;
+  dp.check(!(p.energy_conserving && p.integrator != Integrator::shardlow), "integrator",
+           "DPDE (ensemble = \"dpde\") needs integrator = \"shardlow\"");
+  p.gamma = dp.number("gamma");
+  dp.non_negative("gamma", p.gamma);
+  p.cutoff = dp.number("cutoff", rc);
+  dp.positive("cutoff", p.cutoff);
+  p.temperature = dp.number("temperature");
+  dp.temperature("temperature", p.temperature);
+  c.initial_temperature = dp.number("initial_temperature", p.temperature);
+  dp.temperature("initial_temperature", c.initial_temperature);
+  if (p.energy_conserving) {
+    const double cv = dp.number("heat_capacity_kB");
+    dp.positive("heat_capacity_kB", cv);
+    p.heat_capacity = cv * units::boltzmann_eV_per_K;
+  }
+  const auto seed = dp.integer("seed", 1);
+  dp.check(seed >= 0, "seed", "must be >= 0");
+  p.seed = static_cast<std::uint64_t>(seed);
+}
+
+// [equilibrate] and [run].
+void read_run(io::Section& root, DpdConfig& c) {
+  const DpdParams& p = c.params;
+  auto eq = root.optional_table("equilibrate");
+  if (eq.present()) {
+    c.equilibrate = true;
+    c.berendsen.temperature = eq.number("temperature", p.temperature);
+    eq.positive("temperature", c.berendsen.temperature);
+    eq.temperature("temperature", c.berendsen.temperature);
+    c.berendsen.tau = eq.number("tau");
+    eq.positive("tau", c.berendsen.tau);
+    c.equilibrate_steps = eq.integer("steps");
+    eq.check(c.equilibrate_steps >= 0, "steps", "must be >= 0");
+  }
+
+  auto run = root.table("run");
+  c.dt = run.number("dt");
+  run.positive("dt", c.dt);
+  run.check(c.dt <= 1.0, "dt", "is above 1 ps: DPD time steps in metal units are 0.001-0.1 ps");
+  if (c.equilibrate)
+    eq.check(c.berendsen.tau >= c.dt, "tau", fmt::format("must be at least the time step run.dt = {} ps", c.dt));
+  c.steps = run.integer("steps");
+  run.check(c.steps >= 0, "steps", "must be >= 0");
+  c.thermo = run.integer("thermo", 100);
+  run.check(c.thermo >= 1, "thermo", "must be >= 1");
+  c.dump_every = run.integer("dump_every", 0);
+  run.check(c.dump_every >= 0 && (c.dump_every == 0 || (c.thermo >= 1 && c.dump_every % c.thermo == 0)), "dump_every",
+            "must be 0 (no dump) or a multiple of thermo");
+  c.skin = run.number("skin", 1.0);
+  run.non_negative("skin", c.skin);
+}
+
+}  // namespace
+
+DpdConfig read_dpd_config(io::Deck& deck) {
+  DpdConfig c;
+  c.deck_file = deck.name();
+  auto root = deck.root();
+
+  auto cs = root.table("case");
+  c.id = cs.string("id");
+  c.title = cs.string("title", "");
+  c.seed_ref = cs.string("seed", "");
+
+  c.potential = read_potential(root.table("potential"), std::filesystem::path(deck.name()).parent_path().string());
+  const double rc = cutoff(c.potential);
+
+  // Particles.
+  std::set<std::string> group_names;
+  auto blocks = root.tables("block");
+  if (blocks.empty()) root.check(false, "block", "at least one [[block]] of particles is needed");
+  particles::Vec3 extent{0, 0, 0};
+  bool all_fcc = true;
+  for (auto& b : blocks) {
+    c.blocks.push_back(read_block(b, group_names));
+    const BlockSpec& s = c.blocks.back();
+    for (int d = 0; d < 3; ++d) {
+      const double top = s.origin[d] + (s.fcc ? s.cells[d] * s.constant : s.size[d]);
+      extent[d] = std::max(extent[d], top);
+    }
+    all_fcc = all_fcc && s.fcc;
+  }
+  read_regions(root, c, group_names);
+  read_domain(root, extent, all_fcc, c);
+  auto dp = root.table("dpd");
+  read_dpd_params(dp, rc, c);
+  read_run(root, c);
+  read_analysis(root, c, group_names);
+  read_coupling(root, c);
+  check_memory(root, c);
+  deck.finish();
+  return c;
+}
+
+}  // namespace mpmx::app::dpd

@@ -1,0 +1,112 @@
+#include "mpmx/app/dpd/fit_config.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/units.hpp"
+#include "mpmx/io/run_record.hpp"
+#include "mpmx/md/potential/registry.hpp"
+
+namespace mpmx::app::dpd {
+
+FitConfig read_fit_config(io::Deck& deck) {
+  FitConfig c;
+  c.deck_file = deck.name();
+  const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
+  auto root = deck.root();
+  auto cs = root.table("case");
+  c.id = cs.string("id");
+  c.title = cs.string("title", "");
+  c.seed_ref = cs.string("seed", "");
+
+  auto md = root.table("md");
+  io::Section pot = md.table("potential");
+  c.md_potential = md::read_potential(pot, deck_dir);
+  c.lattice_constant = md.number("lattice_constant");
+  md.positive("lattice_constant", c.lattice_constant);
+  c.md.cells = static_cast<int>(md.integer("cells", 5));
+  md.check(c.md.cells >= 2 && c.md.cells <= 40, "cells", "must be from 2 to 40 fcc cells per edge");
+  c.md.temperature = md.number("temperature");
+  md.positive("temperature", c.md.temperature);
+  md.temperature("temperature", c.md.temperature);
+  c.md.dt = md.number("dt", 0.002);
+  md.check(c.md.dt > 0 && c.md.dt <= 0.01, "dt", "must lie in (0, 0.01] ps");
+  c.md.equilibrate_steps = static_cast<int>(md.integer("equilibrate_steps", 3000));
+  md.check(c.md.equilibrate_steps >= 0 && c.md.equilibrate_steps <= 100000000, "equilibrate_steps",
+           "must be from 0 to 1e8");
+  c.md.sample_steps = static_cast<int>(md.integer("sample_steps", 3000));
+  md.check(c.md.sample_steps >= 100 && c.md.sample_steps <= 100000000, "sample_steps", "must be from 100 to 1e8");
+  const auto seed = md.integer("seed", 1);
+  md.check(seed >= 0, "seed", "must be >= 0");
+  c.md.seed = static_cast<std::uint64_t>(seed);
+
+  auto dn = root.table("densities");
+  const double from = dn.number("from", 0.9), to = dn.number("to", 1.1);
+  const int points = static_cast<int>(dn.integer("points", 11));
+  dn.check(from > 0.5 && from < 1.0, "from", "must lie in (0.5, 1): rho / rho0 of the least dense sample");
+  dn.check(to > 1.0 && to < 1.5, "to", "must lie in (1, 1.5): rho / rho0 of the densest sample");
+  dn.check(points >= 3 && points <= 101, "points", "must be from 3 to 101");
+  for (int k = 0; k < points && points >= 3 && points <= 101; ++k)
+    c.density_ratios.push_back(from + (to - from) * k / (points - 1));
+
+  auto dp = root.table("dpd");
+  multiscale::FitOptions& f = c.fit;
+  f.atoms_per_particle = dp.number("atoms_per_particle", 8.0);
+  dp.check(f.atoms_per_particle >= 1 && f.atoms_per_particle <= 1e6, "atoms_per_particle",
+           "must be from 1 to 1e6");
+  f.start.rc = dp.number("cutoff");
+  dp.positive("cutoff", f.start.rc);
+  f.start.shift = dp.boolean("shift", true);
+  auto st = dp.table("start");
+  f.start.d0 = st.number("d0");
+  st.positive("d0", f.start.d0);
+  f.start.alpha = st.number("alpha");
+  st.positive("alpha", f.start.alpha);
+  f.start.r0 = st.number("r0");
+  st.check(f.start.r0 > 0 && f.start.r0 < f.start.rc, "r0", "must lie between 0 and dpd.cutoff");
+  f.start.update_offset();
+  f.iterations = static_cast<int>(dp.integer("iterations", 3));
+  dp.check(f.iterations >= 0 && f.iterations <= 20, "iterations", "must be from 0 to 20");
+  multiscale::DpdIsothermOptions& d = f.dpd;
+  d.cells = static_cast<int>(dp.integer("cells", 4));
+  dp.check(d.cells >= 2 && d.cells <= 40, "cells", "must be from 2 to 40 coarse fcc cells per edge");
+  d.temperature = c.md.temperature;
+  d.gamma = dp.number("gamma", 0.2);
+  dp.positive("gamma", d.gamma);
+  const double cv = dp.number("heat_capacity_kB", 3.0 * f.atoms_per_particle - 3.0);
+  dp.positive("heat_capacity_kB", cv);
+  d.heat_capacity = cv * units::boltzmann_eV_per_K;
+  d.dt = dp.number("dt", 0.005);
+  dp.check(d.dt > 0 && d.dt <= 0.1, "dt", "must lie in (0, 0.1] ps");
+  d.skin = dp.number("skin", 1.0);
+  dp.non_negative("skin", d.skin);
+  d.berendsen_tau = dp.number("berendsen_tau", 0.5);
+  dp.check(d.berendsen_tau >= d.dt, "berendsen_tau", "must be at least dpd.dt");
+  d.equilibrate_steps = static_cast<int>(dp.integer("equilibrate_steps", 1000));
+  dp.check(d.equilibrate_steps >= 0 && d.equilibrate_steps <= 100000000, "equilibrate_steps", "must be from 0 to 1e8");
+  d.sample_steps = static_cast<int>(dp.integer("sample_steps", 2000));
+  dp.check(d.sample_steps >= 100 && d.sample_steps <= 100000000, "sample_steps", "must be from 100 to 1e8");
+  const auto dseed = dp.integer("seed", 1);
+  dp.check(dseed >= 0, "seed", "must be >= 0");
+  d.seed = static_cast<std::uint64_t>(dseed);
+
+  auto out = root.optional_table("output");
+  c.potential_file = out.string("potential_file", "dpd_potential.toml");
+  out.check(!c.potential_file.empty() && c.potential_file.find('/') == std::string::npos, "potential_file",
+            "must be a plain file name (written into the output folder)");
+  deck.finish();
+  return c;
+}
+
+void write_potential_file(const std::string& path, const MorsePotential& m, const std::string& comment) {
+  std::string c = "# ";
+  for (char ch : comment) c += ch == '\n' ? std::string("\n# ") : std::string(1, ch);
+  io::write_file_atomic(path, fmt::format("{}\n[potential]\nstyle = \"morse\"\nd0 = {:.17g}\nalpha = {:.17g}\n"
+                                          "r0 = {:.17g}\ncutoff = {:.17g}\nshift = {}\n",
+                                          c, m.d0, m.alpha, m.r0, m.rc, m.shift ? "true" : "false"));
+}
+
+}  // namespace mpmx::app::dpd

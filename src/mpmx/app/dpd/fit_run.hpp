@@ -1,0 +1,24 @@
+#pragma once
+// Runs a fit-dpd deck (D0): the MD isotherm, the fit, the fitted DPDE isotherm; writes
+// DIR/isotherm.csv, DIR/<potential file> and DIR/run.json (parameters, the largest
+// deviation over the MD pressure range, zero-pressure densities, D0's targets).
+#include <string>
+
+#include <toml++/toml.h>
+
+#include "mpmx/app/dpd/fit_config.hpp"
+
+namespace mpmx::app::dpd {
+
+using namespace mpmx::dpd;  // the DPD driver speaks the engine's names
+
+struct FitRunSummary {
+  MorsePotential potential;
+  double max_deviation_over_range = 0;
+  double zero_pressure_md = 0, zero_pressure_dpd = 0;  // rho / rho0
+  double wall_seconds = 0;
+};
+
+FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads);
+
+}  // namespace mpmx::app::dpd

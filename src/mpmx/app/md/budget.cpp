@@ -1,0 +1,60 @@
+#include "mpmx/app/md/budget.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/machine.hpp"
+
+namespace mpmx::app::md {
+
+MdBudget estimate_md(const MdConfig& c, double cutoff) {
+  MdBudget b;
+  const double a = c.lattice_constant, reach = cutoff + c.options.skin;
+  double n[3];
+  double filled = 1.0;  // the part of the cells that holds atoms
+  if (c.bar) {
+    n[0] = c.bar_config.cells_x, n[1] = n[2] = c.bar_config.cells_yz;
+    b.size_key = "bar.cells_x and bar.cells_yz";
+  } else if (c.jet) {
+    const JetConfig& j = c.jet_config;
+    n[0] = j.nx(), n[1] = j.ny(), n[2] = j.nz();
+    filled = 1.0 - j.notch_depth_A() / (2.0 * n[0] * a);  // the V notch: half its depth's share
+    b.size_key = "jet.cells and jet.scale";
+  } else {
+    for (int d = 0; d < 3; ++d) n[d] = c.cells[d];
+    b.size_key = "lattice.cells";
+  }
+  b.atoms = std::round(4.0 * n[0] * n[1] * n[2] * filled);
+  // Locals plus ghosts: the box grown by the reach on every side (an upper bound: the
+  // bar's x has vacuum instead of images).
+  const double density = 4.0 / (a * a * a);
+  double entries = density;
+  for (int d = 0; d < 3; ++d) entries *= n[d] * a + 2.0 * reach;
+  entries = std::max(entries, b.atoms);
+  const double pairs = b.atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density;
+  b.bytes = kBytesFixed + kBytesPerLocal * b.atoms + kBytesPerEntry * entries + kBytesPerPair * pairs +
+            (c.bar || c.jet ? kBytesPerEntryPerAtom * entries : 0.0) + (c.jet ? kBytesPerJetAtom * b.atoms : 0.0);
+  const double steps = static_cast<double>(c.relax_steps) + static_cast<double>(c.steps);
+  b.atom_steps = b.atoms * (steps + c.scan_points);
+  b.work_key = c.relax_steps > 0 ? "thermal.relax_steps + run.steps" : "run.steps";
+  if (c.jet) b.work_key = "jet.duration_ps and jet.scale";
+  return b;
+}
+
+void check_md_budget(const MdBudget& b, std::uint64_t memory_bytes, bool force) {
+  if (memory_bytes > 0 && b.bytes > static_cast<double>(memory_bytes))
+    throw InputError(fmt::format(
+        "{}: {:.4g} atoms need about {} of memory ({:.4g} bytes), more than this machine's {}: make the "
+        "system smaller",
+        b.size_key, b.atoms, format_bytes(b.bytes), b.bytes, format_bytes(static_cast<double>(memory_bytes))));
+  if (!force && b.atom_steps > kMdWorkLimit)
+    throw InputError(fmt::format(
+        "{}: {:.4g} atoms x {:.4g} steps = {:.4g} atom-steps, about {:.3g} days at {:.2g} atom-steps/s: more "
+        "than the {:.3g} atom-steps (a day) a run takes without --force",
+        b.work_key, b.atoms, b.atom_steps / b.atoms, b.atom_steps,
+        b.atom_steps / kMdAtomStepsPerSecond / 86400.0, kMdAtomStepsPerSecond, kMdWorkLimit));
+}
+
+}  // namespace mpmx::app::md

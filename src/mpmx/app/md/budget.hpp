@@ -1,0 +1,33 @@
+#pragma once
+// What an MD deck will cost before it runs: atoms, peak memory, work (atom-steps). A
+// deck the machine cannot hold is refused always; one that would run for more than
+// about a day is refused unless forced. Both name the key and the figure.
+#include <cstdint>
+#include <string>
+
+#include "mpmx/app/md/config.hpp"
+#include "mpmx/md/budget.hpp"
+
+namespace mpmx::app::md {
+
+using namespace mpmx::md;  // the MD driver speaks the engine's names
+
+// About a day of MD on one core: the most work a run takes without --force.
+inline constexpr double kMdWorkLimit = 86400.0 * kMdAtomStepsPerSecond;
+
+struct MdBudget {
+  double atoms = 0;        // atoms of the system (the bar's for a bar deck)
+  std::string size_key;    // the key that sets them ("lattice.cells", "bar.cells_x and bar.cells_yz")
+  double bytes = 0;        // estimated peak memory
+  double atom_steps = 0;   // atoms x (relax_steps + steps), plus one per atom per scan point
+  std::string work_key;    // "run.steps" or "thermal.relax_steps + run.steps"
+};
+
+// `cutoff`: the potential's (Potential::cutoff()).
+MdBudget estimate_md(const MdConfig& c, double cutoff);
+
+// Throws InputError when the estimate exceeds `memory_bytes` (always), or the work
+// exceeds kMdWorkLimit unless `force`; `memory_bytes` 0: unknown, not checked.
+void check_md_budget(const MdBudget& b, std::uint64_t memory_bytes, bool force);
+
+}  // namespace mpmx::app::md

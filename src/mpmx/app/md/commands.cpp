@@ -1,0 +1,160 @@
+// `mpmx md DECK --out DIR [--check] [--force] [--lammps [--ranks N] | --lammps-write-only]`:
+// an MD-only run (issue 3); for a bar deck, optionally its reference through LAMMPS.
+// `--check` does every validation the run does (deck, potential file and its elements,
+// memory and work estimates) and writes nothing; the run creates DIR only after them.
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "mpmx/app/cli_checks.hpp"
+#include "mpmx/app/commands.hpp"
+#include "mpmx/app/md/budget.hpp"
+#include "mpmx/app/md/config.hpp"
+#include "mpmx/app/md/jet_run.hpp"
+#include "mpmx/app/md/lammps_bar.hpp"
+#include "mpmx/app/md/lammps_jet.hpp"
+#include "mpmx/app/md/run.hpp"
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/machine.hpp"
+#include "mpmx/io/deck.hpp"
+#include "mpmx/io/staged_dir.hpp"
+#include "mpmx/md/bar.hpp"
+
+namespace mpmx::app {
+
+namespace {
+
+// The bar of a deck through LAMMPS instead of mpmx's own MD: inputs in OUT/lammps/,
+// then (unless write_only) lmp, and its slab stress as OUT/bar_stress_lammps.csv. Written
+// into `stage` (the staging folder of OUT, io/staged_dir.hpp); messages name OUT.
+void run_bar_lammps(const std::string& deck, const md::MdConfig& c, const std::string& out, const std::string& stage,
+                    bool write_only, int ranks) {
+  namespace fs = std::filesystem;
+  if (!c.bar)
+    throw InputError(fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", deck));
+  const fs::path dir = fs::path(stage) / "lammps", shown = fs::path(out) / "lammps";
+  const md::Bar bar(c.bar_config, md::Potential(c.potential), c.options);
+  md::write_lammps_bar(bar, c.potential, c.dt, c.steps, c.bar_every, dir.string());
+  if (write_only) {
+    fmt::print("{} atoms, {} steps: wrote {} and {}; run `lmp -in {}` there (or under mpirun); the slab stress "
+               "(GPa) lands in {}\n",
+               bar.system().atoms().size(), c.steps, (shown / md::kLammpsBarData).string(),
+               (shown / md::kLammpsBarInput).string(), md::kLammpsBarInput, (shown / md::kLammpsBarStress).string());
+    return;
+  }
+  const md::LammpsRun r = md::run_lammps(dir.string(), ranks);
+  if (r.ranks < ranks) fmt::print(stderr, "md: mpirun not on PATH, LAMMPS ran on 1 rank instead of {}\n", ranks);
+  const auto samples =
+      md::read_lammps_bar_stress((dir / md::kLammpsBarStress).string(), c.dt, c.bar_config.bins);
+  const fs::path csv = fs::path(stage) / "bar_stress_lammps.csv";
+  md::write_bar_stress_csv(csv.string(), samples, bar.slab_centres());
+  fmt::print("{} atoms, {} steps through LAMMPS (`{}` in {}) -> {}\n", bar.system().atoms().size(), c.steps,
+             r.command, shown.string(), (fs::path(out) / "bar_stress_lammps.csv").string());
+}
+
+// The jet of a deck through LAMMPS: inputs in OUT/lammps/, then (unless write_only) lmp,
+// and its bins' stress as OUT/jet_stress_lammps.csv (long table, one row per bin and record).
+void run_jet_lammps(const md::MdConfig& c, const std::string& out, const std::string& stage, bool write_only,
+                    int ranks) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(stage) / "lammps", shown = fs::path(out) / "lammps";
+  md::JetGeometry geo;
+  const md::System sys = md::build_jet(c.jet_config, md::Potential(c.potential), c.options, &geo);
+  const md::BinGrid grid = md::jet_grid(geo, c.jet_bins[0], c.jet_bins[1]);
+  md::write_lammps_jet(sys, geo, grid, c.potential, c.dt, c.steps, c.jet_every, c.dump_every, dir.string());
+  if (write_only) {
+    fmt::print("{} atoms, {} steps: wrote {} and {}; run `lmp -in {}` there (or under mpirun); the bins' stress "
+               "(GPa) lands in {}\n",
+               sys.atoms().size(), c.steps, (shown / md::kLammpsJetData).string(),
+               (shown / md::kLammpsJetInput).string(), md::kLammpsJetInput, (shown / md::kLammpsJetStress).string());
+    return;
+  }
+  const md::LammpsRun r = md::run_lammps(dir.string(), ranks, md::kLammpsJetInput, md::kLammpsJetStress);
+  if (r.ranks < ranks) fmt::print(stderr, "md: mpirun not on PATH, LAMMPS ran on 1 rank instead of {}\n", ranks);
+  const auto samples = md::read_lammps_bar_stress((dir / md::kLammpsJetStress).string(), c.dt, grid.nx * grid.ny);
+  const fs::path csv = fs::path(stage) / "jet_stress_lammps.csv";
+  std::ofstream f(csv);
+  if (!f) throw RunError(fmt::format("cannot write {}", csv.string()));
+  f << "step,time_ps,ix,iy,x_A,y_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n";
+  for (const auto& s : samples)
+    for (int k = 0; k < grid.nx * grid.ny; ++k) {
+      const md::Mat3& m = s.stress_gpa[k];
+      const int ix = k % grid.nx, iy = k / grid.nx;
+      f << fmt::format("{},{:.6f},{},{},{:.6g},{:.6g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", s.step, s.time_ps,
+                       ix, iy, grid.x_centre(ix), grid.y_centre(iy), m[0], m[4], m[8], m[1], m[2], m[5]);
+    }
+  if (!f) throw RunError(fmt::format("error writing {}", csv.string()));
+  fmt::print("{} atoms, {} steps through LAMMPS (`{}` in {}) -> {}\n", sys.atoms().size(), c.steps, r.command,
+             shown.string(), (fs::path(out) / "jet_stress_lammps.csv").string());
+}
+
+}  // namespace
+
+void add_md_commands(CLI::App& app) {
+  auto* md = app.add_subcommand("md", "Run an MD-only deck (fcc crystal, EAM/LJ/Sutton-Chen, NVE)");
+  struct Args {
+    std::string deck, out;
+    bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false;
+    int ranks = 1, threads = 1;
+  };
+  auto args = std::make_shared<Args>();
+  md->add_option("deck", args->deck, "MD deck (TOML)")->required();
+  md->add_option("--threads", args->threads,
+                 "OpenMP threads over the atoms, 0 for all cores (default 1; results are the same for any count)");
+  md->add_option("--out", args->out, "output directory (default: run-<deck name>)");
+  md->add_flag("--check", args->check,
+               "validate the deck, the potential file and the memory and work estimates; write nothing");
+  md->add_flag("--quiet", args->quiet, "no progress line");
+  md->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
+  auto* lammps = md->add_flag("--lammps", args->lammps,
+                              "bar and jet decks: run the sample through LAMMPS (lmp) instead of mpmx's MD; "
+                              "inputs in OUT/lammps/, binned stress in OUT/bar_stress_lammps.csv or "
+                              "OUT/jet_stress_lammps.csv");
+  md->add_flag("--lammps-write-only", args->lammps_write_only,
+               "bar and jet decks: only write the LAMMPS inputs to OUT/lammps/ (to run on a cluster)")
+      ->excludes(lammps);
+  md->add_option("--ranks", args->ranks, "MPI ranks for --lammps (mpirun -np N when N > 1)")
+      ->check(whole_number(1, 1 << 20))
+      ->needs(lammps);
+  md->callback([args] {
+    auto deck = io::Deck::from_file(args->deck);
+    md::MdConfig config = md::read_md_config(deck);  // parses the potential file too
+    // mpmx md advances one large system: its threaded form (the same bits for any count).
+    config.options.threaded = true;
+    config.options.threads = args->threads > 0 ? args->threads : static_cast<int>(hardware_threads());
+    const md::Potential potential(config.potential);
+    const md::MdBudget budget = md::estimate_md(config, potential.cutoff());
+    // Memory always; work unless --force, or when only LAMMPS inputs are written.
+    md::check_md_budget(budget, physical_memory_bytes(), args->force || args->lammps_write_only);
+    if (args->check) {
+      const double hours = budget.atom_steps / md::kMdAtomStepsPerSecond / 3600.0;
+      fmt::print("{}: ok ({:.4g} atoms, {} steps, about {} of memory, {:.3g} atom-steps, about {:.3g} h on one "
+                 "core at {:.2g} atom-steps/s)\n",
+                 args->deck, budget.atoms, config.steps, format_bytes(budget.bytes), budget.atom_steps, hours,
+                 md::kMdAtomStepsPerSecond);
+      return;
+    }
+    std::string out = args->out;
+    if (out.empty()) out = "run-" + std::filesystem::path(args->deck).stem().string();
+    if (std::error_code ec; std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
+      throw InputError(fmt::format("--out {}: exists and is not a directory", out));
+    if (args->lammps || args->lammps_write_only) {
+      if (!config.jet && !config.bar)
+        throw InputError(
+            fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", args->deck));
+      io::run_staged(out, [&](const std::string& dir) {
+        if (config.jet) run_jet_lammps(config, out, dir, args->lammps_write_only, args->ranks);
+        else run_bar_lammps(args->deck, config, out, dir, args->lammps_write_only, args->ranks);
+        return 0;
+      });
+      return;
+    }
+    const auto r = io::run_staged(
+        out, [&](const std::string& dir) { return md::run_md(config, dir, deck.table(), args->quiet); });
+    fmt::print("{} atoms, {} steps, {:.3g} s, {:.4g} atom-steps/s, PE {:.6f} eV/atom -> {}/run.json\n", r.atoms,
+               r.steps, r.wall_seconds, r.atom_steps_per_second, r.potential_energy_per_atom, out);
+  });
+}
+
+}  // namespace mpmx::app

@@ -1,0 +1,198 @@
+#include "mpmx/app/md/config.hpp"
+
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+
+namespace mpmx::app::md {
+
+namespace {
+
+constexpr std::int64_t kMax64 = std::numeric_limits<std::int64_t>::max();
+
+// [lattice]: the fcc crystal and its initial strain.
+void read_lattice(io::Section& lat, MdConfig& c) {
+  lat.choice("type", {"fcc"}, "fcc");
+  c.lattice_constant = lat.number("constant");
+  lat.positive("constant", c.lattice_constant);
+  const auto cells = lat.integers("cells", 1, 1000);  // unit cells along x, y, z
+  if (cells.size() == 3 || cells.size() == 1) {
+    for (int d = 0; d < 3; ++d) c.cells[d] = static_cast<int>(cells[cells.size() == 3 ? d : 0]);
+  } else {
+    lat.check(false, "cells", "expected [nx, ny, nz] or [n]");
+  }
+  c.strain_x = lat.number("strain_x", 0.0);
+  lat.check(c.strain_x > -0.5 && c.strain_x < 0.5, "strain_x", "must lie in (-0.5, 0.5)");
+}
+
+// [thermal]: the start temperature, its random stream, the relaxation.
+void read_thermal(io::Section& th, MdConfig& c) {
+  c.temperature = th.number("temperature", 0.0);
+  th.temperature("temperature", c.temperature);
+  c.seed = static_cast<std::uint64_t>(th.integer("seed", 1, 0, kMax64));
+  c.relax_steps = th.integer("relax_steps", 0, 0, kMax64);
+}
+
+// [run]: the time step and length, output, neighbour skin, precision, deformation.
+// `jet`: the deck has a [jet] table, which sets the length itself.
+void read_run(io::Section& run, bool jet, MdConfig& c) {
+  c.dt = run.number("dt");
+  run.positive("dt", c.dt);
+  run.check(c.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
+  if (!jet) c.steps = run.integer("steps", 0, kMax64);  // a jet's follow from its duration
+  c.thermo = run.integer("thermo", 100, 1, INT_MAX);
+  run.choice("ensemble", {"nve"}, "nve");
+  c.dump_every = run.integer("dump_every", 0, 0, INT_MAX);
+  run.check(c.dump_every == 0 || c.dump_every % c.thermo == 0 || jet, "dump_every",
+            "must be 0 (no dump) or a multiple of thermo");
+  c.options.skin = run.number("skin", 1.0);
+  run.non_negative("skin", c.options.skin);
+  c.options.mixed_precision = run.choice("precision", {"double", "mixed"}, "double") == "mixed";
+  c.options.deformation =
+      run.choice("deformation", {"boundary", "affine"}, "boundary") == "affine" ? Deformation::affine
+                                                                                : Deformation::boundary;
+  const bool has_rate = run.has("strain_rate_per_s");
+  const bool has_grad = run.has("velocity_gradient_per_ps");
+  run.check(!(has_rate && has_grad), "strain_rate_per_s",
+            "give either strain_rate_per_s or velocity_gradient_per_ps, not both");
+  if (has_rate) c.velocity_gradient[0] = run.number("strain_rate_per_s") * 1e-12;
+  if (has_grad) {
+    const auto g = run.numbers("velocity_gradient_per_ps");
+    if (g.size() == 9) std::copy(g.begin(), g.end(), c.velocity_gradient.begin());
+    else run.check(false, "velocity_gradient_per_ps", "expected 9 numbers (row-major dv_i/dx_j)");
+  }
+  c.streaming = run.boolean("streaming_start", false);
+}
+
+// [scan]: the lattice-constant scan (M1).
+void read_scan(io::Section& scan, MdConfig& c) {
+  c.scan_from = scan.number("lattice_from");
+  scan.positive("lattice_from", c.scan_from);
+  c.scan_to = scan.number("lattice_to");
+  scan.check(c.scan_to > c.scan_from, "lattice_to", "must exceed lattice_from");
+  c.scan_points = scan.integer_int("points", 41, 3, 100000);
+}
+
+// [bar]: the direct-MD bar between walls.
+void read_bar(io::Section& bar, MdConfig& c) {
+  c.bar = true;
+  BarConfig& b = c.bar_config;
+  b.cells_x = bar.integer_int("cells_x", 2, 100000);
+  b.cells_yz = bar.integer_int("cells_yz", 1, 1000);
+  b.strain_left = bar.number("strain_left", 0.0);
+  bar.check(b.strain_left > -0.5 && b.strain_left < 0.5, "strain_left", "must lie in (-0.5, 0.5)");
+  b.split = bar.number("split", 0.5);
+  bar.check(b.split > 0 && b.split < 1, "split", "must lie in (0, 1)");
+  b.piston_velocity = bar.number("piston_velocity", 0.0);
+  b.bins = bar.integer_int("bins", 100, 1, 100000);
+  c.bar_every = bar.integer("output_every", 100, 1, INT_MAX);
+  b.lattice_constant = c.lattice_constant;
+  b.temperature = c.temperature;
+  b.seed = c.seed;
+}
+
+// [jet] (sec. 7.1): the sample (scale, cells, piston, notch, velocity); `run` is the
+// deck's [run] table, which a jet deck leaves the length and thermo rows to [jet].
+void read_jet_sample(io::Section& jet, io::Section& run, bool has_bar, MdConfig& c) {
+  run.check(!run.has("steps"), "steps",
+            "a [jet] deck sets its length by jet.duration_ps (times jet.scale); drop run.steps");
+  run.check(!run.has("thermo"), "thermo", "a [jet] deck records every jet.record_every_ps; drop run.thermo");
+  if (has_bar) jet.error("a deck holds [bar] or [jet], not both");
+  c.jet = true;
+  JetConfig& j = c.jet_config;
+  j.scale = jet.number("scale", 1.0);
+  jet.check(j.scale > 0 && j.scale <= 10, "scale", "must lie in (0, 10]");
+  const auto cells = jet.integers("cells", 1, 100000);  // at scale 1: x (piston included), y, z
+  if (cells.size() == 3) {
+    for (int d = 0; d < 3; ++d) j.cells[d] = static_cast<int>(cells[d]);
+  } else {
+    jet.check(false, "cells", "expected [nx, ny, nz] (fcc cells at scale 1; z is not scaled)");
+  }
+  j.piston_cells = jet.integer_int("piston_cells", 1, 100000);
+  j.notch_depth_nm = jet.number("notch_depth_nm");
+  jet.non_negative("notch_depth_nm", j.notch_depth_nm);
+  j.velocity_km_s = jet.number("velocity_km_s", 2.5);
+  jet.check(j.velocity_km_s > 0 && j.velocity_km_s <= 20, "velocity_km_s", "must lie in (0, 20] km/s");
+  j.lattice_constant = c.lattice_constant;
+  j.temperature = c.temperature;
+  j.seed = c.seed;
+  if (cells.size() == 3 && j.scale > 0 && j.scale <= 10) {
+    jet.check(j.nx() >= 2 && j.ny() >= 1, "cells",
+              fmt::format("at scale {} the sample is {} x {} cells: needs at least 2 x 1", j.scale, j.nx(), j.ny()));
+    jet.check(j.npiston() >= 1 && j.npiston() < j.nx(), "piston_cells",
+              fmt::format("at scale {} the piston is {} of {} cells: needs at least 1 and fewer than the sample",
+                          j.scale, j.npiston(), j.nx()));
+    jet.check(j.notch_depth_A() < (j.nx() - j.npiston()) * c.lattice_constant, "notch_depth_nm",
+              fmt::format("at scale {} the notch ({} A) is not shallower than the block ({} A)", j.scale,
+                          j.notch_depth_A(), (j.nx() - j.npiston()) * c.lattice_constant));
+  }
+}
+
+// [jet]'s records: the bins and the run's length and record interval, in steps of run.dt.
+void read_jet_records(io::Section& jet, io::Section& run, MdConfig& c) {
+  const JetConfig& j = c.jet_config;
+  const auto bins = jet.integers("bins", 1, 100000);
+  if (bins.size() == 2) {
+    c.jet_bins = {static_cast<int>(bins[0]), static_cast<int>(bins[1])};
+    jet.check(bins[0] * bins[1] <= 10'000'000, "bins",
+              "more than 10^7 bins: each record's tables would not fit (400 x 50 is the seed's)");
+  } else {
+    jet.check(false, "bins", "expected [nx, ny] (bins over the sample's x and y)");
+  }
+  const double duration = jet.number("duration_ps");
+  jet.positive("duration_ps", duration);
+  const double every = jet.number("record_every_ps");
+  jet.positive("record_every_ps", every);
+  if (duration > 0 && every > 0 && c.dt > 0 && j.scale > 0) {
+    const double steps = j.scale * duration / c.dt, per = j.scale * every / c.dt;
+    jet.check(steps < 1e15, "duration_ps", fmt::format("times the scale is {:.3g} steps: too many", steps));
+    jet.check(per >= 1 && per < INT_MAX, "record_every_ps",
+              fmt::format("times the scale is {:.6g} steps of run.dt: needs 1 to 2^31 - 1 (rounded)", per));
+    if (steps < 1e15 && per >= 1 && per < INT_MAX) {
+      c.steps = std::llround(steps);
+      c.jet_every = std::llround(per);
+      jet.check(c.steps % c.jet_every == 0, "record_every_ps",
+                fmt::format("{} steps per record does not divide the run's {} steps", c.jet_every, c.steps));
+      c.thermo = c.jet_every;
+      run.check(c.dump_every % c.jet_every == 0, "dump_every",
+                fmt::format("must be 0 (no dump) or a multiple of the {} steps per record", c.jet_every));
+    }
+  }
+}
+
+}  // namespace
+
+MdConfig read_md_config(io::Deck& deck) {
+  MdConfig c;
+  c.deck_file = deck.name();
+  const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
+  auto root = deck.root();
+
+  c.potential = read_potential(root.table("potential"), deck_dir);
+
+  auto lat = root.table("lattice");
+  read_lattice(lat, c);
+  auto th = root.optional_table("thermal");
+  read_thermal(th, c);
+  auto run = root.table("run");
+  read_run(run, root.has("jet"), c);
+  auto scan = root.optional_table("scan");
+  if (scan.present()) read_scan(scan, c);
+  auto bar = root.optional_table("bar");
+  if (bar.present()) read_bar(bar, c);
+  auto jet = root.optional_table("jet");
+  if (jet.present()) {
+    read_jet_sample(jet, run, bar.present(), c);
+    read_jet_records(jet, run, c);
+  }
+  deck.finish();
+  return c;
+}
+
+}  // namespace mpmx::app::md

@@ -1,0 +1,17 @@
+#pragma once
+// LAMMPS text dump of one MD frame (OVITO and LAMMPS read it): id type x y z vx vy vz,
+// with the box as LAMMPS writes a triclinic cell (a = (lx,0,0), b = (xy,ly,0),
+// c = (xz,yz,lz)); positions are those of the rectangular fundamental box, equivalent
+// modulo the image lattice.
+#include <cstdint>
+#include <ostream>
+
+#include "mpmx/md/particles.hpp"
+
+namespace mpmx::app::md {
+
+using namespace mpmx::md;  // the MD driver speaks the engine's names
+
+void write_lammps_dump(std::ostream& out, std::int64_t step, const Atoms& atoms, const Box& box);
+
+}  // namespace mpmx::app::md

@@ -1,0 +1,221 @@
+#include "mpmx/app/md/run.hpp"
+
+#include <chrono>
+#include <climits>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "mpmx/app/md/dump.hpp"
+#include "mpmx/app/md/jet_run.hpp"
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/progress.hpp"
+#include "mpmx/io/run_record.hpp"
+#include "mpmx/md/bar.hpp"
+#include "mpmx/md/particles.hpp"
+#include "mpmx/md/system.hpp"
+
+namespace mpmx::app::md {
+
+namespace {
+
+// Advances in chunks an int holds (System::advance counts steps in int).
+void advance_steps(System& s, std::int64_t steps, const Mat3& gradient, double dt) {
+  for (std::int64_t done = 0; done < steps;) {
+    const int chunk = static_cast<int>(std::min<std::int64_t>(steps - done, INT_MAX));
+    s.advance(chunk, gradient, dt);
+    done += chunk;
+  }
+}
+
+bool finite(const Mat3& m) {
+  for (double v : m)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+// The message of a run the physics stopped, or "" while every figure is finite.
+std::string non_finite_state(const System& s, double pe_per_atom) {
+  const Mat3 st = s.stress_gpa();
+  if (std::isfinite(pe_per_atom) && finite(st) && std::isfinite(s.box().lx) && std::isfinite(s.box().ly) &&
+      std::isfinite(s.box().lz))
+    return {};
+  return fmt::format("step {}: the state went non-finite (potential energy {} eV/atom, stress xx {} GPa, box "
+                     "{} x {} x {} A): the time step or the deformation may be too large",
+                     s.step(), pe_per_atom, st[0], s.box().lx, s.box().ly, s.box().lz);
+}
+
+toml::array matrix(const Mat3& m) {
+  toml::array rows;
+  for (int r = 0; r < 3; ++r) rows.push_back(toml::array{m[3 * r], m[3 * r + 1], m[3 * r + 2]});
+  return rows;
+}
+
+// Energy per atom of the perfect lattice for each lattice constant (M1, fig. 7.2).
+toml::table lattice_scan(const MdConfig& c, const Potential& pot) {
+  toml::array as, es;
+  double best_a = 0, best_e = 1e300;
+  for (int k = 0; k < c.scan_points; ++k) {
+    const double a = c.scan_from + (c.scan_to - c.scan_from) * k / (c.scan_points - 1);
+    System s(fcc(c.cells[0], c.cells[1], c.cells[2], a), pot, c.options);
+    const double e = s.potential_energy() / static_cast<double>(s.atoms().size());
+    as.push_back(a);
+    es.push_back(e);
+    if (e < best_e) best_e = e, best_a = a;
+  }
+  return toml::table{{"lattice_constant", as}, {"energy_per_atom", es},
+                     {"minimum_lattice_constant", best_a}, {"minimum_energy_per_atom", best_e}};
+}
+
+// Direct-MD bar: slab stress over time in bar_stress.csv (long format).
+// Returns "" or, when the state went non-finite, why the run stopped.
+std::string run_bar(const MdConfig& c, const Potential& pot, const std::string& out_dir, MdRunSummary& r,
+                    toml::table& rec) {
+  namespace fs = std::filesystem;
+  Bar bar(c.bar_config, pot, c.options);
+  fs::create_directories(out_dir);  // only once the bar is built: a bad deck leaves nothing
+  std::ofstream csv(fs::path(out_dir) / "bar_stress.csv");
+  csv << "step,time_ps,bin,x_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n";
+  auto rows = [&] {
+    const auto s = bar.slab_stress_gpa();
+    const auto x = bar.slab_centres();
+    for (std::size_t b = 0; b < s.size(); ++b)
+      csv << fmt::format("{},{:.6f},{},{:.6g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", bar.system().step(),
+                         bar.system().time(), b, x[b], s[b][0], s[b][4], s[b][8], s[b][1], s[b][2], s[b][5]);
+  };
+  rows();
+  const auto t0 = std::chrono::steady_clock::now();
+  std::string stopped;
+  for (std::int64_t done = 0; done < c.steps;) {
+    const std::int64_t chunk = std::min<std::int64_t>(c.bar_every, c.steps - done);
+    bar.advance(static_cast<int>(chunk), c.dt);  // bar_every <= INT_MAX (config)
+    done += chunk;
+    rows();
+    stopped = non_finite_state(bar.system(), bar.system().potential_energy());
+    if (!stopped.empty()) break;
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const System& s = bar.system();
+  const double n = static_cast<double>(s.atoms().size());
+  r.atoms = static_cast<long>(n);
+  r.steps = static_cast<long>(s.step());
+  r.atom_steps_per_second = secs > 0 ? n * static_cast<double>(s.step()) / secs : 0.0;
+  r.potential_energy_per_atom = s.potential_energy() / n;
+  r.stress_gpa = s.stress_gpa();
+  rec.insert("bar", toml::table{{"wall_lo", s.walls().lo}, {"wall_hi", s.walls().hi},
+                                {"bins", c.bar_config.bins}, {"stress_csv", "bar_stress.csv"}});
+  return stopped;
+}
+
+// The keys every md run.json has; `extra` adds the run's own, then run.json is written
+// atomically, valid JSON even when the state went non-finite. `stopped`: why the physics
+// stopped the run ("" when it completed).
+void write_record(const MdConfig& c, const Potential& pot, const toml::table& deck_echo,
+                  const MdRunSummary& r, toml::table extra, const std::string& out_dir,
+                  const std::string& stopped) {
+  toml::table rec{{"version", MPMX_VERSION},
+                  {"command", "md"},
+                  {"status", stopped.empty() ? "completed" : "stopped"},
+                  {"deck_file", c.deck_file},
+                  {"deck", deck_echo},
+                  {"potential", pot.describe()},
+                  {"atoms", static_cast<std::int64_t>(r.atoms)},
+                  {"steps", static_cast<std::int64_t>(r.steps)},
+                  {"dt_ps", c.dt},
+                  {"wall_seconds", r.wall_seconds},
+                  {"atom_steps_per_second", r.atom_steps_per_second},
+                  {"threads", c.options.threaded ? c.options.threads : 1},
+                  {"potential_energy_per_atom", r.potential_energy_per_atom},
+                  {"stress_gpa", matrix(r.stress_gpa)}};
+  if (!stopped.empty()) rec.insert("error", stopped);
+  for (auto&& [k, v] : extra) rec.insert_or_assign(k, std::move(v));
+  io::write_file_atomic((std::filesystem::path(out_dir) / "run.json").string(), io::json_text(rec));
+  if (!stopped.empty()) throw RunError(fmt::format("{} (partial results in {})", stopped, out_dir));
+}
+
+}  // namespace
+
+MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::table& deck_echo, bool quiet) {
+  namespace fs = std::filesystem;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Potential pot(c.potential);
+  if (c.bar || c.jet) {
+    MdRunSummary r;
+    toml::table rec;
+    const std::string stopped = c.bar ? run_bar(c, pot, out_dir, r, rec) : run_jet(c, pot, out_dir, r, rec, quiet);
+    r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    write_record(c, pot, deck_echo, r, std::move(rec), out_dir, stopped);
+    return r;
+  }
+  System sys(fcc(c.cells[0], c.cells[1], c.cells[2], c.lattice_constant, c.strain_x), pot, c.options);
+  // Only now, with the potential read and the system built: a bad deck or potential
+  // leaves no output folder behind.
+  fs::create_directories(out_dir);
+  if (c.temperature > 0) sys.thermalize(c.temperature, c.seed, 0);
+  if (c.relax_steps > 0) advance_steps(sys, c.relax_steps, Mat3{}, c.dt);  // section 6.2
+  if (c.streaming) sys.add_streaming_velocity(c.velocity_gradient);
+  const double n = static_cast<double>(sys.atoms().size());
+  std::string stopped;
+
+  std::ofstream csv(fs::path(out_dir) / "thermo.csv");
+  csv << "step,time_ps,pe_per_atom_eV,ke_per_atom_eV,etotal_per_atom_eV,temperature_K,"
+         "sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa,lx_A,ly_A,lz_A\n";
+  auto row = [&] {
+    const Mat3 s = sys.stress_gpa();
+    const double pe = sys.potential_energy() / n, ke = sys.kinetic_energy() / n;
+    stopped = non_finite_state(sys, pe);
+    csv << fmt::format("{},{:.6f},{:.12g},{:.12g},{:.12g},{:.6g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.12g},{:.12g},{:.12g}\n",
+                       sys.step(), sys.time(), pe, ke, pe + ke, sys.temperature(), s[0], s[4], s[8], s[1], s[2],
+                       s[5], sys.box().lx, sys.box().ly, sys.box().lz);
+  };
+  row();
+  std::ofstream dump;
+  if (c.dump_every > 0) {
+    dump.open(fs::path(out_dir) / "dump.lammpstrj");
+    write_lammps_dump(dump, sys.step(), sys.snapshot(), sys.box());
+  }
+  Progress progress("md", c.steps, quiet);
+  progress.show_rate(n, "atom-steps");
+  const auto run_start = std::chrono::steady_clock::now();
+  std::int64_t done = 0;
+  while (done < c.steps) {
+    const std::int64_t chunk = std::min<std::int64_t>(c.thermo - sys.step() % c.thermo, c.steps - done);
+    sys.advance(static_cast<int>(chunk), c.velocity_gradient, c.dt);
+    done += chunk;
+    if (sys.step() % c.thermo == 0 || done == c.steps) row();
+    if (!stopped.empty()) break;
+    if (c.dump_every > 0 && sys.step() % c.dump_every == 0) write_lammps_dump(dump, sys.step(), sys.snapshot(), sys.box());
+    progress.update(done);
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  progress.finish(done);
+  csv.close();
+
+  MdRunSummary r;
+  r.atoms = static_cast<long>(n);
+  const std::int64_t run_steps = sys.step() - c.relax_steps;  // fewer when stopped
+  r.steps = static_cast<long>(run_steps);
+  r.wall_seconds = std::chrono::duration<double>(t1 - t0).count();
+  const double run_seconds = std::chrono::duration<double>(t1 - run_start).count();
+  r.atom_steps_per_second = run_seconds > 0 ? n * static_cast<double>(run_steps) / run_seconds : 0.0;
+  r.potential_energy_per_atom = sys.potential_energy() / n;
+  r.stress_gpa = sys.stress_gpa();
+
+  toml::table rec;
+  rec.insert("relax_steps", static_cast<std::int64_t>(c.relax_steps));
+  rec.insert("run_seconds", run_seconds);
+  rec.insert("kinetic_energy_per_atom", sys.kinetic_energy() / n);
+  rec.insert("temperature_K", sys.temperature());
+  rec.insert("box", toml::table{{"lx", sys.box().lx}, {"ly", sys.box().ly}, {"lz", sys.box().lz},
+                                {"xy", sys.box().xy}, {"xz", sys.box().xz}, {"yz", sys.box().yz}});
+  rec.insert("neighbor_builds", sys.neighbor_builds());
+  rec.insert("precision", c.options.mixed_precision ? "mixed" : "double");
+  if (c.scan_points > 0 && stopped.empty()) rec.insert("scan", lattice_scan(c, pot));
+  write_record(c, pot, deck_echo, r, std::move(rec), out_dir, stopped);
+  return r;
+}
+
+}  // namespace mpmx::app::md

@@ -1,0 +1,46 @@
+#pragma once
+// The MD-to-DPD fit (seed 004 sec. 2.2, ref. [20]; VALIDATION.md D0): the conservative
+// pair potential of mesoparticles of `atoms_per_particle` atoms on the coarse fcc
+// lattice (constant a (atoms_per_particle)^(1/3), 2a for 8 atoms) fitted so that DPDE
+// at the isotherm's temperature reproduces the MD isotherm P(rho).
+//
+// The form is Morse, U = D0 [exp(-2 alpha (r - r0)) - 2 exp(-alpha (r - r0))] shifted to
+// zero at rc: a minimum (r0, D0) and a soft exponential core, three parameters that map
+// onto the isotherm's zero-pressure density, its bulk modulus and the modulus's pressure
+// derivative; an n-m form's power-law core is too stiff under the compression a
+// mesoparticle of 8 atoms softens (and has one more parameter than the isotherm pins).
+//
+// The DPDE pressure is P_static(theta, a) + P_thermal(a): the perfect lattice's static
+// pressure, exact and cheap for any parameters theta, plus the thermal part (the
+// mesoparticles' kinetic pressure and vibrations). The fit iterates: least squares of
+// P_static(theta, a_k) + c_k against P_MD(a_k) over theta (Nelder-Mead from the start
+// parameters); then DPDE runs at the new theta measure c_k = P_DPDE - P_static; repeat.
+// The last DPDE runs are the fitted model's isotherm. Deterministic: same inputs, same
+// parameters (any thread count).
+#include <vector>
+
+#include "mpmx/dpd/potential/morse.hpp"
+#include "mpmx/multiscale/isotherm.hpp"
+
+namespace mpmx::multiscale {
+
+struct FitOptions {
+  double atoms_per_particle = 8;
+  dpd::MorsePotential start;  // initial parameters and the fixed cutoff / shift
+  int iterations = 3;    // thermal-correction rounds (each a set of DPDE runs)
+  DpdIsothermOptions dpd;
+};
+
+struct FitResult {
+  dpd::MorsePotential potential;
+  std::vector<double> md_lattice, coarse_lattice;  // Angstrom
+  std::vector<IsothermPoint> md, dpd;              // the MD isotherm and the fitted DPDE one
+  std::vector<double> static_pressure, thermal;    // GPa, at the fitted parameters
+  double max_deviation_over_range = 0;  // max_k |P_DPDE - P_MD| / (max P_MD - min P_MD)
+  int evaluations = 0;                  // of the least-squares objective, all rounds
+};
+
+// `md` is the MD isotherm at the atomic lattice constants of its points.
+FitResult fit_morse(const std::vector<IsothermPoint>& md, const FitOptions& o);
+
+}  // namespace mpmx::multiscale

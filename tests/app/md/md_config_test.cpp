@@ -1,0 +1,185 @@
+// The MD deck reader (app/md/config.hpp): integers range-checked, not wrapped; nan
+// refused at read time; the potential file parsed and its elements checked at read time
+// (issue 17); [jet] deck errors that name the key, the value and the reason.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+
+#include "mpmx/app/md/config.hpp"
+#include "mpmx/core/error.hpp"
+#include "mpmx/io/deck.hpp"
+
+#include "../../md/md_test_util.hpp"
+
+using namespace mpmx;
+using namespace mpmx::md;
+using namespace mpmx::app::md;
+
+namespace {
+
+const std::string kCu = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
+
+std::string write(const std::string& name, const std::string& text) {
+  return mpmx::test::scratch_file(name, text).string();
+}
+
+MdConfig config_of(const std::string& text) {
+  auto deck = mpmx::io::Deck::from_string(text, "budget.toml");
+  return read_md_config(deck);
+}
+
+const std::string kLj = R"(
+[potential]
+style = "lj"
+epsilon = 0.4
+sigma = 2.3
+cutoff = 5.0
+mass = 63.5
+[lattice]
+constant = 3.615
+cells = [CELLS]
+[run]
+dt = 0.001
+steps = STEPS
+)";
+
+std::string lj(const std::string& cells, const std::string& steps) {
+  std::string t = kLj;
+  t.replace(t.find("CELLS"), 5, cells);
+  t.replace(t.find("STEPS"), 5, steps);
+  return t;
+}
+
+}  // namespace
+
+TEST(MdConfigHostile, IntegersAreRangeCheckedNotWrapped) {
+  auto error = [](const std::string& text) {
+    try {
+      config_of(text);
+    } catch (const mpmx::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  std::string t = lj("5", "10");
+  t += "[scan]\nlattice_from = 3.5\nlattice_to = 3.7\npoints = 4294967299\n";
+  auto msg = error(t);
+  EXPECT_NE(msg.find("key 'scan.points' = 4294967299: out of range: must be an integer from 3 to 100000"),
+            std::string::npos)
+      << msg;
+  t = lj("4294967297, 5, 5", "10");
+  msg = error(t);
+  EXPECT_NE(msg.find("key 'lattice.cells' = [4294967297, 5, 5]: entry 1 = 4294967297: out of range: must be "
+                     "an integer from 1 to 1000"),
+            std::string::npos)
+      << msg;
+  t = lj("5", "10");
+  t.replace(t.find("style = \"lj\""), 12, "style = \"sutton_chen\"\na = 3.61\nc = 39.4\nn = 9\nm = 4294967302");
+  t.replace(t.find("sigma = 2.3\n"), 12, "");
+  msg = error(t);
+  EXPECT_NE(msg.find("key 'potential.m' = 4294967302: out of range: must be an integer from 1 to 100"),
+            std::string::npos)
+      << msg;
+  t = lj("5", "10") + "[bar]\ncells_x = 40\ncells_yz = 4\nbins = 4294967396\n";
+  msg = error(t);
+  EXPECT_NE(msg.find("key 'bar.bins' = 4294967396: out of range: must be an integer from 1 to 100000"),
+            std::string::npos)
+      << msg;
+  t = lj("5", "1e6");
+  msg = error(t);
+  EXPECT_NE(msg.find("key 'run.steps' = 1000000.0: expected an integer, got a number"), std::string::npos) << msg;
+  t = lj("5", "10") + "thermo = 4294967396\n";
+  msg = error(t);
+  EXPECT_NE(msg.find("key 'run.thermo' = 4294967396: out of range: must be an integer from 1 to 2147483647"),
+            std::string::npos)
+      << msg;
+}
+
+TEST(MdConfigHostile, NanVelocityGradientIsRefusedAtReadTime) {
+  std::string t = lj("5", "10") + "velocity_gradient_per_ps = [0, 0, 0, 0, nan, 0, 0, 0, 0]\n";
+  try {
+    config_of(t);
+    FAIL() << "nan accepted";
+  } catch (const mpmx::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("key 'run.velocity_gradient_per_ps' = [0, 0, 0, 0, nan, 0, 0, 0, 0]: "
+                                         "entry 5 is nan"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(MdConfigHostile, PotentialFileIsParsedAndItsElementsCheckedAtReadTime) {
+  const std::string empty = write("Empty2.eam.alloy", "");
+  auto error = [](const std::string& text) {
+    try {
+      config_of(text);
+    } catch (const mpmx::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string eam = "[potential]\nstyle = \"eam\"\nfile = \"FILE\"\nelements = [ELEMENTS]\n"
+                          "[lattice]\nconstant = 3.615\ncells = [3]\n[run]\ndt = 0.001\nsteps = 10\n";
+  auto deck = [&](const std::string& file, const std::string& elements) {
+    std::string t = eam;
+    t.replace(t.find("FILE"), 4, file);
+    t.replace(t.find("ELEMENTS"), 8, elements);
+    return t;
+  };
+  auto msg = error(deck(empty, "\"Cu\""));
+  EXPECT_NE(msg.find("key 'potential.file'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("the EAM potential file is empty"), std::string::npos) << msg;
+  msg = error(deck(kCu, "\"Cu\", \"Zr\""));
+  EXPECT_NE(msg.find("key 'potential.elements' = [\"Cu\", \"Zr\"]: element 'Zr' is not in"), std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("(it has: Cu)"), std::string::npos) << msg;
+  EXPECT_EQ(error(deck(kCu, "\"Cu\"")), "(no error)");
+}
+
+TEST(JetDeck, ErrorsNameKeyValueAndReason) {
+  const std::string head = R"(
+[potential]
+file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy"
+elements = ["Cu"]
+[lattice]
+constant = 3.615
+cells = [1, 1, 1]
+[run]
+dt = 0.001
+)";
+  auto error_of = [&](const std::string& run_extra, const std::string& jet) {
+    auto deck = io::Deck::from_string(head + run_extra + "[jet]\n" + jet, "jet.toml");
+    try {
+      (void)read_md_config(deck);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string good = "cells = [400, 200, 3]\npiston_cells = 40\nnotch_depth_nm = 36.0\nbins = [8, 4]\n"
+                           "duration_ps = 30.0\nrecord_every_ps = 1.0\n";
+  EXPECT_EQ(error_of("", good + "scale = 0.04\n"), "");
+  auto has = [](const std::string& msg, const std::string& part) {
+    return msg.find(part) != std::string::npos;
+  };
+  EXPECT_TRUE(has(error_of("steps = 100\n", good), "run.steps")) << error_of("steps = 100\n", good);
+  const std::string neg = error_of("", good + "scale = -1.0\n");
+  EXPECT_TRUE(has(neg, "jet.scale") && has(neg, "-1") && has(neg, "(0, 10]")) << neg;
+  const std::string nan = error_of("", good + "scale = nan\n");
+  EXPECT_TRUE(has(nan, "jet.scale")) << nan;
+  const std::string deep = error_of("", "cells = [400, 200, 3]\npiston_cells = 40\nnotch_depth_nm = 140.0\n"
+                                        "bins = [8, 4]\nduration_ps = 30.0\nrecord_every_ps = 1.0\n");
+  EXPECT_TRUE(has(deep, "jet.notch_depth_nm") && has(deep, "shallower")) << deep;
+  const std::string bins = error_of("", "cells = [400, 200, 3]\npiston_cells = 40\nnotch_depth_nm = 36.0\n"
+                                        "bins = [8]\nduration_ps = 30.0\nrecord_every_ps = 1.0\n");
+  EXPECT_TRUE(has(bins, "jet.bins")) << bins;
+  const std::string every = error_of("", good + "scale = 0.0001\n");
+  EXPECT_TRUE(has(every, "jet.record_every_ps")) << every;
+  const std::string big = error_of("", "cells = [400, 200, 1000000]\npiston_cells = 40\nnotch_depth_nm = 36.0\n"
+                                       "bins = [8, 4]\nduration_ps = 30.0\nrecord_every_ps = 1.0\n");
+  EXPECT_TRUE(has(big, "jet.cells") && has(big, "1000000")) << big;
+  const std::string many = error_of("", "cells = [400, 200, 3]\npiston_cells = 40\nnotch_depth_nm = 36.0\n"
+                                        "bins = [100000, 100000]\nduration_ps = 30.0\nrecord_every_ps = 1.0\n");
+  EXPECT_TRUE(has(many, "jet.bins") && has(many, "10^7")) << many;
+}
