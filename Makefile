@@ -7,7 +7,7 @@ FUZZ_SECONDS ?= 600
 JOBS       ?= $(shell nproc)
 CTEST_ARGS ?=
 
-.PHONY: all deps build test test-release test-sanitize demo bench fuzz clean
+.PHONY: all deps build test test-release test-sanitize demo bench fuzz jet-study clean
 
 all: build
 
@@ -38,6 +38,11 @@ demo: build
 # -march=native for the code outside the vector kernels; the 1-D and MD kernels pick
 # their path at run time whatever the build, and their benches time each path this
 # machine has.
+# The copper-jet study (Table 7.1, docs/jet.md): make jet-study SCALE=s0p1 (or tiny, full).
+SCALE ?= s0p1
+jet-study: build
+	scripts/jet-study --scale $(SCALE) --build $(BUILD)
+
 bench: deps
 	@cmake -S . -B $(BENCH_BUILD) -DCMAKE_BUILD_TYPE=Release -DMPMX_NATIVE=ON >/dev/null
 	@cmake --build $(BENCH_BUILD) -j $(JOBS)

@@ -59,12 +59,23 @@ def error_at(run, t):
     return 100.0 * best["error"], best["time"]
 
 
-def row_figures(study, name, t20):
+def not_run(name):
+    """A row the study has not finished (--partial): its numbers blank."""
+    keys = ["error_percent", "atom_steps", "atom_steps_unshared", "wall_seconds", "peak_memory_bytes",
+            "audit_rel_rms", "audit_max_gpa", "boxes_max", "points"]
+    return {"row": name, "cells": "", "per_cell": None, "status": "not run", **{k: None for k in keys}}
+
+
+def row_figures(study, name, t20, partial=False):
     path = os.path.join(study, name, "run.json")
     if not os.path.exists(path):
+        if partial:
+            return not_run(name)
         fail(f"no {path}: run scripts/jet-study first")
     with open(path) as f:
         run = json.load(f)
+    if partial and run.get("status") != "completed":
+        return not_run(name)
     deck = run["deck"]
     cells = deck["grid"]["cells"]
     per = deck["particles"]["per_cell"]
@@ -107,14 +118,18 @@ def write_csv(study, rows):
 def table_figure(study, rows, scale):
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2))
     coarse, fourpc = rows[0:3], [rows[1], rows[3], rows[4]]
-    a.plot([r["per_cell"] for r in coarse], [r["error_percent"] for r in coarse], "o-", label=f"mpmx, s = {scale:g}")
-    a.plot([r["per_cell"] for r in coarse], [r["seed_percent"] for r in coarse], "s--", label="dissertation (s = 1)")
+    per_cell = [1, 4, 16]  # the table's, whether or not a row has run
+    nan = float("nan")
+    a.plot(per_cell, [nan if r["error_percent"] is None else r["error_percent"] for r in coarse], "o-",
+           label=f"mpmx, s = {scale:g}")
+    a.plot(per_cell, [r["seed_percent"] for r in coarse], "s--", label="dissertation (s = 1)")
     a.set_xscale("log", base=2)
-    a.set_xlabel(f"points per cell ({coarse[0]['cells']} cells)")
+    a.set_xlabel(f"points per cell ({coarse[0]['cells'] or 'coarse'} cells)")
     a.set_ylabel("eq. 7.12 error at the scaled 20 ps (%)")
     a.set_title("(a) points per cell")
-    labels = [r["cells"] for r in fourpc]
-    b.plot(range(3), [r["error_percent"] for r in fourpc], "o-", label=f"mpmx DDMP-MD, s = {scale:g}")
+    labels = [r["cells"] or r["row"].split("_")[3] for r in fourpc]
+    b.plot(range(3), [nan if r["error_percent"] is None else r["error_percent"] for r in fourpc], "o-",
+           label=f"mpmx DDMP-MD, s = {scale:g}")
     b.plot(range(3), [r["seed_percent"] for r in fourpc], "s--", label="dissertation DDMP-MD (s = 1)")
     for r, style, law in zip(rows[5:], (":", "-."), ("mie_gruneisen", "cubic_elastic")):
         if r["error_percent"] is not None:
@@ -143,6 +158,9 @@ def summary(study, rows, scale, md_run):
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     wall, peak = md["wall_seconds"], 0
     for r in rows:
+        if r["status"] == "not run":
+            lines.append(f"| {r['row']} | not run yet |" + " |" * 12)
+            continue
         save = r["atom_steps_unshared"] / r["atom_steps"] if r["atom_steps"] else None
         lines.append(f"| {r['row']} | {r['cells']} | {r['per_cell']} | {r['points']} | {fmt(r['error_percent'], '.2f')}% | "
                      f"{fmt(r['seed_percent'], '.1f')}{'%' if r['seed_percent'] else ''} | {fmt(r['atom_steps'] or None, '.3g')} | "
@@ -168,16 +186,20 @@ def main(argv=None):
     ap.add_argument("--md", required=True, help="the direct-MD run")
     ap.add_argument("--scale", required=True, choices=sorted(SCALES))
     ap.add_argument("--quiet", action="store_true")
+    ap.add_argument("--partial", action="store_true",
+                    help="rows without a finished run stay blank (an interrupted study)")
     a = ap.parse_args(argv)
     if len(a.rows) != len(SEED):
         fail(f"{len(a.rows)} rows: the table has {len(SEED)}")
     s = SCALES[a.scale]
-    rows = [row_figures(a.study, name, 20 * s) for name in a.rows]
+    rows = [row_figures(a.study, name, 20 * s, a.partial) for name in a.rows]
     for r, seed in zip(rows, SEED):
         r["seed_percent"] = seed
     written = [write_csv(a.study, rows), table_figure(a.study, rows, s), summary(a.study, rows, s, a.md)]
     j2 = os.path.join(a.study, a.rows[3])
     for name, times in (("fig7_3.png", ["10", "20"]), ("fig7_4.png", ["30"])):
+        if rows[3]["status"] == "not run":
+            break  # the figures are the J2 row's
         out = os.path.join(a.study, name)
         jet_compare.main([a.md, j2, "--times", *times, "--out", out, "--quiet"])
         written.append(out)

@@ -42,6 +42,9 @@ struct PointCost {
   double steps_per_step = 0; // its steps per continuum step
   double setup_steps = 0;    // its steps before the first continuum step (relaxation)
   std::string size_key;      // the deck keys that size it
+  // Its steps a second on one core, timed on this machine when the cost was asked for
+  // (0: not measured; the budget then takes md::kMdAtomStepsPerSecond).
+  double atom_steps_per_second = 0;
 };
 
 // The parameters of one [material] table, read and checked.

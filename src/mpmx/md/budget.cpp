@@ -1,7 +1,10 @@
 #include "mpmx/md/budget.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+
+#include "mpmx/particles/lattice.hpp"
 
 namespace mpmx::md {
 
@@ -12,6 +15,22 @@ double box_bytes(const double n[3], double a, double reach) {
   entries = std::max(entries, atoms);
   const double pairs = atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density;
   return kBytesPerLocal * atoms + kBytesPerEntry * entries + kBytesPerPair * pairs;
+}
+
+double measure_atom_steps_per_second(const Potential& pot, const SystemOptions& options, double a, int cells,
+                                     double temperature, std::uint64_t seed, double dt) {
+  System box(fcc(cells, cells, cells, a, 0.0), pot, options);
+  if (temperature > 0) box.thermalize(temperature, seed, 0);
+  box.advance(10, dt);
+  const auto t0 = std::chrono::steady_clock::now();
+  std::int64_t steps = 0;
+  double seconds = 0.0;
+  while (seconds < 0.1 && steps < 100000) {
+    box.advance(20, dt);
+    steps += 20;
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  return seconds > 0 ? static_cast<double>(steps) * static_cast<double>(box.atoms().size()) / seconds : 0.0;
 }
 
 double compact_box_bytes(double atoms) {

@@ -2,6 +2,10 @@
 // What MD costs in this engine, the figures a run's budget is scaled by: the atom-steps
 // a core runs a second, and the bytes of a periodic box, fitted to measured peak memory
 // (the MD deck's budget, app/md/budget.hpp, and the md_closure boxes of a continuum deck).
+#include <cstdint>
+
+#include "mpmx/md/system.hpp"
+
 namespace mpmx::md {
 
 // mpmx's MD on one core, Cu EAM: 2.1e6-3.2e6 atom-steps/s in an AVX2 -march=native
@@ -29,6 +33,12 @@ inline constexpr double kBytesFixed = 16.0 * 1024 * 1024;
 // whose forces reach `reach` (cutoff + skin), without the program's fixed share: the
 // same fit as the MD deck's estimate, for the md_closure boxes of a continuum deck.
 double box_bytes(const double n[3], double a, double reach);
+
+// Atom-steps a second of a periodic fcc box of cells^3 cells of lattice constant `a` on
+// this core, timed for about a tenth of a second after ten steps that build its lists:
+// what a budget scales a run's work by, measured rather than typed in.
+double measure_atom_steps_per_second(const Potential& pot, const SystemOptions& options, double a, int cells,
+                                     double temperature, std::uint64_t seed, double dt);
 
 // Bytes a box holds between the macro steps of a multiscale run (System::compact: its
 // atoms' positions, velocities, forces, types and ids, and the box's own small state).

@@ -8,6 +8,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/budget.hpp"
+#include "mpmx/md/equilibrium.hpp"
 #include "mpmx/md/potential/registry.hpp"
 
 namespace mpmx::multiscale {
@@ -35,7 +36,25 @@ material::PointCost MdClosureModel::point_cost(double dt) const {
   c.steps_per_step = dt > 0 && md.dt > 0 ? std::max(1.0, dt / md.dt) : 1.0;
   c.setup_steps = static_cast<double>(md.relax_steps);
   c.size_key = "material.md.cells and grid.cells";
+  c.atom_steps_per_second = measured_rate();
   return c;
+}
+
+// One box of the deck stepped on this core (md::measure_atom_steps_per_second): the rate
+// `check` scales the work by, where a typed-in figure would be this build's and machine's
+// only by luck.
+double MdClosureModel::measured_rate() const {
+  if (!md::complete(md.potential)) return 0.0;
+  try {
+    md::Potential pot(md.potential);
+    md::SystemOptions o;
+    o.skin = md.skin;
+    o.mixed_precision = md.mixed_precision;
+    return md::measure_atom_steps_per_second(pot, o, md::fcc_equilibrium(pot).lattice_constant, md.cells,
+                                             md.temperature, md.seed, md.dt);
+  } catch (const std::exception&) {
+    return 0.0;  // the run itself reports what is wrong with the box
+  }
 }
 
 std::string MdClosureModel::build_note() const {

@@ -27,6 +27,7 @@ struct MdClosureModel final : material::Model {
   // sharing can cost (it cannot know the groups before the run). The lists and buffers of
   // a box being advanced are per thread (scratch_bytes).
   material::PointCost point_cost(double dt) const override;
+  double measured_rate() const;
   std::string build_note() const override;
   std::unique_ptr<material::Material<1>> make1() const override;
   std::unique_ptr<material::Material<2>> make2() const override;

@@ -9,16 +9,15 @@
 #include "mpmx/app/md/config.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/io/deck.hpp"
+#include "md_deck_util.hpp"
 
 using namespace mpmx::md;
 using namespace mpmx::app::md;
 
 namespace {
 
-MdConfig config_of(const std::string& text) {
-  auto deck = mpmx::io::Deck::from_string(text, "budget.toml");
-  return read_md_config(deck);
-}
+constexpr auto config_of = mpmx::test::md_config_of;
+constexpr auto lj = mpmx::test::lj_deck;
 
 std::string budget_error(const MdBudget& b, std::uint64_t memory, bool force) {
   try {
@@ -27,28 +26,6 @@ std::string budget_error(const MdBudget& b, std::uint64_t memory, bool force) {
     return e.what();
   }
   return "";
-}
-
-const std::string kLj = R"(
-[potential]
-style = "lj"
-epsilon = 0.4
-sigma = 2.3
-cutoff = 5.0
-mass = 63.5
-[lattice]
-constant = 3.615
-cells = [CELLS]
-[run]
-dt = 0.001
-steps = STEPS
-)";
-
-std::string lj(const std::string& cells, const std::string& steps) {
-  std::string t = kLj;
-  t.replace(t.find("CELLS"), 5, cells);
-  t.replace(t.find("STEPS"), 5, steps);
-  return t;
 }
 
 }  // namespace

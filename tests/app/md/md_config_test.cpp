@@ -11,6 +11,7 @@
 #include "mpmx/io/deck.hpp"
 
 #include "../../md/md_test_util.hpp"
+#include "md_deck_util.hpp"
 
 using namespace mpmx;
 using namespace mpmx::md;
@@ -18,37 +19,13 @@ using namespace mpmx::app::md;
 
 namespace {
 
+constexpr auto config_of = mpmx::test::md_config_of;
+constexpr auto lj = mpmx::test::lj_deck;
+
 const std::string kCu = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
 
 std::string write(const std::string& name, const std::string& text) {
   return mpmx::test::scratch_file(name, text).string();
-}
-
-MdConfig config_of(const std::string& text) {
-  auto deck = mpmx::io::Deck::from_string(text, "budget.toml");
-  return read_md_config(deck);
-}
-
-const std::string kLj = R"(
-[potential]
-style = "lj"
-epsilon = 0.4
-sigma = 2.3
-cutoff = 5.0
-mass = 63.5
-[lattice]
-constant = 3.615
-cells = [CELLS]
-[run]
-dt = 0.001
-steps = STEPS
-)";
-
-std::string lj(const std::string& cells, const std::string& steps) {
-  std::string t = kLj;
-  t.replace(t.find("CELLS"), 5, cells);
-  t.replace(t.find("STEPS"), 5, steps);
-  return t;
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/app/mpm/budget.hpp"
+#include "cli_util.hpp"
 
 namespace {
 
@@ -57,15 +58,13 @@ std::string deck1d(const std::string& name, const std::string& cells, const std:
 
 struct Outcome {
   int code;
-  std::string err;
+  std::string err, out;
 };
 Outcome mpmx(const std::string& args) {
   const std::string err = (test::scratch_root() / "budget_stderr").string();
-  const int status = std::system(fmt::format("'{}' {} >/dev/null 2>'{}'", MPMX_BINARY, args, err).c_str());
-  std::ifstream f(err);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
+  const std::string out = (test::scratch_root() / "budget_stdout").string();
+  const int status = std::system(fmt::format("'{}' {} >'{}' 2>'{}'", MPMX_BINARY, args, out, err).c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::slurp(err), test::slurp(out)};
 }
 
 TEST(MpmBudget, CountsPointsNodesAndSubpoints) {
@@ -128,13 +127,18 @@ end = 1e-6
   EXPECT_NE(s.err.find("scheme.subpoints"), std::string::npos) << s.err;
 }
 
+// A run refuses more than a day of work without --force; a check says so and passes (the
+// deck may be a cluster's).
 TEST(MpmBudget, MoreThanADayOfWorkNeedsForce) {
   const std::string d = deck1d("work.toml", "10", "1000000", "1e-3", "1e9");
-  const auto r = mpmx(fmt::format("check '{}'", d));
+  const auto r = mpmx(fmt::format("run '{}' --out '{}'", d, d + ".out"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("time.end / time.dt"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
-  EXPECT_EQ(mpmx(fmt::format("check --force '{}'", d)).code, 0);
+  const auto c = mpmx(fmt::format("check '{}'", d));
+  EXPECT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(c.out.find("more than a day of work on one core"), std::string::npos) << c.out;
+  EXPECT_EQ(mpmx(fmt::format("check --force '{}'", d)).out.find("more than a day"), std::string::npos);
 }
 
 TEST(MpmBudget, EveryContinuumExamplePasses) {

@@ -34,10 +34,13 @@ void write_lammps_jet(const System& sys, const JetGeometry& geo, const BinGrid& 
       "# eq. 2.25 per bin, bin = ix + nx iy + 1) - the numbers of mpmx's bins/md_bins_STEP.csv.\n"
       "units metal\n"
       "atom_style atomic\n"
-      "# x periodic over a vacuum wider than 2 (cutoff + skin) plus half the sample, as in mpmx:\n"
-      "# no pair crosses it, so the sample is free in x.\n"
-      "boundary p p p\n"
-      "read_data {}\n",
+      "# x free and shrink-wrapped to the sample (mpmx's x is periodic over a vacuum wider than\n"
+      "# 2 (cutoff + skin) plus half the sample, so no pair crosses it there either: same forces).\n"
+      "boundary s p p\n"
+      "read_data {}\n"
+      "# The ranks split x where the atoms are, not the box evenly (its vacuum would leave ranks idle),\n"
+      "# and again every record as the block compresses and the jet grows.\n"
+      "balance 1.0 shift x 20 1.02\n",
       MPMX_VERSION, sys.atoms().size(), g.nx, g.ny, kLammpsJetStress, every, g.nx * g.ny, kLammpsJetData);
   if (sys.step() != 0) in << fmt::format("reset_timestep {}\n", sys.step());
   in << pair;
@@ -49,6 +52,7 @@ void write_lammps_jet(const System& sys, const JetGeometry& geo, const BinGrid& 
       "group piston id <= {}\n"
       "group block subtract all piston\n"
       "fix nve block nve\n"
+      "fix balance all balance {} 1.05 shift x 20 1.02\n"
       "# Bins exactly as mpmx's bin_fields(): ix = floor((x - x0) / dx) in [0, nx), y wrapped\n"
       "# periodically; atoms outside the x range count nowhere (chunk 0, discarded).\n"
       "variable ix atom floor((x-{:.17g})/{:.17g})\n"
@@ -73,7 +77,7 @@ void write_lammps_jet(const System& sys, const JetGeometry& geo, const BinGrid& 
       "compute rxz all reduce/chunk bin sum v_sxz\n"
       "compute ryz all reduce/chunk bin sum v_syz\n"
       "fix out all ave/time {} 1 {} c_rxx c_ryy c_rzz c_rxy c_rxz c_ryz mode vector file {} format \" %.17g\"\n",
-      sys.options().skin, dt, geo.piston_atoms, geo.piston_atoms, g.x0, g.dx, ly, ly, g.ny, g.ny - 1, g.ny - 1, g.nx, g.nx,
+      sys.options().skin, dt, geo.piston_atoms, geo.piston_atoms, every, g.x0, g.dx, ly, ly, g.ny, g.ny - 1, g.ny - 1, g.nx, g.nx,
       g.nx * g.ny, units::eV_per_A3_in_GPa, to_gpa, to_gpa, to_gpa, to_gpa, to_gpa, to_gpa, every, every,
       kLammpsJetStress);
   if (dump_every > 0)

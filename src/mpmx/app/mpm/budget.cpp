@@ -68,7 +68,9 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
     b.bytes += mb;
     if (mb > pb && mb > nb) b.size_key = cost.size_key;
     b.md_atom_steps = b.md_atoms * (cost.steps_per_step * b.steps + cost.setup_steps);
-    b.seconds += b.md_atom_steps / md::kMdAtomStepsPerSecond / b.ranks;
+    b.md_rate = cost.atom_steps_per_second > 0 ? cost.atom_steps_per_second : md::kMdAtomStepsPerSecond;
+    b.md_rate_measured = cost.atom_steps_per_second > 0;
+    b.seconds += b.md_atom_steps / b.md_rate / b.ranks;
   }
   return b;
 }

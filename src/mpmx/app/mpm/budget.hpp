@@ -25,6 +25,8 @@ struct MpmBudget {
   double md_atoms_per_point = 0;  // md_closure: atoms of each point's box
   double md_atoms = 0;     // md_closure: atoms of all the points' boxes
   double md_atom_steps = 0;  // md_closure: those atoms x (relaxation + MD steps of the run), all ranks
+  double md_rate = 0;             // md_closure: the atom-steps a second of one core the work is scaled by
+  bool md_rate_measured = false;  // that rate timed on this machine (PointCost), not the typical figure
   int ranks = 1;           // the boxes spread over so many ranks: bytes and seconds are one rank's
   double bytes = 0;        // estimated peak memory
   double seconds = 0;      // estimated wall time on one core

@@ -91,14 +91,16 @@ void add_mpm_commands(CLI::App& app) {
 
   CLI::App* check = app.add_subcommand("check", "validate a continuum deck without running it");
   check->add_option("deck", args->deck, "TOML deck")->required()->check(CLI::ExistingFile);
-  check->add_flag("--force", args->force, "accept a work estimate over about a day (never the memory one)");
+  check->add_flag("--force", args->force, "do not mention a work estimate over about a day (memory is always checked)");
   check->add_option("--ranks", args->ranks,
                     "estimate for a run over so many MPI ranks (md_closure boxes spread over them; default 1)")
       ->check(CLI::Range(1, 1 << 20));
   check->callback([args] {
     const auto cfg = read_mpm_deck(args->deck);
     const auto budget = estimate_mpm(cfg, args->ranks);
-    check_mpm_budget(budget, physical_memory_bytes(), args->force);
+    // A check refuses what cannot run here (memory); work over a day is said, not refused:
+    // the deck may be meant for a cluster, and `run` asks for --force itself.
+    check_mpm_budget(budget, physical_memory_bytes(), true);
     if (cfg.dim == 1) {
       fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", args->deck, cfg.id, cfg.cells,
                  cfg.per_cell, cfg.steps(), mpm::scheme_name(cfg.scheme.scheme));
@@ -114,11 +116,17 @@ void add_mpm_commands(CLI::App& app) {
                budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string(),
                budget.ranks > 1 ? fmt::format(" (each of {} ranks)", budget.ranks) : std::string());
     if (budget.md_atom_steps > 0)
-      fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.0e} atom-steps/s per core, "
-                 "with one box per point: the most it can cost (boxes shared by history run fewer, as run.json's "
-                 "md.atom_steps against md.atom_steps_unshared says; the memory is that of one box per point too)\n",
+      fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.3g} atom-steps/s per core "
+                 "({}), with one box per point: the most it can cost (boxes shared by history run fewer, as "
+                 "run.json's md.atom_steps against md.atom_steps_unshared says; the memory is that of one box per "
+                 "point too)\n",
                  budget.points, budget.md_atoms_per_point, budget.md_atom_steps,
-                 budget.md_atom_steps / md::kMdAtomStepsPerSecond / 3600.0, md::kMdAtomStepsPerSecond);
+                 budget.md_atom_steps / budget.md_rate / 3600.0, budget.md_rate,
+                 budget.md_rate_measured ? "one of its boxes timed on this core just now" : "a typical figure");
+    if (!(budget.seconds <= kWorkLimitSeconds) && !args->force)
+      fmt::print("  more than a day of work{}: `mpmx run` needs --force; over N MPI ranks it is about 1/N "
+                 "(check --ranks N)\n",
+                 budget.ranks > 1 ? " on each rank" : " on one core");
   });
 }
 
