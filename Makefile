@@ -32,7 +32,10 @@ test-sanitize: deps
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS) -LE 'slow|crosscheck|fuzz' $(CTEST_ARGS)
 
-demo: build
+# The demo needs the program only, not the tests.
+demo: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS) --target mpmx
 	@scripts/demo $(BUILD)/mpmx
 
 # -march=native for the code outside the vector kernels; the 1-D and MD kernels pick

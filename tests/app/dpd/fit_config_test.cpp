@@ -6,10 +6,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <vector>
 
 #include "mpmx/app/dpd/config.hpp"
 #include "mpmx/app/dpd/fit_config.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/io/deck.hpp"
 
 using namespace mpmx;
 namespace fs = std::filesystem;
@@ -58,4 +61,33 @@ steps = 1
     EXPECT_NE(std::string(e.what()).find("potential.file"), std::string::npos) << e.what();
   }
   fs::remove_all(dir);
+}
+
+// Hostile input (issue 31): every integer of a fit-dpd deck is range-checked as read, not
+// cut to 32 bits (4294967298 was read as 2 and passed the 2-40 check).
+TEST(FitConfig, IntegersAreRangeCheckedNotWrapped) {
+  std::ifstream in(std::string(MPMX_SOURCE_DIR) + "/examples/D0_md_to_dpd_fit.toml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string base = ss.str();
+  for (const auto& [table_key, line] : std::vector<std::pair<std::string, std::string>>{
+           {"md.cells", "cells = 5                 # 500 atoms"},
+           {"md.sample_steps", "sample_steps = 5000       # pressure every 10 steps"},
+           {"densities.points", "points = 11"},
+           {"dpd.cells", "cells = 4                 # 256 mesoparticles"},
+           {"dpd.iterations", "iterations = 3            # thermal-correction rounds"}}) {
+    std::string text = base;
+    const auto at = text.find(line);
+    ASSERT_NE(at, std::string::npos) << line;
+    const std::string key = line.substr(0, line.find(' '));
+    text.replace(at, line.size(), key + " = 4294967298");
+    auto deck = io::Deck::from_string(text, "D0.toml");
+    try {
+      app::dpd::read_fit_config(deck);
+      ADD_FAILURE() << table_key << " = 4294967298 was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(table_key), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("4294967298"), std::string::npos) << e.what();
+    }
+  }
 }

@@ -69,7 +69,7 @@ void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>&
   an.check(c.thermo % std::max<std::int64_t>(a.every, 1) == 0, "every", "must divide run.thermo");
   a.onset = an.number("onset", 0.3);
   an.positive("onset", a.onset);
-  a.onset_direction = static_cast<int>(an.integer("onset_direction", 1));
+  a.onset_direction = an.integer_int("onset_direction", 1, -1, 1);
   an.check(a.onset_direction == 1 || a.onset_direction == -1, "onset_direction",
            "must be 1 (the wave pushes along +x) or -1 (along -x)");
   if (an.has("wave_speed")) {
@@ -90,8 +90,7 @@ void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>&
   }
   auto pr = root.optional_table("profile");
   if (pr.present()) {
-    a.profile_bins = static_cast<int>(pr.integer("bins"));
-    pr.check(a.profile_bins >= 1 && a.profile_bins <= 100000, "bins", "must be from 1 to 1e5");
+    a.profile_bins = pr.integer_int("bins", 1, 100000);
     a.profile_every = pr.integer("every");
     pr.check(a.profile_every >= 1 && a.profile_every % std::max<std::int64_t>(a.every, 1) == 0, "every",
              "must be a positive multiple of analysis.every");

@@ -27,28 +27,23 @@ FitConfig read_fit_config(io::Deck& deck) {
   c.md_potential = md::read_potential(pot, deck_dir);
   c.lattice_constant = md.number("lattice_constant");
   md.positive("lattice_constant", c.lattice_constant);
-  c.md.cells = static_cast<int>(md.integer("cells", 5));
-  md.check(c.md.cells >= 2 && c.md.cells <= 40, "cells", "must be from 2 to 40 fcc cells per edge");
+  c.md.cells = md.integer_int("cells", 5, 2, 40);  // fcc cells per edge
   c.md.temperature = md.number("temperature");
   md.positive("temperature", c.md.temperature);
   md.temperature("temperature", c.md.temperature);
   c.md.dt = md.number("dt", 0.002);
   md.check(c.md.dt > 0 && c.md.dt <= 0.01, "dt", "must lie in (0, 0.01] ps");
-  c.md.equilibrate_steps = static_cast<int>(md.integer("equilibrate_steps", 3000));
-  md.check(c.md.equilibrate_steps >= 0 && c.md.equilibrate_steps <= 100000000, "equilibrate_steps",
-           "must be from 0 to 1e8");
-  c.md.sample_steps = static_cast<int>(md.integer("sample_steps", 3000));
-  md.check(c.md.sample_steps >= 100 && c.md.sample_steps <= 100000000, "sample_steps", "must be from 100 to 1e8");
+  c.md.equilibrate_steps = md.integer_int("equilibrate_steps", 3000, 0, 100000000);
+  c.md.sample_steps = md.integer_int("sample_steps", 3000, 100, 100000000);
   const auto seed = md.integer("seed", 1);
   md.check(seed >= 0, "seed", "must be >= 0");
   c.md.seed = static_cast<std::uint64_t>(seed);
 
   auto dn = root.table("densities");
   const double from = dn.number("from", 0.9), to = dn.number("to", 1.1);
-  const int points = static_cast<int>(dn.integer("points", 11));
+  const int points = dn.integer_int("points", 11, 3, 101);
   dn.check(from > 0.5 && from < 1.0, "from", "must lie in (0.5, 1): rho / rho0 of the least dense sample");
   dn.check(to > 1.0 && to < 1.5, "to", "must lie in (1, 1.5): rho / rho0 of the densest sample");
-  dn.check(points >= 3 && points <= 101, "points", "must be from 3 to 101");
   for (int k = 0; k < points && points >= 3 && points <= 101; ++k)
     c.density_ratios.push_back(from + (to - from) * k / (points - 1));
 
@@ -68,11 +63,9 @@ FitConfig read_fit_config(io::Deck& deck) {
   f.start.r0 = st.number("r0");
   st.check(f.start.r0 > 0 && f.start.r0 < f.start.rc, "r0", "must lie between 0 and dpd.cutoff");
   f.start.update_offset();
-  f.iterations = static_cast<int>(dp.integer("iterations", 3));
-  dp.check(f.iterations >= 0 && f.iterations <= 20, "iterations", "must be from 0 to 20");
+  f.iterations = dp.integer_int("iterations", 3, 0, 20);
   multiscale::DpdIsothermOptions& d = f.dpd;
-  d.cells = static_cast<int>(dp.integer("cells", 4));
-  dp.check(d.cells >= 2 && d.cells <= 40, "cells", "must be from 2 to 40 coarse fcc cells per edge");
+  d.cells = dp.integer_int("cells", 4, 2, 40);  // coarse fcc cells per edge
   d.temperature = c.md.temperature;
   d.gamma = dp.number("gamma", 0.2);
   dp.positive("gamma", d.gamma);
@@ -85,10 +78,8 @@ FitConfig read_fit_config(io::Deck& deck) {
   dp.non_negative("skin", d.skin);
   d.berendsen_tau = dp.number("berendsen_tau", 0.5);
   dp.check(d.berendsen_tau >= d.dt, "berendsen_tau", "must be at least dpd.dt");
-  d.equilibrate_steps = static_cast<int>(dp.integer("equilibrate_steps", 1000));
-  dp.check(d.equilibrate_steps >= 0 && d.equilibrate_steps <= 100000000, "equilibrate_steps", "must be from 0 to 1e8");
-  d.sample_steps = static_cast<int>(dp.integer("sample_steps", 2000));
-  dp.check(d.sample_steps >= 100 && d.sample_steps <= 100000000, "sample_steps", "must be from 100 to 1e8");
+  d.equilibrate_steps = dp.integer_int("equilibrate_steps", 1000, 0, 100000000);
+  d.sample_steps = dp.integer_int("sample_steps", 2000, 100, 100000000);
   const auto dseed = dp.integer("seed", 1);
   dp.check(dseed >= 0, "seed", "must be >= 0");
   d.seed = static_cast<std::uint64_t>(dseed);
