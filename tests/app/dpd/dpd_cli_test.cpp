@@ -209,6 +209,8 @@ TEST(DpdCli, BadDecksNameKeyValueAndReason) {
       {"x = [0.0, 3.0]", "x = [3.0, 0.0]", "rigid[0].x"},
       {"dump_every = 20", "dump_every = 7", "'run.dump_every' = 7: must be 0 (no dump) or a multiple of thermo"},
       {"dt = 0.005", "dt = -0.005", "'run.dt' = -0.005: must be positive"},
+      // Issue 31: a skin of 1000 A ran out of memory building the lists.
+      {"dt = 0.005", "dt = 0.005\nskin = 1000.0", "'run.skin' = 1000: must lie in [0, "},
   };
   for (const BadCase& c : cases) {
     std::string text = kGood;

@@ -298,7 +298,10 @@ void read_run(io::Section& root, DpdConfig& c) {
   run.check(c.dump_every >= 0 && (c.dump_every == 0 || (c.thermo >= 1 && c.dump_every % c.thermo == 0)), "dump_every",
             "must be 0 (no dump) or a multiple of thermo");
   c.skin = run.number("skin", 1.0);
-  run.non_negative("skin", c.skin);
+  // A skin beyond the cutoff only multiplies the listed pairs ((rc + skin)^3 / rc^3: 1000
+  // with the seed's 12 A ran out of memory, 1e200 lost every force to rounding).
+  run.check(c.skin >= 0 && c.skin <= cutoff(c.potential), "skin",
+            fmt::format("must lie in [0, {}] Angstrom (the pair cutoff)", cutoff(c.potential)));
 }
 
 }  // namespace

@@ -75,7 +75,7 @@ FitConfig read_fit_config(io::Deck& deck) {
   d.dt = dp.number("dt", 0.005);
   dp.check(d.dt > 0 && d.dt <= 0.1, "dt", "must lie in (0, 0.1] ps");
   d.skin = dp.number("skin", 1.0);
-  dp.non_negative("skin", d.skin);
+  dp.check(d.skin >= 0 && d.skin <= f.start.rc, "skin", "must lie in [0, dpd.cutoff] Angstrom");
   d.berendsen_tau = dp.number("berendsen_tau", 0.5);
   dp.check(d.berendsen_tau >= d.dt, "berendsen_tau", "must be at least dpd.dt");
   d.equilibrate_steps = dp.integer_int("equilibrate_steps", 1000, 0, 100000000);
