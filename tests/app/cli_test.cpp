@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <fstream>
 #include <string>
 #include <thread>
 
@@ -168,3 +169,25 @@ TEST(Cli, TemperaturesAreBounded) {
   EXPECT_EQ(d.status, 2) << d.output;
   EXPECT_NE(d.output.find("dpd.initial_temperature"), std::string::npos) << d.output;
 }
+
+namespace {
+
+// Issue 31: `--out FILE` is an input error of every command (exit 2, a sentence), not a
+// raw filesystem error (exit 1), and the file is left as it was.
+TEST(Cli, OutThatIsAFileIsRefusedByEveryCommand) {
+  const std::string file = ::testing::TempDir() + "cli_out_is_a_file";
+  const std::string src = std::string(MPMX_SOURCE_DIR) + "/examples/";
+  for (const std::string& cmd : {"run " + kDeck, "md " + kMdDeck, "dpd " + src + "D_dpd_equilibrium.toml",
+                                 "fit-dpd " + src + "D0_md_to_dpd_fit.toml"}) {
+    { std::ofstream(file) << "keep me\n"; }
+    const auto r = mpmx_cli(cmd + " --out " + file);
+    EXPECT_EQ(r.status, 2) << cmd << "\n" << r.output;
+    EXPECT_NE(r.output.find("exists and is not a directory"), std::string::npos) << cmd << "\n" << r.output;
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "keep me") << cmd;
+  }
+}
+
+}  // namespace

@@ -15,6 +15,9 @@ std::string StagedDir::staging_of(const std::string& out) { return (fs::path(out
 StagedDir::StagedDir(std::string out, bool keep) : out_(std::move(out)), staging_(staging_of(out_)), keep_(keep) {
   std::error_code ec;
   out_existed_ = fs::exists(out_, ec);
+  // Every command's --out: a file there is the user's, never a folder to write into.
+  if (out_existed_ && !fs::is_directory(out_, ec))
+    throw InputError(fmt::format("--out {}: exists and is not a directory", out_));
   if (!keep) fs::remove_all(staging_, ec);
 }
 
