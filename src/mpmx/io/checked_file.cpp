@@ -1,5 +1,6 @@
 #include "mpmx/io/checked_file.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <iterator>
@@ -114,6 +115,9 @@ void write_checked(const std::string& path, const CheckedKind& k, std::string_vi
 }
 
 std::string read_checked(const std::string& path, const CheckedKind& k) {
+  // A folder opens as a stream on Linux and fails only inside the read.
+  if (std::error_code ec; std::filesystem::is_directory(path, ec))
+    throw InputError(fmt::format("the checkpoint {} is a folder, not a file", path));
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError(fmt::format("cannot open the checkpoint {}", path));
   std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sys/wait.h>
 
@@ -151,6 +152,19 @@ TEST(CheckpointDamage, CommandLineExitsTwo) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), exit_code::bad_input);
   EXPECT_NE(test::read_file(err).find("does not match"), std::string::npos) << test::read_file(err);
+}
+
+// Issue 31: a checkpoint.bin that is a folder is an input error with a sentence, not
+// the standard library's "basic_filebuf::underflow error" (exit 1).
+TEST(CheckpointDamage, AFolderIsRefusedWithASentence) {
+  const std::string dir = ::testing::TempDir() + "checkpoint_is_a_folder";
+  std::filesystem::create_directories(dir);
+  try {
+    (void)io::read_checked(dir, io::CheckedKind{"mpm_run", 1, 0, 0});
+    ADD_FAILURE() << "a folder was read as a checkpoint";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder, not a file"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
