@@ -117,6 +117,18 @@ TEST(Cli, CheckpointMinutesMustBeFinite) {
   EXPECT_NE(r.output.find("--checkpoint-minutes: -5 is negative"), std::string::npos) << r.output;
 }
 
+// Issue 31: --rebalance-above took nan, and -1's message printed the largest double.
+TEST(Cli, RebalanceAboveMustBeFinite) {
+  for (const std::string v : {"nan", "inf", "-1"}) {
+    const auto r = mpmx_cli("run " + kDeck + " --rebalance-above=" + v + " --out " + ::testing::TempDir() + "cli_rb");
+    EXPECT_EQ(r.status, 2) << v << r.output;
+    EXPECT_NE(r.output.find("--rebalance-above: " + v + (v == "-1" ? " is negative" : " is not a finite number")),
+              std::string::npos)
+        << r.output;
+    EXPECT_LT(r.output.size(), 200u) << r.output;
+  }
+}
+
 TEST(Cli, EmptyOutIsRefused) {
   for (const std::string& cmd : {"md " + kMdDeck, "run " + kDeck}) {
     const auto r = mpmx_cli(cmd + " --out ''");

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
@@ -46,7 +47,7 @@ void add_mpm_commands(CLI::App& app) {
   run->add_option("--rebalance-above", args->rebalance_above,
                   "under MPI, move MD boxes between ranks at a checkpoint when the slowest rank's MD time "
                   "exceeds this many times the mean (default 1.2; 0: at every checkpoint)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_non_negative());
   // For tests: stop as if interrupted after step N (a checkpoint at a known step).
   run->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   run->callback([args] {
