@@ -159,4 +159,8 @@ dt = 0.001
   const std::string many = error_of("", "cells = [400, 200, 3]\npiston_cells = 40\nnotch_depth_nm = 36.0\n"
                                         "bins = [100000, 100000]\nduration_ps = 30.0\nrecord_every_ps = 1.0\n");
   EXPECT_TRUE(has(many, "jet.bins") && has(many, "10^7")) << many;
+  // Issue 31: a duration of 100.5 steps was run as 100 without a word.
+  const std::string half = error_of("", "cells = [400, 200, 3]\npiston_cells = 40\nnotch_depth_nm = 36.0\n"
+                                        "bins = [8, 4]\nduration_ps = 1.005\nrecord_every_ps = 1.005\nscale = 0.1\n");
+  EXPECT_TRUE(has(half, "jet.duration_ps") && has(half, "100.5") && has(half, "not a whole number")) << half;
 }

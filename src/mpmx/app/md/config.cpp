@@ -157,6 +157,11 @@ void read_jet_records(io::Section& jet, io::Section& run, MdConfig& c) {
     if (steps < 1e15 && per >= 1 && per < INT_MAX) {
       c.steps = std::llround(steps);
       c.jet_every = std::llround(per);
+      // Whole steps only (to rounding of the product): 100.5 steps is not silently 100.
+      jet.check(std::abs(steps - static_cast<double>(c.steps)) <= 1e-6 * std::max(1.0, steps), "duration_ps",
+                fmt::format("times jet.scale is {:.9g} steps of run.dt = {} ps: not a whole number", steps, c.dt));
+      jet.check(std::abs(per - static_cast<double>(c.jet_every)) <= 1e-6 * std::max(1.0, per), "record_every_ps",
+                fmt::format("times jet.scale is {:.9g} steps of run.dt = {} ps: not a whole number", per, c.dt));
       jet.check(c.steps % c.jet_every == 0, "record_every_ps",
                 fmt::format("{} steps per record does not divide the run's {} steps", c.jet_every, c.steps));
       c.thermo = c.jet_every;
