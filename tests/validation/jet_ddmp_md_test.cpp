@@ -48,6 +48,10 @@ TEST(JetHistory, EachPointReadsTheBinThatHoldsIt) {
   EXPECT_EQ(h.piston_face_A(), 4.0);
   EXPECT_TRUE(h.has(0.1));
   EXPECT_FALSE(h.has(0.3));
+  // Issue 31: a time between records is not a record (it was compared with the nearer one).
+  EXPECT_FALSE(h.has(0.05));
+  EXPECT_FALSE(h.has(0.07));
+  EXPECT_TRUE(h.has(0.1 + 1e-12));  // the rounding of the written times
   EXPECT_EQ(h.sxx(0.0, 3.0, 1.0), 0.0);       // bin (0, 0), first record
   EXPECT_EQ(h.sxx(0.1, 13.0, 6.0), -111.0);   // bin (1, 1), second record
   EXPECT_EQ(h.sxx(0.09, 25.0, 1.0), -120.0);  // the nearest record

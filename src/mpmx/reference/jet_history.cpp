@@ -134,7 +134,9 @@ std::size_t JetHistory::nearest(double t) const {
 
 bool JetHistory::has(double t) const {
   const double interval = times_.size() > 1 ? times_[1] - times_[0] : 1.0;
-  return std::abs(times_[nearest(t)] - t) <= 0.5 * interval + 1e-9;
+  // A record at t, to the rounding of the times written (not the nearest of any distance:
+  // a time between records was compared with the nearer one).
+  return std::abs(times_[nearest(t)] - t) <= 1e-3 * interval + 1e-9;
 }
 
 double JetHistory::sxx(double t, double x, double y) const {

@@ -11,6 +11,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/core/ranks.hpp"
+#include "mpmx/app/mpm/comparison.hpp"
 #include "mpmx/app/mpm/deck.hpp"
 #include "mpmx/md/budget.hpp"
 #include "mpmx/app/mpm/budget.hpp"
@@ -102,6 +103,16 @@ void add_mpm_commands(CLI::App& app) {
     // A check refuses what cannot run here (memory); work over a day is said, not refused:
     // the deck may be meant for a cluster, and `run` asks for --force itself.
     check_mpm_budget(budget, physical_memory_bytes(), true);
+    // The reference as the run reads it, where it is there: a damaged or short direct-MD
+    // history is refused here, not after the run has built its boxes. One not yet run is
+    // only named (a study checks its decks before it runs the direct MD they need).
+    std::error_code ec;
+    const bool reference_missing = !cfg.reference.file.empty() && !std::filesystem::exists(cfg.reference.file, ec);
+    if (!reference_missing) {
+      if (cfg.dim == 1) (void)make_comparison<1>(cfg);
+      else if (cfg.dim == 2) (void)make_comparison<2>(cfg);
+      else (void)make_comparison<3>(cfg);
+    }
     if (cfg.dim == 1) {
       fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", args->deck, cfg.id, cfg.cells,
                  cfg.per_cell, cfg.steps(), mpm::scheme_name(cfg.scheme.scheme));
@@ -124,6 +135,9 @@ void add_mpm_commands(CLI::App& app) {
                  budget.points, budget.md_atoms_per_point, budget.md_atom_steps,
                  budget.md_atom_steps / budget.md_rate / 3600.0, budget.md_rate,
                  budget.md_rate_measured ? "one of its boxes timed on this core just now" : "a typical figure");
+    if (reference_missing)
+      fmt::print("  reference.file {} is not there yet: `mpmx run` needs it (run its direct-MD deck first)\n",
+                 cfg.reference.file);
     if (!(budget.seconds <= kWorkLimitSeconds) && !args->force)
       fmt::print("  more than a day of work{}: `mpmx run` needs --force; over N MPI ranks it is about 1/N "
                  "(check --ranks N)\n",
