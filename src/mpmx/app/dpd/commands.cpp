@@ -27,7 +27,7 @@ void add_dpd_commands(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   dpd->add_option("deck", args->deck, "DPD deck (TOML)")->required();
-  dpd->add_option("--out", args->out, "output directory (default: run-<deck name>)");
+  dpd->add_option("--out", args->out, "output directory (default runs/<deck name>, as run)");
   dpd->add_option("--threads", args->threads,
                   "OpenMP threads, 0 for all cores (default 1; results are the same for any count)");
   dpd->add_flag("--check", args->check, "validate the deck and exit");
@@ -45,7 +45,7 @@ void add_dpd_commands(CLI::App& app) {
       return;
     }
     std::string out = args->out;
-    if (out.empty()) out = "run-" + std::filesystem::path(args->deck).stem().string();
+    if (out.empty()) out = "runs/" + std::filesystem::path(args->deck).stem().string();  // as `run`
     const int threads = args->threads > 0 ? args->threads : static_cast<int>(hardware_threads());
     const auto r = io::run_staged(
         out, [&](const std::string& dir) {
@@ -61,7 +61,7 @@ void add_dpd_commands(CLI::App& app) {
   auto* fit = app.add_subcommand("fit-dpd", "Fit a DPD pair potential to an MD isotherm (D0: MD to DPD)");
   auto fargs = std::make_shared<Args>();
   fit->add_option("deck", fargs->deck, "fit deck (TOML)")->required();
-  fit->add_option("--out", fargs->out, "output directory (default: run-<deck name>)");
+  fit->add_option("--out", fargs->out, "output directory (default runs/<deck name>, as run)");
   fit->add_option("--threads", fargs->threads, "threads over the densities, 0 for all cores (default 1)");
   fit->add_flag("--check", fargs->check, "validate the deck and exit");
   fit->callback([fargs] {
@@ -72,7 +72,7 @@ void add_dpd_commands(CLI::App& app) {
       return;
     }
     std::string out = fargs->out;
-    if (out.empty()) out = "run-" + std::filesystem::path(fargs->deck).stem().string();
+    if (out.empty()) out = "runs/" + std::filesystem::path(fargs->deck).stem().string();  // as `run`
     const int threads = fargs->threads > 0 ? fargs->threads : static_cast<int>(hardware_threads());
     const auto r =
         io::run_staged(out, [&](const std::string& dir) { return dpd::run_fit(config, dir, deck.table(), threads); });

@@ -102,7 +102,7 @@ void add_md_commands(CLI::App& app) {
   md->add_option("deck", args->deck, "MD deck (TOML)")->required();
   md->add_option("--threads", args->threads,
                  "OpenMP threads over the atoms, 0 for all cores (default 1; results are the same for any count)");
-  md->add_option("--out", args->out, "output directory (default: run-<deck name>)");
+  md->add_option("--out", args->out, "output directory (default runs/<deck name>, as run)");
   md->add_flag("--check", args->check,
                "validate the deck, the potential file and the memory and work estimates; write nothing");
   md->add_flag("--quiet", args->quiet, "no progress line");
@@ -143,7 +143,7 @@ void add_md_commands(CLI::App& app) {
       return;
     }
     std::string out = args->out;
-    if (out.empty()) out = "run-" + std::filesystem::path(args->deck).stem().string();
+    if (out.empty()) out = "runs/" + std::filesystem::path(args->deck).stem().string();  // as `run`
     if (std::error_code ec; std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
       throw InputError(fmt::format("--out {}: exists and is not a directory", out));
     if (args->lammps || args->lammps_write_only) {
