@@ -22,14 +22,14 @@ void add_dpd_commands(CLI::App& app) {
   auto* dpd = app.add_subcommand("dpd", "Run a DPD / DPDE mesoparticle deck (Shardlow or velocity Verlet)");
   struct Args {
     std::string deck, out;
-    int threads = 1;
+    int threads = 0;  // all cores, as run and md
     bool check = false, quiet = false, no_plot = false, still = false;
   };
   auto args = std::make_shared<Args>();
   dpd->add_option("deck", args->deck, "DPD deck (TOML)")->required();
   dpd->add_option("--out", args->out, "output directory (default runs/<deck name>, as run)");
   dpd->add_option("--threads", args->threads,
-                  "OpenMP threads, 0 for all cores (default 1; results are the same for any count)");
+                  "OpenMP threads (default: all cores, as run and md; results are the same for any count)");
   dpd->add_flag("--check", args->check, "validate the deck and exit");
   dpd->add_flag("--quiet", args->quiet, "no progress line");
   dpd->add_flag("--no-plot", args->no_plot, "no figures (tools/plot/dpd_study.py) after the run");
@@ -62,7 +62,7 @@ void add_dpd_commands(CLI::App& app) {
   auto fargs = std::make_shared<Args>();
   fit->add_option("deck", fargs->deck, "fit deck (TOML)")->required();
   fit->add_option("--out", fargs->out, "output directory (default runs/<deck name>, as run)");
-  fit->add_option("--threads", fargs->threads, "threads over the densities, 0 for all cores (default 1)");
+  fit->add_option("--threads", fargs->threads, "threads over the densities (default: all cores)");
   fit->add_flag("--check", fargs->check, "validate the deck and exit");
   fit->callback([fargs] {
     auto deck = io::Deck::from_file(fargs->deck);
