@@ -13,6 +13,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/io/vtk.hpp"
 #include "mpmx/reference/jet_history.hpp"
+#include "cli_util.hpp"
 #include "multiscale/ms_test_util.hpp"
 
 namespace fs = std::filesystem;
@@ -52,6 +53,19 @@ TEST(JetHistory, EachPointReadsTheBinThatHoldsIt) {
   EXPECT_FALSE(h.has(0.05));
   EXPECT_FALSE(h.has(0.07));
   EXPECT_TRUE(h.has(0.1 + 1e-12));  // the rounding of the written times
+  {  // A bin with atoms and a nan stress is refused, naming the file and line.
+    const fs::path d = fake_jet_run();
+    std::string csv = test::slurp(d / "bins" / "md_bins_000100.csv");
+    csv.replace(csv.find(",-100,"), 6, ",nan,");
+    std::ofstream(d / "bins" / "md_bins_000100.csv") << csv;
+    try {
+      reference::JetHistory::read(d.string());
+      ADD_FAILURE() << "read a bin of nan stress";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("md_bins_000100.csv:2: bin (0, 0) holds 5 atoms"), std::string::npos)
+          << e.what();
+    }
+  }
   EXPECT_EQ(h.sxx(0.0, 3.0, 1.0), 0.0);       // bin (0, 0), first record
   EXPECT_EQ(h.sxx(0.1, 13.0, 6.0), -111.0);   // bin (1, 1), second record
   EXPECT_EQ(h.sxx(0.09, 25.0, 1.0), -120.0);  // the nearest record

@@ -59,6 +59,12 @@ std::vector<Bin> read_bins(const fs::path& path) {
     }
     if (b.ix < 0 || b.iy < 0 || b.ix > 1'000'000 || b.iy > 1'000'000)
       throw InputError(fmt::format("{}:{}: bin index out of range", path.string(), lineno));
+    // A bin with atoms and no finite stress would drop out of eq. 7.12 and take the
+    // comparison with it (a nan in the pooled sums).
+    if (b.atoms > 0 && !std::isfinite(b.sxx))
+      throw InputError(fmt::format("{}:{}: bin ({}, {}) holds {} atoms and sxx_GPa = {}: not a number the "
+                                   "comparison can use",
+                                   path.string(), lineno, b.ix, b.iy, b.atoms, f[9]));
     bins.push_back(b);
   }
   if (bins.empty()) throw InputError(fmt::format("{}: no bins", path.string()));
