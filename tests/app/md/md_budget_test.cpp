@@ -3,6 +3,8 @@
 // the estimate is close to the measured peak memory.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "mpmx/app/md/budget.hpp"
@@ -66,4 +68,20 @@ TEST(MdBudget, EstimateIsCloseToMeasuredPeakMemory) {
   EXPECT_NEAR(estimate_md(c, 5.50679).bytes / 303e6, 1.0, 0.15);
   c = config_of(lj("44", "20"));
   EXPECT_NEAR(estimate_md(c, 5.50679).bytes / 743e6, 1.0, 0.15);
+}
+
+// Issue 31: a jet's bins beyond its atoms (1e6 bins for 350 atoms wrote 859 MB) are refused,
+// naming jet.bins and what the tables would take; the study's bins pass.
+TEST(MdBudget, JetBinsBeyondTheAtomsAreRefused) {
+  std::ifstream in(std::string(MPMX_SOURCE_DIR) + "/examples/J1_direct_md_s0p1.toml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  const auto good = estimate_md(config_of(text), 5.0);
+  EXPECT_EQ(good.bins, 800);
+  EXPECT_NEAR(good.output_bytes, 230.0 * 800 * 31, 1.0);  // 31 records
+  EXPECT_EQ(budget_error(good, 0, false), "");
+  text.replace(text.find("bins = [40, 20]"), 15, "bins = [100000, 100]");
+  const std::string e = budget_error(estimate_md(config_of(text), 5.0), 0, false);
+  EXPECT_NE(e.find("jet.bins: 1e+07 bins for 2.802e+04 atoms"), std::string::npos) << e;
 }

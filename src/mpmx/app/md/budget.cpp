@@ -39,11 +39,22 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
   const double steps = static_cast<double>(c.relax_steps) + static_cast<double>(c.steps);
   b.atom_steps = b.atoms * (steps + c.scan_points);
   b.work_key = c.relax_steps > 0 ? "thermal.relax_steps + run.steps" : "run.steps";
-  if (c.jet) b.work_key = "jet.duration_ps and jet.scale";
+  if (c.jet) {
+    b.work_key = "jet.duration_ps and jet.scale";
+    b.bins = static_cast<double>(c.jet_bins[0]) * c.jet_bins[1];
+    const double records = c.jet_every > 0 ? static_cast<double>(c.steps / c.jet_every) + 1.0 : 1.0;
+    b.output_bytes = 230.0 * b.bins * records;  // a CSV row (about 150 bytes) and a .vti cell (80)
+  }
   return b;
 }
 
 void check_md_budget(const MdBudget& b, std::uint64_t memory_bytes, bool force) {
+  // More bins than atoms leaves most of them empty and writes a table per record no
+  // reader wants (1e6 bins for 350 atoms: 859 MB).
+  if (b.bins > 0 && b.bins > b.atoms)
+    throw InputError(fmt::format("jet.bins: {:.4g} bins for {:.4g} atoms (about {} of bin tables over the run): "
+                                 "use at most one bin per atom",
+                                 b.bins, b.atoms, format_bytes(b.output_bytes)));
   if (memory_bytes > 0 && b.bytes > static_cast<double>(memory_bytes))
     throw InputError(fmt::format(
         "{}: {:.4g} atoms need about {} of memory ({:.4g} bytes), more than this machine's {}: make the "

@@ -21,6 +21,8 @@ struct MdBudget {
   double bytes = 0;        // estimated peak memory
   double atom_steps = 0;   // atoms x (relax_steps + steps), plus one per atom per scan point
   std::string work_key;    // "run.steps" or "thermal.relax_steps + run.steps"
+  double bins = 0;         // a jet's bins (0: none)
+  double output_bytes = 0; // a jet's bin tables and images over every record (about 230 bytes a bin)
 };
 
 // `cutoff`: the potential's (Potential::cutoff()).

@@ -140,6 +140,9 @@ void add_md_commands(CLI::App& app) {
                  args->deck, budget.atoms, config.steps, format_bytes(budget.bytes), budget.atom_steps,
                  budget.atom_steps / rate / 3600.0, rate,
                  measured ? "a box of its potential timed on this core just now" : "a typical figure");
+      if (budget.bins > 0)
+        fmt::print("  {:.4g} bins: about {} of bin tables and images over the run\n", budget.bins,
+                   format_bytes(budget.output_bytes));
       return;
     }
     std::string out = args->out;
