@@ -57,7 +57,8 @@ void record_subscale(const RunResultOf<Dim>& r, io::RunRecord& rec) {
   if (!sub) return;
   rec.set("md_atom_steps", r.md_atom_steps);
   rec.set("md_atom_steps_per_second", r.wall_seconds > 0 ? r.md_atom_steps / r.wall_seconds : 0.0);
-  for (const auto& [key, value] : sub->figures()) std::visit([&](auto v) { rec.set(key, v); }, value);
+  for (const auto& figure : sub->figures())  // a pair, not a binding: clang 14 cannot capture one
+    std::visit([&](auto v) { rec.set(figure.first, v); }, figure.second);
 }
 
 }  // namespace
