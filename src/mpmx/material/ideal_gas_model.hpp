@@ -15,6 +15,7 @@ struct IdealGasModel final : Model {
   bool solid() const override { return false; }
   double wave_speed(int dim, double density, double pressure) const override;
   double density_at_pressure(double p) const override;
+  std::optional<GasLaw> gas_law() const override { return GasLaw{rho, c, gamma, isothermal}; }
   std::unique_ptr<Material<1>> make1() const override;
   std::unique_ptr<Material<2>> make2() const override;
   std::unique_ptr<Material<3>> make3() const override;

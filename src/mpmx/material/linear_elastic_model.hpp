@@ -23,6 +23,8 @@ struct LinearElasticModel final : Model {
     return dim == 1 ? E : E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
   }
   double wave_speed(int dim, double density, double) const override;
+  std::optional<IsotropicElastic> isotropic_elastic() const override { return IsotropicElastic{E, nu}; }
+  double uniaxial_modulus() const override { return E; }
   std::unique_ptr<Material<1>> make1() const override;
   std::unique_ptr<Material<2>> make2() const override;
   std::unique_ptr<Material<3>> make3() const override;

@@ -6,8 +6,8 @@
 // own file and one line there.
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +47,15 @@ struct PointCost {
   double atom_steps_per_second = 0;
 };
 
+// Constants a reference or the run record reads off a law that has them.
+struct IsotropicElastic {
+  double E = 0, nu = 0;
+};
+struct GasLaw {
+  double rho = 0, c = 0, gamma = 0;  // reference density, isothermal sound speed, adiabatic exponent
+  bool isothermal = true;
+};
+
 // The parameters of one [material] table, read and checked.
 class Model {
  public:
@@ -71,6 +80,11 @@ class Model {
   virtual PointCost point_cost(double /*dt*/) const { return {}; }
   // A line to show before the points are built, when building them takes a while.
   virtual std::string build_note() const { return ""; }
+  // What the law is, for the code that needs its constants: linear isotropic elasticity,
+  // an ideal gas, and the modulus of uniaxial strain a 1-D record names (0: none).
+  virtual std::optional<IsotropicElastic> isotropic_elastic() const { return std::nullopt; }
+  virtual std::optional<GasLaw> gas_law() const { return std::nullopt; }
+  virtual double uniaxial_modulus() const { return 0.0; }
   virtual std::unique_ptr<Material<1>> make1() const = 0;
   virtual std::unique_ptr<Material<2>> make2() const = 0;
   virtual std::unique_ptr<Material<3>> make3() const = 0;

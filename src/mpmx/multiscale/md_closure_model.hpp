@@ -20,6 +20,7 @@ struct MdClosureModel final : material::Model {
   bool density_of_unstrained() const override { return true; }
   double wave_speed(int, double density, double) const override;
   bool per_body() const override { return false; }
+  double uniaxial_modulus() const override { return c11; }
   // A continuum step must be a whole number of MD steps.
   std::string time_step_problem(double dt) const override;
   // The box of a point as it is kept between macro steps (md/budget's compact box), the

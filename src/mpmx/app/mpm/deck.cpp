@@ -284,9 +284,8 @@ void read_materials(Section& root, MpmConfig& c, const std::string& deck_dir) {
     mat.model = mat.spec->name();
     mat.density = mat.spec->density();
     mat.density_unstrained = mat.spec->density_of_unstrained();
-    if (const auto* e = model_as<material::LinearElasticModel>(*mat.spec)) mat.youngs_modulus = e->E;
-    if (const auto* gas = model_as<material::IdealGasModel>(*mat.spec)) mat.sound_speed = gas->c, mat.gamma = gas->gamma;
-    if (const auto* md = model_as<multiscale::MdClosureModel>(*mat.spec)) mat.youngs_modulus = md->c11;
+    if (const double m = mat.spec->uniaxial_modulus(); m > 0) mat.youngs_modulus = m;
+    if (const auto gas = mat.spec->gas_law()) mat.sound_speed = gas->c, mat.gamma = gas->gamma;
   }
 }
 
@@ -299,7 +298,7 @@ void read_initial(Section& in, MpmConfig& c) {
     c.strain = read_profile(in.optional_table("strain"), 0.0, c);
     if (in.has("pressure")) in.check(false, "pressure", "a solid takes [initial.strain], not pressure");
   } else {
-    const auto* gas = mat.spec ? model_as<material::IdealGasModel>(*mat.spec) : nullptr;
+    const auto gas = mat.spec ? mat.spec->gas_law() : std::nullopt;
     const double p_default = gas && gas->isothermal ? gas->c * gas->c * gas->rho : 1.0;
     c.pressure = read_profile(in.optional_table("pressure"), p_default, c);
     if (in.has("strain")) in.check(false, "strain", "a gas takes [initial.pressure], not strain");
@@ -389,7 +388,7 @@ void read_manufactured(Section& root, Section& in, MpmConfig& c) {
              "must lie in (0, 1 / (2 pi)): the stretch 1 + 2 pi A cos(2 pi X) sin(c pi t) stays positive");
     mf.positive("speed", c.manufactured.speed);
     if (dim == 1) mf.error("the manufactured solution drives 2-D and 3-D decks");
-    if (!mat.spec || !model_as<material::LinearElasticModel>(*mat.spec) || !c.bodies.empty())
+    if (!mat.spec || !mat.spec->isotropic_elastic() || !c.bodies.empty())
       mf.error("the manufactured solution is exact for one linear_elastic body filling the grid (no [[body]])");
     if (in.has("velocity")) in.check(false, "velocity", "the manufactured solution sets the initial velocity");
   }

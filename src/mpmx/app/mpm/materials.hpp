@@ -22,13 +22,6 @@ using Materials = Registry<material::LinearElasticEntry,       //
                            material::CubicElasticEntry,        //
                            material::MieGruneisenEntry>;
 
-// The deck's model as the type that entry's reader makes, or nullptr when the deck named
-// another: how a reference reads the law it requires (the registry's one typed access).
-template <class M>
-const M* model_as(const material::Model& m) {
-  return dynamic_cast<const M*>(&m);
-}
-
 // The reader's context for a deck: its dimension, folder and units, and the MD engine's
 // crystals for the laws that take their constants from a potential.
 material::Context material_context(int dim, const std::string& deck_dir, const std::string& units);

@@ -23,7 +23,7 @@ reference::AxisAligned manufactured_solution(const MpmConfig& c, int dim) {
   m.c = c.manufactured.speed;
   m.rho0 = c.material.density;
   m.dim = dim;
-  if (const auto* e = c.material.spec ? model_as<material::LinearElasticModel>(*c.material.spec) : nullptr) {
+  if (const auto e = c.material.spec ? c.material.spec->isotropic_elastic() : std::nullopt) {
     m.mu = e->E / (2.0 * (1.0 + e->nu));
     m.lambda = e->E * e->nu / ((1.0 + e->nu) * (1.0 - 2.0 * e->nu));
   }
