@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 
 #include <fmt/format.h>
@@ -92,5 +93,11 @@ void apply_shared_checks(CLI::App& app) {
   }
   for (CLI::App* sub : app.get_subcommands({})) apply_shared_checks(*sub);
 }
+
+std::string out_dir_of(const std::string& out, const std::string& deck) {
+  return out.empty() ? "runs/" + std::filesystem::path(deck).stem().string() : out;
+}
+
+int threads_of(int requested) { return requested > 0 ? requested : static_cast<int>(hardware_threads()); }
 
 }  // namespace mpmx::app

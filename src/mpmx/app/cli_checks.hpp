@@ -20,6 +20,12 @@ CLI::Validator finite_non_negative();
 // A path that is not empty (`--out ""`).
 CLI::Validator non_empty_path();
 
+// Every command's --out when none is given: runs/<deck name>.
+std::string out_dir_of(const std::string& out, const std::string& deck);
+
+// Every command's --threads: 0 (not given) is every core.
+int threads_of(int requested);
+
 // The shared policy, applied by main() to every command once all are registered: any
 // option named --threads, --checkpoint-minutes, --checkpoint-every or --out gets the
 // check above, ahead of any check the command added itself. A command that declares

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/commands.hpp"
 #include "mpmx/app/dpd/config.hpp"
 #include "mpmx/app/dpd/fit_run.hpp"
@@ -44,9 +45,8 @@ void add_dpd_commands(CLI::App& app) {
       fmt::print("{}: ok\n", args->deck);
       return;
     }
-    std::string out = args->out;
-    if (out.empty()) out = "runs/" + std::filesystem::path(args->deck).stem().string();  // as `run`
-    const int threads = args->threads > 0 ? args->threads : static_cast<int>(hardware_threads());
+    const std::string out = out_dir_of(args->out, args->deck);
+    const int threads = threads_of(args->threads);
     const auto r = io::run_staged(
         out, [&](const std::string& dir) {
           return dpd::run_dpd(config, dir, deck.table(), threads, args->quiet,
@@ -71,9 +71,8 @@ void add_dpd_commands(CLI::App& app) {
       fmt::print("{}: ok\n", fargs->deck);
       return;
     }
-    std::string out = fargs->out;
-    if (out.empty()) out = "runs/" + std::filesystem::path(fargs->deck).stem().string();  // as `run`
-    const int threads = fargs->threads > 0 ? fargs->threads : static_cast<int>(hardware_threads());
+    const std::string out = out_dir_of(fargs->out, fargs->deck);
+    const int threads = threads_of(fargs->threads);
     const auto r =
         io::run_staged(out, [&](const std::string& dir) { return dpd::run_fit(config, dir, deck.table(), threads); });
     fmt::print("morse D0 = {:.6g} eV, alpha = {:.6g} 1/A, r0 = {:.6g} A, rc = {} A; max |P_DPDE - P_MD| = {:.3g} of "

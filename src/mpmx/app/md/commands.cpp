@@ -122,7 +122,7 @@ void add_md_commands(CLI::App& app) {
     md::MdConfig config = md::read_md_config(deck);  // parses the potential file too
     // mpmx md advances one large system: its threaded form (the same bits for any count).
     config.options.threaded = true;
-    config.options.threads = args->threads > 0 ? args->threads : static_cast<int>(hardware_threads());
+    config.options.threads = threads_of(args->threads);
     const md::Potential potential(config.potential);
     const md::MdBudget budget = md::estimate_md(config, potential.cutoff());
     // Memory always; work unless --force, or when only LAMMPS inputs are written.
@@ -145,10 +145,7 @@ void add_md_commands(CLI::App& app) {
                    format_bytes(budget.output_bytes));
       return;
     }
-    std::string out = args->out;
-    if (out.empty()) out = "runs/" + std::filesystem::path(args->deck).stem().string();  // as `run`
-    if (std::error_code ec; std::filesystem::exists(out, ec) && !std::filesystem::is_directory(out, ec))
-      throw InputError(fmt::format("--out {}: exists and is not a directory", out));
+    const std::string out = out_dir_of(args->out, args->deck);
     if (args->lammps || args->lammps_write_only) {
       if (!config.jet && !config.bar)
         throw InputError(

@@ -59,8 +59,7 @@ void add_mpm_commands(CLI::App& app) {
       cfg = read_mpm_deck(args->deck);
       check_mpm_budget(estimate_mpm(cfg, ranks::size()), physical_memory_bytes(), args->force);
     });
-    const std::string out =
-        args->out.empty() ? "runs/" + std::filesystem::path(args->deck).stem().string() : args->out;
+    const std::string out = out_dir_of(args->out, args->deck);
     RunOptions o;
     o.out_dir = out;
     o.quiet = args->quiet;
