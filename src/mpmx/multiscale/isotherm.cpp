@@ -15,7 +15,10 @@ namespace mpmx::multiscale {
 
 namespace {
 
-// Mean and standard error of samples from 10 blocks.
+double mean_pressure(const particles::Mat3& s) { return -(s[0] + s[4] + s[8]) / 3.0; }
+
+}  // namespace
+
 void block_average(const std::vector<double>& s, double& mean, double& error) {
   const int blocks = 10;
   const std::size_t per = std::max<std::size_t>(1, s.size() / blocks);
@@ -28,9 +31,20 @@ void block_average(const std::vector<double>& s, double& mean, double& error) {
   error = b.size() > 1 ? std::sqrt(v / (b.size() - 1) / b.size()) : 0.0;
 }
 
-double mean_pressure(const particles::Mat3& s) { return -(s[0] + s[4] + s[8]) / 3.0; }
-
-}  // namespace
+void rescale_temperature(md::System& s, double temperature) {
+  const double t = s.temperature();
+  if (!(t > 0)) return;
+  particles::Atoms& at = s.edit_atoms();
+  double px = 0, py = 0, pz = 0;
+  for (std::size_t i = 0; i < at.size(); ++i) px += at.vx[i], py += at.vy[i], pz += at.vz[i];
+  const double m = static_cast<double>(at.size());
+  const double f = std::sqrt(temperature / t);
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    at.vx[i] = px / m + f * (at.vx[i] - px / m);
+    at.vy[i] = py / m + f * (at.vy[i] - py / m);
+    at.vz[i] = pz / m + f * (at.vz[i] - pz / m);
+  }
+}
 
 std::vector<IsothermPoint> md_isotherm(const md::Potential& pot, const std::vector<double>& lattice_constants,
                                        const MdIsothermOptions& o) {
@@ -42,20 +56,7 @@ std::vector<IsothermPoint> md_isotherm(const md::Potential& pot, const std::vect
     md::System s(particles::fcc(o.cells, o.cells, o.cells, a), pot);
     s.thermalize(o.temperature, o.seed, static_cast<std::uint64_t>(k));
     // Velocities rescaled to the isotherm's temperature every 50 steps, throughout.
-    auto rescale = [&] {
-      const double t = s.temperature();
-      if (!(t > 0)) return;
-      particles::Atoms& at = s.edit_atoms();
-      double px = 0, py = 0, pz = 0;
-      for (std::size_t i = 0; i < at.size(); ++i) px += at.vx[i], py += at.vy[i], pz += at.vz[i];
-      const double m = static_cast<double>(at.size());
-      const double f = std::sqrt(o.temperature / t);
-      for (std::size_t i = 0; i < at.size(); ++i) {
-        at.vx[i] = px / m + f * (at.vx[i] - px / m);
-        at.vy[i] = py / m + f * (at.vy[i] - py / m);
-        at.vz[i] = pz / m + f * (at.vz[i] - pz / m);
-      }
-    };
+    auto rescale = [&] { rescale_temperature(s, o.temperature); };
     for (int done = 0; done < o.equilibrate_steps; done += 50) {
       s.advance(std::min(50, o.equilibrate_steps - done), o.dt);
       rescale();

@@ -10,6 +10,7 @@
 
 #include "mpmx/dpd/potential/registry.hpp"
 #include "mpmx/md/potential/potential.hpp"
+#include "mpmx/md/system.hpp"
 
 namespace mpmx::multiscale {
 
@@ -29,6 +30,12 @@ struct MdIsothermOptions {
   std::uint64_t seed = 1;
   int threads = 1;
 };
+
+// Mean and standard error of a time series from 10 blocks.
+void block_average(const std::vector<double>& samples, double& mean, double& error);
+
+// Velocities scaled about their mean so that the kinetic temperature is `temperature` (K).
+void rescale_temperature(md::System& s, double temperature);
 
 std::vector<IsothermPoint> md_isotherm(const md::Potential& pot, const std::vector<double>& lattice_constants,
                                        const MdIsothermOptions& o);

@@ -542,7 +542,12 @@ void MdClosure<Dim>::load(std::istream& in) {
   for (auto& s : shape_) in.read(reinterpret_cast<char*>(s.data()), sizeof(double) * 7);
   if (!in) throw InputError("checkpoint: the MD boxes' rotations and stresses are truncated");
   neighbor_builds_ = 0;
-  for (const auto& s : shape_) neighbor_builds_ += static_cast<std::int64_t>(s[6]);
+  for (const auto& s : shape_) {
+    // The build count is a whole number a run wrote; a damaged one must not reach the cast.
+    if (!(s[6] >= 0.0 && s[6] <= 9.0e15) || s[6] != std::floor(s[6]))
+      throw InputError(fmt::format("checkpoint: an MD box's neighbour-build count {} is not a count", s[6]));
+    neighbor_builds_ += static_cast<std::int64_t>(s[6]);
+  }
   group_seconds_.assign(G, 0.0);
   if (const char* v = std::getenv("MPMX_TEST_NAN_POINT")) nan_point_ = std::strtoull(v, nullptr, 10);
 }

@@ -1,6 +1,7 @@
 #include "mpmx/multiscale/md_to_dpd_fit.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -8,6 +9,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/nelder_mead.hpp"
 #include "mpmx/core/units.hpp"
+#include "mpmx/dpd/elastic.hpp"
 
 namespace mpmx::multiscale {
 
@@ -27,6 +29,9 @@ dpd::MorsePotential morse_of(const std::vector<double>& th, const dpd::MorsePote
 
 FitResult fit_morse(const std::vector<IsothermPoint>& md, const FitOptions& o) {
   if (md.size() < 3) throw InputError("fit-dpd: the MD isotherm needs at least 3 densities");
+  if (o.elastic.on && !(o.elastic.c11 > 0 && o.elastic.c12 > 0 && o.elastic.lattice_constant > 0))
+    throw InputError(fmt::format("fit-dpd: elastic targets C11 = {} and C12 = {} GPa at a = {} Angstrom must be positive",
+                                 o.elastic.c11, o.elastic.c12, o.elastic.lattice_constant));
   FitResult r;
   r.md = md;
   const double scale = std::cbrt(o.atoms_per_particle);
@@ -45,6 +50,16 @@ FitResult fit_morse(const std::vector<IsothermPoint>& md, const FitOptions& o) {
     const double a = r.coarse_lattice[k];
     thermal[k] = units::boltzmann_eV_per_K * o.dpd.temperature / (a * a * a / 4.0) * units::eV_per_A3_in_GPa;
   }
+  const ElasticTargets& el = o.elastic;
+  StrainedBoxOptions boxes = el.boxes;
+  boxes.temperature = o.dpd.temperature, boxes.mass = o.dpd.mass, boxes.gamma = o.dpd.gamma;
+  boxes.heat_capacity = o.dpd.heat_capacity, boxes.dt = o.dpd.dt, boxes.berendsen_tau = o.dpd.berendsen_tau;
+  boxes.threads = o.dpd.threads;
+  double thermal11 = 0, thermal12 = 0;  // first guess: the static constants
+  auto born = [&](const dpd::MorsePotential& m) {
+    const dpd::LatticeConstants b = dpd::fcc_born_constants(m, el.lattice_constant);
+    return std::array<double, 2>{b.c11 * units::eV_per_A3_in_GPa, b.c12 * units::eV_per_A3_in_GPa};
+  };
   std::vector<double> th = {std::log(o.start.d0), std::log(o.start.alpha), std::log(o.start.r0)};
   for (int it = 0; it <= o.iterations; ++it) {
     auto objective = [&](const std::vector<double>& x) {
@@ -54,6 +69,11 @@ FitResult fit_morse(const std::vector<IsothermPoint>& md, const FitOptions& o) {
       for (std::size_t k = 0; k < n; ++k) {
         const double d = (static_lattice_pressure(m, r.coarse_lattice[k]) + thermal[k] - md[k].pressure) / range;
         s += d * d;
+      }
+      if (el.on && el.weight > 0) {
+        const auto c = born(m);
+        const double e11 = (c[0] + thermal11 - el.c11) / el.c11, e12 = (c[1] + thermal12 - el.c12) / el.c12;
+        s += el.weight * static_cast<double>(n) * 0.5 * (e11 * e11 + e12 * e12);
       }
       return s;
     };
@@ -70,6 +90,14 @@ FitResult fit_morse(const std::vector<IsothermPoint>& md, const FitOptions& o) {
       r.static_pressure[k] = static_lattice_pressure(r.potential, r.coarse_lattice[k]);
       thermal[k] = r.dpd[k].pressure - r.static_pressure[k];
     }
+    if (el.on) {
+      const auto c = born(r.potential);
+      r.born_c11 = c[0], r.born_c12 = c[1];
+      r.dpd_constants = dpd_strained_constants(r.potential, el.lattice_constant, boxes);
+      thermal11 = r.dpd_constants.c11 - c[0];
+      thermal12 = r.dpd_constants.c12 - c[1];
+    }
+    if (o.on_round) o.on_round(it);
     if (it == o.iterations) break;
   }
   r.thermal = thermal;

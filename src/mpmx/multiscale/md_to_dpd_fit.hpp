@@ -17,17 +17,38 @@
 // parameters); then DPDE runs at the new theta measure c_k = P_DPDE - P_static; repeat.
 // The last DPDE runs are the fitted model's isotherm. Deterministic: same inputs, same
 // parameters (any thread count).
+//
+// Elastic targets (optional, issue "the MD-to-DPD bridge"): the isotherm pins the bulk
+// modulus (C11 + 2 C12)/3, not the shear stiffness C11 - C12 a wave along a rod also
+// needs. With them the objective adds weight n ((C11 - C11*)^2 + (C12 - C12*)^2) / (2 C*^2)
+// (n the isotherm's points, C* the MD crystal's constants at the temperature, from
+// strained boxes at its zero-pressure density); the model's constants are the Born
+// lattice sums at the coarse lattice of that density plus a thermal part measured, like
+// the pressure's, by DPDE strained boxes each round. Without them (the isotherm-only fit,
+// the D0 deck) the objective and every number are as before.
+#include <functional>
 #include <vector>
 
 #include "mpmx/dpd/potential/morse.hpp"
 #include "mpmx/multiscale/isotherm.hpp"
+#include "mpmx/multiscale/strained_box.hpp"
 
 namespace mpmx::multiscale {
 
+struct ElasticTargets {
+  bool on = false;
+  double weight = 1.0;         // 0: measured and reported, not fitted
+  double c11 = 0, c12 = 0;     // GPa, the MD crystal's at the temperature
+  double lattice_constant = 0; // Angstrom, coarse: where the model's constants are taken
+  StrainedBoxOptions boxes;    // the DPDE strained boxes (temperature, mass, gamma, C_v set by the fit)
+};
+
 struct FitOptions {
   double atoms_per_particle = 8;
+  ElasticTargets elastic;
   dpd::MorsePotential start;  // initial parameters and the fixed cutoff / shift
   int iterations = 3;    // thermal-correction rounds (each a set of DPDE runs)
+  std::function<void(int)> on_round;  // called with each finished round (0..iterations), for progress
   DpdIsothermOptions dpd;
 };
 
@@ -38,6 +59,10 @@ struct FitResult {
   std::vector<double> static_pressure, thermal;    // GPa, at the fitted parameters
   double max_deviation_over_range = 0;  // max_k |P_DPDE - P_MD| / (max P_MD - min P_MD)
   int evaluations = 0;                  // of the least-squares objective, all rounds
+  // With elastic targets: the fitted model's constants (GPa) at elastic.lattice_constant,
+  // static (Born) and at the temperature (DPDE strained boxes of the last round).
+  double born_c11 = 0, born_c12 = 0;
+  CubicConstants dpd_constants;
 };
 
 // `md` is the MD isotherm at the atomic lattice constants of its points.

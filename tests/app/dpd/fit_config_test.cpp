@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -88,6 +89,63 @@ TEST(FitConfig, IntegersAreRangeCheckedNotWrapped) {
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(table_key), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find("4294967298"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// [elastic] (issue "the MD-to-DPD bridge"): the example deck reads with the MD boxes'
+// sizes defaulting to [md]'s; the isotherm-only deck has no elastic targets; a weight
+// below 0 or a strain of 20% is refused naming the key.
+TEST(FitConfig, ElasticTargetsAreReadAndChecked) {
+  const std::string src = std::string(MPMX_SOURCE_DIR) + "/examples/";
+  io::Deck plain = io::Deck::from_file(src + "D0_md_to_dpd_fit.toml");
+  EXPECT_FALSE(app::dpd::read_fit_config(plain).fit.elastic.on);
+  io::Deck deck = io::Deck::from_file(src + "D0_md_to_dpd_fit_elastic.toml");
+  const app::dpd::FitConfig c = app::dpd::read_fit_config(deck);
+  EXPECT_TRUE(c.fit.elastic.on);
+  EXPECT_EQ(c.fit.elastic.weight, 1.0);
+  EXPECT_EQ(c.md_elastic.cells, c.md.cells);
+  EXPECT_EQ(c.md_elastic.temperature, 298.0);
+  EXPECT_EQ(c.md_elastic.strain, 0.01);
+  EXPECT_EQ(c.fit.elastic.boxes.cells, c.fit.dpd.cells);
+  EXPECT_EQ(c.potential_file, "cu_sc_298K_morse_elastic.toml");
+  std::ifstream in(src + "D0_md_to_dpd_fit_elastic.toml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  for (const auto& [from, to, key] : std::vector<std::array<std::string, 3>>{
+           {"weight = 1.0 ", "weight = -1.0 ", "elastic.weight"}, {"strain = 0.01 ", "strain = 0.2 ", "elastic.strain"}}) {
+    std::string text = ss.str();
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    auto bad = io::Deck::from_string(text, "D0_elastic.toml");
+    try {
+      app::dpd::read_fit_config(bad);
+      ADD_FAILURE() << to << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+}
+
+// Hostile input (issue 31): a potential file named as one of the fit's own outputs or a
+// folder (".", "..", ".staging") is refused at read, before the 10 minutes of the fit.
+TEST(FitConfig, PotentialFileCannotBeAnOutputOrAFolder) {
+  std::ifstream in(std::string(MPMX_SOURCE_DIR) + "/examples/D0_md_to_dpd_fit.toml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string line = "potential_file = \"cu_sc_298K_morse.toml\"";
+  for (const std::string name : {"run.json", "isotherm.csv", ".", "..", ".staging"}) {
+    std::string text = ss.str();
+    const auto at = text.find(line);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, line.size(), "potential_file = \"" + name + "\"");
+    auto deck = io::Deck::from_string(text, "D0.toml");
+    try {
+      app::dpd::read_fit_config(deck);
+      ADD_FAILURE() << name << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("output.potential_file"), std::string::npos) << e.what();
     }
   }
 }

@@ -79,6 +79,9 @@ void add_dpd_commands(CLI::App& app) {
                "the MD range; zero-pressure rho/rho0 MD {:.5f} DPDE {:.5f}; {:.3g} s -> {}/{}\n",
                r.potential.d0, r.potential.alpha, r.potential.r0, r.potential.rc, r.max_deviation_over_range,
                r.zero_pressure_md, r.zero_pressure_dpd, r.wall_seconds, out, config.potential_file);
+    if (r.elastic)
+      fmt::print("C11 and C12 of the model at {:g} K against the MD crystal's: {:+.2f}%, {:+.2f}% (run.json elastic)\n",
+                 config.md.temperature, 100 * r.c11_residual, 100 * r.c12_residual);
   });
 }
 

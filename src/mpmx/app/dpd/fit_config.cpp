@@ -84,10 +84,37 @@ FitConfig read_fit_config(io::Deck& deck) {
   dp.check(dseed >= 0, "seed", "must be >= 0");
   d.seed = static_cast<std::uint64_t>(dseed);
 
+  // Optional elastic targets: the MD crystal's C11 and C12 at the temperature.
+  auto el = root.optional_table("elastic");
+  f.elastic.on = el.present();
+  if (f.elastic.on) {
+    f.elastic.weight = el.number("weight", 1.0);
+    el.check(f.elastic.weight >= 0 && f.elastic.weight <= 1e6, "weight",
+             "must lie in [0, 1e6] (0: the constants are measured and reported, not fitted)");
+    const double strain = el.number("strain", 0.01);
+    el.check(strain >= 1e-4 && strain <= 0.05, "strain", "must lie in [1e-4, 0.05]: the boxes' +- strain along x");
+    multiscale::StrainedBoxOptions& m = c.md_elastic;
+    m.strain = strain, m.temperature = c.md.temperature, m.dt = c.md.dt, m.seed = c.md.seed + 7;
+    m.cells = el.integer_int("md_cells", c.md.cells, 2, 40);
+    m.equilibrate_steps = el.integer_int("md_equilibrate_steps", c.md.equilibrate_steps, 0, 100000000);
+    m.sample_steps = el.integer_int("md_sample_steps", 5000, 100, 100000000);
+    multiscale::StrainedBoxOptions& b = f.elastic.boxes;
+    b.strain = strain, b.seed = d.seed + 7;
+    b.cells = el.integer_int("dpd_cells", d.cells, 2, 40);
+    b.equilibrate_steps = el.integer_int("dpd_equilibrate_steps", d.equilibrate_steps, 0, 100000000);
+    b.sample_steps = el.integer_int("dpd_sample_steps", 4000, 100, 100000000);
+  }
+
   auto out = root.optional_table("output");
   c.potential_file = out.string("potential_file", "dpd_potential.toml");
   out.check(!c.potential_file.empty() && c.potential_file.find('/') == std::string::npos, "potential_file",
             "must be a plain file name (written into the output folder)");
+  // Not a name the run writes itself, nor a folder name: it would overwrite run.json or
+  // isotherm.csv, or fail only after the whole fit (".staging" would lose the output).
+  out.check(c.potential_file != "run.json" && c.potential_file != "isotherm.csv", "potential_file",
+            "is one of the fit's own outputs (run.json, isotherm.csv): choose another name");
+  out.check(c.potential_file.front() != '.', "potential_file",
+            "must not start with '.' (\".\", \"..\" and the staging folder \".staging\" are folders)");
   deck.finish();
   return c;
 }

@@ -21,6 +21,9 @@ struct FitConfig {
   std::vector<double> density_ratios;   // rho / rho0 of the samples
   multiscale::MdIsothermOptions md;
   multiscale::FitOptions fit;
+  // [elastic]: the MD crystal's strained boxes (their constants become fit.elastic's
+  // targets once measured, at the isotherm's zero-pressure density).
+  multiscale::StrainedBoxOptions md_elastic;
   std::string potential_file;           // written into the output folder
 };
 

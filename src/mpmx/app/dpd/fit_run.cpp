@@ -8,24 +8,62 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/progress.hpp"
 #include "mpmx/io/run_record.hpp"
 
 namespace mpmx::app::dpd {
+
+namespace {
+
+// The <100> bar speed sqrt(E / rho) of a cubic crystal, E = (C11 - C12)(C11 + 2 C12)/(C11 + C12)
+// (GPa, g/cm^3 -> m/s).
+double bar_speed_100(double c11, double c12, double rho) {
+  const double e = (c11 - c12) * (c11 + 2 * c12) / (c11 + c12);
+  return e > 0 ? std::sqrt(e * 1e9 / (rho * 1e3)) : 0.0;
+}
+
+}  // namespace
 
 FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads) {
   namespace fs = std::filesystem;
   fs::create_directories(out_dir);
   const auto t0 = std::chrono::steady_clock::now();
   const md::Potential pot(c.md_potential);
+  // Stages: the MD isotherm, the MD strained boxes ([elastic]), then each fit round.
+  const int stages = 1 + (c.fit.elastic.on ? 1 : 0) + c.fit.iterations + 1;
+  Progress progress("fit-dpd stages", stages);
   std::vector<double> lattice;
   for (double r : c.density_ratios) lattice.push_back(c.lattice_constant / std::cbrt(r));
   multiscale::MdIsothermOptions mo = c.md;
   mo.threads = threads;
   const std::vector<multiscale::IsothermPoint> md = multiscale::md_isotherm(pot, lattice, mo);
+  int done = 1;
+  progress.update(done);
   multiscale::FitOptions fo = c.fit;
   fo.dpd.threads = threads;
   fo.dpd.mass = fo.atoms_per_particle * pot.mass(0);
+  multiscale::CubicConstants md_c;
+  double md_a0 = 0;  // Angstrom: the MD crystal's zero-pressure lattice constant at the temperature
+  if (fo.elastic.on) {
+    std::vector<double> pm;
+    for (const auto& p : md) pm.push_back(p.pressure);
+    const double rho0 = multiscale::zero_pressure_density(c.density_ratios, pm);
+    if (!std::isfinite(rho0))
+      throw InputError(fmt::format("{}: [elastic] needs the MD isotherm to cross zero pressure, and it does not "
+                                   "between rho/rho0 = {} and {} ([densities] from, to)",
+                                   c.deck_file, c.density_ratios.front(), c.density_ratios.back()));
+    md_a0 = c.lattice_constant / std::cbrt(rho0);
+    multiscale::StrainedBoxOptions mo_el = c.md_elastic;
+    mo_el.threads = threads;
+    md_c = multiscale::md_strained_constants(pot, md_a0, mo_el);
+    progress.update(++done);
+    fo.elastic.c11 = md_c.c11, fo.elastic.c12 = md_c.c12;
+    fo.elastic.lattice_constant = std::cbrt(fo.atoms_per_particle) * md_a0;
+  }
+  fo.on_round = [&](int) { progress.update(++done); };
   const multiscale::FitResult fit = multiscale::fit_morse(md, fo);
+  progress.finish();
 
   FitRunSummary s;
   s.potential = fit.potential;
@@ -83,6 +121,37 @@ FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml
                                                   {"relative_difference", rho0_error}}},
       {"targets", toml::table{{"deviation_below_2_percent", s.max_deviation_over_range < 0.02},
                               {"zero_pressure_density_within_half_percent", rho0_error < 0.005}}}};
+  if (fo.elastic.on) {
+    const multiscale::CubicConstants& dc = fit.dpd_constants;
+    const double rho = 4 * pot.mass(0) * 1.66053906660 / (md_a0 * md_a0 * md_a0);  // g/cm^3
+    s.elastic = true;
+    s.c11_residual = (dc.c11 - md_c.c11) / md_c.c11;
+    s.c12_residual = (dc.c12 - md_c.c12) / md_c.c12;
+    toml::table el{
+        {"weight", fo.elastic.weight},
+        {"strain", md_c.strain},
+        {"md", toml::table{{"lattice_constant_A", md_a0},
+                           {"pressure_GPa", md_c.pressure},
+                           {"c11_GPa", md_c.c11},
+                           {"c11_error_GPa", md_c.c11_error},
+                           {"c12_GPa", md_c.c12},
+                           {"c12_error_GPa", md_c.c12_error},
+                           {"bar_speed_100_m_per_s", bar_speed_100(md_c.c11, md_c.c12, rho)}}},
+        {"dpd", toml::table{{"coarse_lattice_constant_A", fo.elastic.lattice_constant},
+                            {"pressure_GPa", dc.pressure},
+                            {"c11_GPa", dc.c11},
+                            {"c11_error_GPa", dc.c11_error},
+                            {"c12_GPa", dc.c12},
+                            {"c12_error_GPa", dc.c12_error},
+                            {"born_c11_GPa", fit.born_c11},
+                            {"born_c12_GPa", fit.born_c12},
+                            {"bar_speed_100_m_per_s", bar_speed_100(dc.c11, dc.c12, rho)}}},
+        {"residual", toml::table{{"c11", s.c11_residual}, {"c12", s.c12_residual}}}};
+    rec.insert("elastic", std::move(el));
+    auto* t = rec["targets"].as_table();
+    t->insert("c11_within_5_percent", std::abs(s.c11_residual) < 0.05);
+    t->insert("c12_within_5_percent", std::abs(s.c12_residual) < 0.05);
+  }
   std::ostringstream os;
   os << toml::json_formatter{rec} << '\n';
   io::write_file_atomic((fs::path(out_dir) / "run.json").string(), os.str());

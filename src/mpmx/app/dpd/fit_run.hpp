@@ -1,7 +1,8 @@
 #pragma once
 // Runs a fit-dpd deck (D0): the MD isotherm, the fit, the fitted DPDE isotherm; writes
 // DIR/isotherm.csv, DIR/<potential file> and DIR/run.json (parameters, the largest
-// deviation over the MD pressure range, zero-pressure densities, D0's targets).
+// deviation over the MD pressure range, zero-pressure densities, D0's targets; with
+// [elastic] the MD crystal's and the model's C11, C12 and <100> bar speeds).
 #include <string>
 
 #include <toml++/toml.h>
@@ -16,6 +17,8 @@ struct FitRunSummary {
   MorsePotential potential;
   double max_deviation_over_range = 0;
   double zero_pressure_md = 0, zero_pressure_dpd = 0;  // rho / rho0
+  bool elastic = false;                                // [elastic]: the constants' residuals
+  double c11_residual = 0, c12_residual = 0;           // (DPDE - MD) / MD at the temperature
   double wall_seconds = 0;
 };
 
