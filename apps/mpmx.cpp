@@ -61,6 +61,21 @@ int finish(int code, const std::string& message) {
   ranks::abort_job(code);
 }
 
+// A command line that fails to parse on this rank need not fail on the others (a deck
+// that exists on one node's disk only, a launch with a command line per rank): the
+// ranks that parsed meet this one in the run's first collective (`ranks::together`
+// around the deck), so the failure is agreed there and every rank stops with the lowest
+// failing rank's message, instead of the others waiting for this one for ever.
+std::string agreed_parse_failure(const std::string& message) {
+  namespace ranks = mpmx::ranks;
+  if (ranks::size() == 1) return message;
+  using F = ranks::Failure;
+  const auto agreed = ranks::first_failure(
+      F{F::input, ranks::root() ? message : fmt::format("[rank {} of {}] {}", ranks::rank(), ranks::size(), message)});
+  ranks::mark_agreed();
+  return agreed->message;
+}
+
 int run(int argc, char** argv) {
   namespace code = mpmx::exit_code;
   CLI::App app{"mpmx " MPMX_VERSION ": material point method + molecular dynamics multiscale solver"};
@@ -112,11 +127,11 @@ int run(int argc, char** argv) {
       return mpmx::ranks::root() ? app.exit(e) : code::done;
     std::string where = "mpmx";
     for (const CLI::App* sub : app.get_subcommands()) where += " " + sub->get_name();
-    mpmx::ranks::mark_agreed();  // the same command line on every rank
-    if (where == "mpmx" && e.get_name() == "RequiredError")
-      return finish(code::bad_input,
-                    fmt::format("mpmx: a command is required: one of {} (mpmx --help)\n", command_names(app)));
-    return finish(code::bad_input, fmt::format("mpmx: {}\n({} --help lists the options)\n", e.what(), where));
+    const std::string message =
+        where == "mpmx" && e.get_name() == "RequiredError"
+            ? fmt::format("mpmx: a command is required: one of {} (mpmx --help)\n", command_names(app))
+            : fmt::format("mpmx: {}\n({} --help lists the options)\n", e.what(), where);
+    return finish(code::bad_input, agreed_parse_failure(message));
   } catch (const mpmx::InputError& e) {
     return finish(code::bad_input, fmt::format("mpmx: input error:\n{}\n", e.what()));
   } catch (const mpmx::RunError& e) {

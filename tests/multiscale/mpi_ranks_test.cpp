@@ -253,3 +253,25 @@ TEST(MpiRanks, SmallestJetGivesTheSameBytes) {
     EXPECT_EQ(physics(single), physics(out)) << out;
   }
 }
+
+// Issue 31: a deck that one rank cannot see (here a launch with a command line per rank;
+// on a cluster, a file on one node's disk only) stops every rank at once with exit 2 and
+// that rank's message, printed once, and leaves no output folder; it used to hang for ever
+// (the rank that failed to parse left, the others waited in the deck's agreement).
+TEST(MpiRanks, DeckOneRankCannotReadStopsEveryRank) {
+  const std::string deck = deck_file("mpi_unreadable", 2);
+  const std::string dir = test::scratch_dir("mpi_unreadable_out");
+  const std::string out = dir + "/out", missing = dir + "/no_such_deck.toml";
+  const std::string cmd = fmt::format(
+      "timeout 120 {} '{}' run '{}' --out '{}' --quiet --no-plot : -np 1 '{}' run '{}' --out '{}' --quiet --no-plot "
+      "> '{}.log' 2>&1",
+      mpirun(1), MPMX_BINARY, deck, out, MPMX_BINARY, missing, out, out);
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  const std::string log = test::read_file(out + ".log");
+  EXPECT_EQ(WEXITSTATUS(status), 2) << log;  // 124: the timeout, the old hang
+  EXPECT_NE(log.find("[rank 1 of 2]"), std::string::npos) << log;
+  EXPECT_NE(log.find("no_such_deck.toml"), std::string::npos) << log;
+  EXPECT_EQ(log.find("[rank 1 of 2]"), log.rfind("[rank 1 of 2]")) << log;  // printed once
+  EXPECT_FALSE(std::filesystem::exists(out));
+}

@@ -45,4 +45,11 @@ std::string format_bytes(double bytes) {
   return u == 0 ? fmt::format("{:.0f} B", bytes) : fmt::format("{:.3g} {}", bytes, units[u]);
 }
 
+std::string format_duration(double s) {
+  if (s < 120) return fmt::format("{:.1f} s", s);
+  if (s < 7200) return fmt::format("{:.1f} min", s / 60);
+  if (s < 172800) return fmt::format("{:.2f} h", s / 3600);
+  return fmt::format("{:.3g} days", s / 86400);
+}
+
 }  // namespace mpmx

@@ -21,5 +21,7 @@ unsigned max_threads();
 
 // "1.5 GiB", "512 MiB", "12 KiB", "100 B": a byte count for messages.
 std::string format_bytes(double bytes);
+// "12.3 s", "4.5 min", "2.50 h", "3.2 days": a duration for messages and progress lines.
+std::string format_duration(double seconds);
 
 }  // namespace mpmx

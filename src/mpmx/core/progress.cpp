@@ -5,15 +5,9 @@
 
 #include <fmt/format.h>
 
-namespace mpmx {
+#include "mpmx/core/machine.hpp"
 
-namespace {
-std::string duration(double s) {
-  if (s < 120) return fmt::format("{:.1f} s", s);
-  if (s < 7200) return fmt::format("{:.1f} min", s / 60);
-  return fmt::format("{:.2f} h", s / 3600);
-}
-}  // namespace
+namespace mpmx {
 
 Progress::Progress(std::string label, std::int64_t total, bool quiet, std::int64_t from)
     : label_(std::move(label)), total_(total), from_(from), active_(!quiet), terminal_(isatty(fileno(stderr))),
@@ -35,7 +29,7 @@ void Progress::update(std::int64_t done) {
   const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
   const std::string shown_rate = unit_.empty() ? "" : fmt::format("  {:.3g} {}/s", items_ * rate, unit_);
   fmt::print(stderr, "{}{}: {:5.1f}%  step {}/{}{}  elapsed {}  ETA {}{}", terminal_ ? "\r" : "", label_,
-             100.0 * frac, done, total_, shown_rate, duration(elapsed), duration(eta), terminal_ ? "   " : "\n");
+             100.0 * frac, done, total_, shown_rate, format_duration(elapsed), format_duration(eta), terminal_ ? "   " : "\n");
   std::fflush(stderr);
 }
 
@@ -45,9 +39,9 @@ void Progress::finish(std::int64_t done) {
   if (!active_) return;
   const double elapsed = std::chrono::duration<double>(clock::now() - start_).count();
   if (terminal_)
-    fmt::print(stderr, "\r{}: done, {} steps in {}{:30}\n", label_, done - from_, duration(elapsed), "");
+    fmt::print(stderr, "\r{}: done, {} steps in {}{:30}\n", label_, done - from_, format_duration(elapsed), "");
   else if (elapsed > 60)
-    fmt::print(stderr, "{}: done, {} steps in {}\n", label_, done - from_, duration(elapsed));
+    fmt::print(stderr, "{}: done, {} steps in {}\n", label_, done - from_, format_duration(elapsed));
 }
 
 }  // namespace mpmx

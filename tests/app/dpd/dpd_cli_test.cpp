@@ -257,3 +257,36 @@ TEST(DpdCli, GridAndAnalysisKeysAreChecked) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 31: run.steps = 2^63 - 1 (or an equilibration as long) ran for ever; the work is
+// estimated and refused beyond about a day, naming the key, by the run and by --check
+// alike; --force takes it, and --check prints the estimate.
+TEST(DpdCli, WorkBeyondADayIsRefusedUnlessForced) {
+  std::string text = kGood;
+  const std::string from = "dt = 0.005";
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos);
+  const auto steps = text.find("steps = ", at);
+  ASSERT_NE(steps, std::string::npos);
+  text.replace(steps, text.find('\n', steps) - steps, "steps = 9223372036854775807");
+  const fs::path d = deck("forever.toml", text);
+  for (const std::string flags : {"", " --check"}) {
+    const fs::path out = dir() / "forever_out";
+    const Result r = run("dpd " + d.string() + flags + " --out " + out.string());
+    EXPECT_EQ(r.status, 2) << flags << "\n" << r.output;
+    EXPECT_NE(r.output.find("run.steps"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("particle-steps"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--force"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+  }
+  const Result forced = run("dpd " + d.string() + " --check --force");
+  EXPECT_EQ(forced.status, 0) << forced.output;
+  EXPECT_NE(forced.output.find("days on one core"), std::string::npos) << forced.output;
+  const Result small = run("dpd " + deck("small.toml", kGood).string() + " --check");
+  EXPECT_EQ(small.status, 0) << small.output;
+  EXPECT_NE(small.output.find("256 particles"), std::string::npos) << small.output;
+}
+
+}  // namespace

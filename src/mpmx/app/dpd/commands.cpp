@@ -8,6 +8,7 @@
 
 #include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/commands.hpp"
+#include "mpmx/app/dpd/budget.hpp"
 #include "mpmx/app/dpd/config.hpp"
 #include "mpmx/app/dpd/fit_run.hpp"
 #include "mpmx/app/dpd/run.hpp"
@@ -24,14 +25,15 @@ void add_dpd_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
     int threads = 0;  // all cores, as run and md
-    bool check = false, quiet = false, no_plot = false, still = false;
+    bool check = false, quiet = false, no_plot = false, still = false, force = false;
   };
   auto args = std::make_shared<Args>();
   dpd->add_option("deck", args->deck, "DPD deck (TOML)")->required();
   dpd->add_option("--out", args->out, "output directory (default runs/<deck name>, as run)");
   dpd->add_option("--threads", args->threads,
                   "OpenMP threads (default: all cores, as run and md; results are the same for any count)");
-  dpd->add_flag("--check", args->check, "validate the deck and exit");
+  dpd->add_flag("--check", args->check, "validate the deck, print its work estimate and exit");
+  dpd->add_flag("--force", args->force, "run even when the work estimate exceeds about a day");
   dpd->add_flag("--quiet", args->quiet, "no progress line");
   dpd->add_flag("--no-plot", args->no_plot, "no figures (tools/plot/dpd_study.py) after the run");
   dpd->add_flag("--still", args->still,
@@ -41,8 +43,13 @@ void add_dpd_commands(CLI::App& app) {
     auto deck = io::Deck::from_file(args->deck);
     dpd::DpdConfig config = dpd::read_dpd_config(deck);
     config.still = args->still;
+    const dpd::DpdBudget budget = dpd::estimate_dpd(config);
+    dpd::check_dpd_work(budget, args->force);  // check refuses what the run would
     if (args->check) {
-      fmt::print("{}: ok\n", args->deck);
+      fmt::print("{}: ok; {:.4g} particles, {:.4g} particle-steps ({}), about {} on one core at {:.2g} "
+                 "particle-steps/s\n",
+                 args->deck, budget.particles, budget.particle_steps, budget.work_key,
+                 format_duration(budget.seconds()), dpd::kDpdParticleStepsPerSecond);
       return;
     }
     const std::string out = out_dir_of(args->out, args->deck);

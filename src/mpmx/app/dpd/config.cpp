@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/app/dpd/budget.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/core/units.hpp"
@@ -101,9 +102,7 @@ void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>&
 // and pair-force buffer (about 1.5 KiB at the seed's 12 Angstrom cutoff and density), and
 // the grid's node fields; refused with the figure when it exceeds the machine's memory.
 void check_memory(io::Section& root, const DpdConfig& c) {
-  double particles = 0;
-  for (const auto& b : c.blocks)
-    particles += b.fcc ? 4.0 * b.cells[0] * b.cells[1] * b.cells[2] : static_cast<double>(b.count);
+  const double particles = block_particles(c);
   double bytes = 1536.0 * particles;
   if (c.grid.cell > 0) {
     double nodes = 1;

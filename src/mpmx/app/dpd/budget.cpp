@@ -1,0 +1,34 @@
+#include "mpmx/app/dpd/budget.hpp"
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+
+namespace mpmx::app::dpd {
+
+double block_particles(const DpdConfig& c) {
+  double particles = 0;
+  for (const auto& b : c.blocks)
+    particles += b.fcc ? 4.0 * b.cells[0] * b.cells[1] * b.cells[2] : static_cast<double>(b.count);
+  return particles;
+}
+
+DpdBudget estimate_dpd(const DpdConfig& c) {
+  DpdBudget b;
+  b.particles = block_particles(c);
+  const double steps = static_cast<double>(c.equilibrate ? c.equilibrate_steps : 0) + static_cast<double>(c.steps);
+  b.particle_steps = b.particles * steps;
+  b.work_key = c.equilibrate && c.equilibrate_steps > 0 ? "equilibrate.steps + run.steps" : "run.steps";
+  return b;
+}
+
+void check_dpd_work(const DpdBudget& b, bool force) {
+  if (force || !(b.particle_steps > kDpdWorkLimit)) return;
+  throw InputError(fmt::format(
+      "{}: {:.4g} particles x {:.4g} steps = {:.4g} particle-steps, about {:.3g} days at {:.2g} particle-steps/s: "
+      "more than the {:.3g} particle-steps (a day) a run takes without --force",
+      b.work_key, b.particles, b.particle_steps / b.particles, b.particle_steps, b.seconds() / 86400.0,
+      kDpdParticleStepsPerSecond, kDpdWorkLimit));
+}
+
+}  // namespace mpmx::app::dpd
