@@ -39,10 +39,7 @@ TEST(MdToDpdFit, ElasticTargetsRecoverAKnownMorseFromItsOwnData) {
   for (auto& p : md) p.lattice_constant /= 2;  // the atoms' lattice (8 per mesoparticle)
   o.elastic.on = true;
   o.elastic.lattice_constant = 7.3;
-  multiscale::StrainedBoxOptions b = o.elastic.boxes;  // as the fit sets its boxes
-  b.temperature = o.dpd.temperature, b.mass = o.dpd.mass, b.gamma = o.dpd.gamma;
-  b.heat_capacity = o.dpd.heat_capacity, b.dt = o.dpd.dt, b.berendsen_tau = o.dpd.berendsen_tau;
-  const multiscale::CubicConstants target = multiscale::dpd_strained_constants(truth, 7.3, b);
+  const multiscale::CubicConstants target = multiscale::dpd_strained_constants(truth, 7.3, multiscale::model_boxes(o));
   o.elastic.c11 = target.c11, o.elastic.c12 = target.c12;
 
   const multiscale::FitResult fit = multiscale::fit_morse(md, o);

@@ -13,11 +13,7 @@
 
 namespace mpmx::multiscale {
 
-namespace {
-
 double mean_pressure(const particles::Mat3& s) { return -(s[0] + s[4] + s[8]) / 3.0; }
-
-}  // namespace
 
 void block_average(const std::vector<double>& s, double& mean, double& error) {
   const int blocks = 10;
@@ -46,6 +42,13 @@ void rescale_temperature(md::System& s, double temperature) {
   }
 }
 
+void advance_at_temperature(md::System& s, int steps, double dt, double temperature) {
+  for (int done = 0; done < steps; done += 50) {
+    s.advance(std::min(50, steps - done), dt);
+    rescale_temperature(s, temperature);
+  }
+}
+
 std::vector<IsothermPoint> md_isotherm(const md::Potential& pot, const std::vector<double>& lattice_constants,
                                        const MdIsothermOptions& o) {
   const int n = static_cast<int>(lattice_constants.size());
@@ -56,17 +59,13 @@ std::vector<IsothermPoint> md_isotherm(const md::Potential& pot, const std::vect
     md::System s(particles::fcc(o.cells, o.cells, o.cells, a), pot);
     s.thermalize(o.temperature, o.seed, static_cast<std::uint64_t>(k));
     // Velocities rescaled to the isotherm's temperature every 50 steps, throughout.
-    auto rescale = [&] { rescale_temperature(s, o.temperature); };
-    for (int done = 0; done < o.equilibrate_steps; done += 50) {
-      s.advance(std::min(50, o.equilibrate_steps - done), o.dt);
-      rescale();
-    }
+    advance_at_temperature(s, o.equilibrate_steps, o.dt, o.temperature);
     std::vector<double> p, t;
     for (int done = 0; done < o.sample_steps; done += 10) {
       s.advance(10, o.dt);
       p.push_back(mean_pressure(s.stress_gpa()));
       t.push_back(s.temperature());
-      if ((done + 10) % 50 == 0) rescale();
+      if ((done + 10) % 50 == 0) rescale_temperature(s, o.temperature);
     }
     IsothermPoint& r = out[k];
     r.lattice_constant = a;

@@ -36,6 +36,10 @@ void block_average(const std::vector<double>& samples, double& mean, double& err
 
 // Velocities scaled about their mean so that the kinetic temperature is `temperature` (K).
 void rescale_temperature(md::System& s, double temperature);
+// `steps` steps of dt (ps), the velocities rescaled to `temperature` after every 50.
+void advance_at_temperature(md::System& s, int steps, double dt, double temperature);
+// -(sigma_xx + sigma_yy + sigma_zz) / 3.
+double mean_pressure(const particles::Mat3& stress);
 
 std::vector<IsothermPoint> md_isotherm(const md::Potential& pot, const std::vector<double>& lattice_constants,
                                        const MdIsothermOptions& o);

@@ -27,6 +27,14 @@ dpd::MorsePotential morse_of(const std::vector<double>& th, const dpd::MorsePote
 
 }  // namespace
 
+StrainedBoxOptions model_boxes(const FitOptions& o) {
+  StrainedBoxOptions b = o.elastic.boxes;
+  b.temperature = o.dpd.temperature, b.mass = o.dpd.mass, b.gamma = o.dpd.gamma;
+  b.heat_capacity = o.dpd.heat_capacity, b.dt = o.dpd.dt, b.berendsen_tau = o.dpd.berendsen_tau;
+  b.threads = o.dpd.threads;
+  return b;
+}
+
 FitResult fit_morse(const std::vector<IsothermPoint>& md, const FitOptions& o) {
   if (md.size() < 3) throw InputError("fit-dpd: the MD isotherm needs at least 3 densities");
   if (o.elastic.on && !(o.elastic.c11 > 0 && o.elastic.c12 > 0 && o.elastic.lattice_constant > 0))
@@ -51,10 +59,7 @@ FitResult fit_morse(const std::vector<IsothermPoint>& md, const FitOptions& o) {
     thermal[k] = units::boltzmann_eV_per_K * o.dpd.temperature / (a * a * a / 4.0) * units::eV_per_A3_in_GPa;
   }
   const ElasticTargets& el = o.elastic;
-  StrainedBoxOptions boxes = el.boxes;
-  boxes.temperature = o.dpd.temperature, boxes.mass = o.dpd.mass, boxes.gamma = o.dpd.gamma;
-  boxes.heat_capacity = o.dpd.heat_capacity, boxes.dt = o.dpd.dt, boxes.berendsen_tau = o.dpd.berendsen_tau;
-  boxes.threads = o.dpd.threads;
+  const StrainedBoxOptions boxes = model_boxes(o);
   double thermal11 = 0, thermal12 = 0;  // first guess: the static constants
   auto born = [&](const dpd::MorsePotential& m) {
     const dpd::LatticeConstants b = dpd::fcc_born_constants(m, el.lattice_constant);

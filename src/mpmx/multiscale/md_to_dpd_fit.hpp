@@ -65,6 +65,10 @@ struct FitResult {
   CubicConstants dpd_constants;
 };
 
+// The DPDE strained boxes the fit measures the model's constants with: elastic.boxes's
+// sizes, steps and seed, at the bath of the DPDE isotherm runs (o.dpd).
+StrainedBoxOptions model_boxes(const FitOptions& o);
+
 // `md` is the MD isotherm at the atomic lattice constants of its points.
 FitResult fit_morse(const std::vector<IsothermPoint>& md, const FitOptions& o);
 

@@ -29,7 +29,7 @@ struct StressSeries {
   void add(const particles::Mat3& s) {
     xx.push_back(s[0]);
     yy.push_back(0.5 * (s[4] + s[8]));
-    p.push_back(-(s[0] + s[4] + s[8]) / 3.0);
+    p.push_back(mean_pressure(s));
   }
   BoxStress mean() const {
     BoxStress b;
@@ -42,9 +42,7 @@ struct StressSeries {
 };
 
 BoxStress static_stress(const particles::Mat3& s) {
-  StressSeries one;
-  one.add(s);
-  return one.mean();
+  return {.xx = s[0], .yy = 0.5 * (s[4] + s[8]), .pressure = mean_pressure(s)};
 }
 
 double strain_of(const StrainedBoxOptions& o) {
@@ -87,10 +85,7 @@ CubicConstants md_strained_constants(const md::Potential& pot, double a, const S
   }
   md::System base(particles::fcc(n, n, n, a), pot);
   base.thermalize(o.temperature, o.seed, 0);
-  for (int done = 0; done < o.equilibrate_steps; done += 50) {
-    base.advance(std::min(50, o.equilibrate_steps - done), o.dt);
-    rescale_temperature(base, o.temperature);
-  }
+  advance_at_temperature(base, o.equilibrate_steps, o.dt, o.temperature);
   Batch(o.threads).for_each(3, [&](std::size_t k) {
     md::System s = base;
     const double f = 1.0 + (static_cast<int>(k) - 1) * e;  // the affine map x -> (1 + e) x keeps every image in step
@@ -99,11 +94,7 @@ CubicConstants md_strained_constants(const md::Potential& pot, double a, const S
     particles::Box box = s.box();
     box.lx *= f;
     s.set_box(box);
-    const int settle = o.equilibrate_steps / 2;
-    for (int done = 0; done < settle; done += 50) {
-      s.advance(std::min(50, settle - done), o.dt);
-      rescale_temperature(s, o.temperature);
-    }
+    advance_at_temperature(s, o.equilibrate_steps / 2, o.dt, o.temperature);
     StressSeries series;
     for (int done = 0; done < o.sample_steps; done += 10) {
       s.advance(10, o.dt);

@@ -23,6 +23,10 @@ double bar_speed_100(double c11, double c12, double rho) {
   return e > 0 ? std::sqrt(e * 1e9 / (rho * 1e3)) : 0.0;
 }
 
+// Mass density (g/cm^3) of an fcc crystal of atoms of `mass` (amu), lattice constant a (A):
+// amu/A^3 x 1.66054.
+double fcc_density(double mass, double a) { return 4 * mass * 1.66053906660 / (a * a * a); }
+
 }  // namespace
 
 FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads) {
@@ -43,12 +47,12 @@ FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml
   multiscale::FitOptions fo = c.fit;
   fo.dpd.threads = threads;
   fo.dpd.mass = fo.atoms_per_particle * pot.mass(0);
+  std::vector<double> pm;
+  for (const auto& p : md) pm.push_back(p.pressure);
+  const double rho0 = multiscale::zero_pressure_density(c.density_ratios, pm);  // MD's, rho / rho0
   multiscale::CubicConstants md_c;
   double md_a0 = 0;  // Angstrom: the MD crystal's zero-pressure lattice constant at the temperature
   if (fo.elastic.on) {
-    std::vector<double> pm;
-    for (const auto& p : md) pm.push_back(p.pressure);
-    const double rho0 = multiscale::zero_pressure_density(c.density_ratios, pm);
     if (!std::isfinite(rho0))
       throw InputError(fmt::format("{}: [elastic] needs the MD isotherm to cross zero pressure, and it does not "
                                    "between rho/rho0 = {} and {} ([densities] from, to)",
@@ -68,9 +72,9 @@ FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml
   FitRunSummary s;
   s.potential = fit.potential;
   s.max_deviation_over_range = fit.max_deviation_over_range;
-  std::vector<double> pm, pd;
-  for (std::size_t k = 0; k < md.size(); ++k) pm.push_back(md[k].pressure), pd.push_back(fit.dpd[k].pressure);
-  s.zero_pressure_md = multiscale::zero_pressure_density(c.density_ratios, pm);
+  std::vector<double> pd;
+  for (const auto& p : fit.dpd) pd.push_back(p.pressure);
+  s.zero_pressure_md = rho0;
   s.zero_pressure_dpd = multiscale::zero_pressure_density(c.density_ratios, pd);
 
   std::ostringstream csv;
@@ -79,7 +83,7 @@ FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml
          "dpd_thermal_pressure_GPa\n";
   for (std::size_t k = 0; k < md.size(); ++k) {
     const double a = lattice[k];
-    const double rho = 4 * pot.mass(0) * 1.66053906660 / (a * a * a);  // g/cm^3 (amu/A^3 x 1.66054)
+    const double rho = fcc_density(pot.mass(0), a);
     csv << fmt::format("{:.6f},{:.6f},{:.8f},{:.8f},{:.6f},{:.6f},{:.3f},{:.6f},{:.6f},{:.3f},{:.6f},{:.6f}\n",
                        c.density_ratios[k], rho, a, fit.coarse_lattice[k], md[k].pressure, md[k].pressure_error,
                        md[k].temperature, fit.dpd[k].pressure, fit.dpd[k].pressure_error, fit.dpd[k].temperature,
@@ -123,7 +127,7 @@ FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml
                               {"zero_pressure_density_within_half_percent", rho0_error < 0.005}}}};
   if (fo.elastic.on) {
     const multiscale::CubicConstants& dc = fit.dpd_constants;
-    const double rho = 4 * pot.mass(0) * 1.66053906660 / (md_a0 * md_a0 * md_a0);  // g/cm^3
+    const double rho = fcc_density(pot.mass(0), md_a0);
     s.elastic = true;
     s.c11_residual = (dc.c11 - md_c.c11) / md_c.c11;
     s.c12_residual = (dc.c12 - md_c.c12) / md_c.c12;
