@@ -29,6 +29,11 @@ class Composite final : public Material<Dim> {
   void update_stress(const Points<Dim>& p, double dt) override;
   double sound_speed(const Points<Dim>& p, std::size_t q) const override;
   double stored_energy(const Points<Dim>& p, std::size_t q) const override;
+  bool keeps_energy_account() const override {
+    for (const auto& part : parts_)
+      if (!part.law->keeps_energy_account()) return false;
+    return true;
+  }
   void add_viscous_heat(const Points<Dim>& p, const std::array<double*, Dim * Dim>& q, double dt) override;
   void set_threads(int threads) override;
   void save(std::ostream& out) const override;

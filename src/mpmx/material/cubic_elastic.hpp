@@ -74,6 +74,7 @@ class CubicElastic final : public Material<Dim> {
   // 0.5 V sigma : eps, the small-strain energy: a hypoelastic law derives from no
   // potential, so this is exact only to first order in the strain (the work V sigma : D
   // dt differs from its change by 0.5 dV sigma : eps each step).
+  bool keeps_energy_account() const override { return true; }
   double stored_energy(const Points<Dim>& p, std::size_t q) const override;
   // The crystal axes of every point (Dim x Dim, row-major), in point order.
   void save(std::ostream& out) const override;

@@ -49,6 +49,7 @@ class IdealGas final : public Material<Dim> {
   }
 
   // Adiabatic: the internal energy p V / (gamma - 1); isothermal: none kept.
+  bool keeps_energy_account() const override { return mode_ == Mode::adiabatic; }
   double stored_energy(const Points<Dim>& p, std::size_t q) const override {
     return mode_ == Mode::adiabatic ? pressure(p, q) * p.volume[q] / (gamma_ - 1.0) : 0.0;
   }

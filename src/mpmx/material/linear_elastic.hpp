@@ -56,6 +56,7 @@ class LinearElastic final : public Material<Dim> {
   }
 
   // 1/2 sigma : eps over the reference volume (ADMPM eq. 8.26 in 1-D).
+  bool keeps_energy_account() const override { return true; }
   double stored_energy(const Points<Dim>& p, std::size_t q) const override {
     double w = 0.0;
     for (int c = 0; c < Dim * Dim; ++c) w += p.stress[c][q] * p.strain[c][q];

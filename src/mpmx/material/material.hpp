@@ -69,6 +69,10 @@ class Material {
   virtual void use_run_threads(int /*requested*/) {}
   // The work a law does inside its points, when it runs a model of its own there.
   virtual const Subscale* subscale() const { return nullptr; }
+  // 2-D and 3-D: whether stored_energy is the law's whole account of the energy it holds
+  // (strain or internal energy), so that kinetic plus stored energy less the boundary's
+  // work is the run's total, which must not grow (the energy-growth check of a run).
+  virtual bool keeps_energy_account() const { return false; }
   // 1-D: whether ADMPM's energy account of the bar (eq. 8.26) covers this law, whose
   // stored_energy is then summed into the run's energy balance (the elastic bar only).
   virtual bool stored_energy_in_1d() const { return false; }

@@ -98,6 +98,7 @@ class MieGruneisen final : public Material<Dim> {
   // sqrt((K + 4 G / 3) / rho) at the point's density and energy (MieGruneisenParams).
   double sound_speed(const Points<Dim>& p, std::size_t q) const override;
   // m e: the internal energy of the point.
+  bool keeps_energy_account() const override { return true; }
   double stored_energy(const Points<Dim>& p, std::size_t q) const override;
   // e, v and the six deviator components of every point, in point order.
   void save(std::ostream& out) const override;

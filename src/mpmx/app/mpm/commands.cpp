@@ -88,6 +88,9 @@ void add_mpm_commands(CLI::App& app) {
                  r.ranks > 1 ? fmt::format(" x {} ranks (imbalance {:.3f})", r.ranks, r.rank_imbalance) : "");
     if (std::isfinite(r.stress_vs_direct_md))
       fmt::print("  stress vs direct MD (eq. 7.12): {:.2f}%\n", 100.0 * r.stress_vs_direct_md);
+     if (std::isfinite(r.energy_growth))
+      fmt::print("  energy: total (kinetic + stored, less the boundary's work) {:+.3f}% of its scale{}\n",
+                 100.0 * r.energy_growth, r.energy_grew ? " (past time.energy_growth: status energy_growth)" : "");
   });
 
   CLI::App* check = app.add_subcommand("check", "validate a continuum deck without running it");

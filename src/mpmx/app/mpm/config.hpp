@@ -100,6 +100,11 @@ struct MpmConfig {
   double dt = 0.0, end = 0.0;
   bool cfl_dt = false;
   double cfl = 0.5;
+  // [time] energy_growth: the growth of the total energy (kinetic + stored, less the
+  // boundary's work) over the initial scale that ends a run with status "energy_growth"
+  // and a warning; energy_growth_stop: the growth that stops it at once (laws that keep
+  // an energy account only).
+  double energy_growth = 0.1, energy_growth_stop = 1.0;
   // [output]
   std::vector<double> output_times;
   std::int64_t output_every = 0;   // 0 = only output_times and the last step

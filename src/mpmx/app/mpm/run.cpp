@@ -204,9 +204,32 @@ class ContinuumRun {
       e.l1 = std::max(e.l1, std::abs(now.kinetic + now.internal - e_ref));
       e.l2 = std::max(e.l2, e_ref);  // running max of the reference, normalised in finish()
     }
+    check_energy_growth(now);
     if (out_)
       out_->energy(s_.step, s_.time, now.kinetic, now.internal, Dim == 1 ? now.momentum[0] : norm(now.momentum),
                    Dim == 1 ? s_.tallies.boundary_impulse[0] : norm(s_.tallies.boundary_impulse), e_ref);
+  }
+
+  // The total energy (kinetic + stored) less the boundary's work, against the initial:
+  // its growth over the larger of the initial total, the total with the boundary's work
+  // and the largest kinetic energy seen. An unstable update (the midpoint form's
+  // determinant > 1, theory.md) or too long a step shows here first; past
+  // time.energy_growth_stop the run stops where it is.
+  void check_energy_growth(const Sums& now) {
+    const bool known = Dim == 1 ? s_.material->stored_energy_in_1d() : s_.material->keeps_energy_account();
+    if (!known) return;
+    const double e0 = carry_.kinetic_initial + carry_.stored_initial, wb = s_.tallies.boundary_work;
+    const double scale = std::max({std::abs(e0), std::abs(e0 + wb), carry_.max_kinetic});
+    if (!(scale > 0.0)) return;
+    r_.energy_growth = (now.kinetic + now.internal - wb - e0) / scale;
+    if (r_.energy_growth > c_.energy_growth_stop) {
+      r_.energy_grew = true;
+      throw RunError(fmt::format(
+          "energy growth at step {} (t = {:.6g}): the total energy (kinetic + stored, less the boundary's work) grew "
+          "by {:.4g} of its scale {:.6g}, past time.energy_growth_stop = {:.4g}; the update is unstable: a smaller "
+          "time.dt, or scheme.update_velocity = \"musl\" (the default) if the deck chose another",
+          s_.step, s_.time, r_.energy_growth, scale, c_.energy_growth_stop));
+    }
   }
 
   // A checkpoint when one is due (every so many steps or minutes, or on Ctrl-C); true
@@ -258,6 +281,13 @@ class ContinuumRun {
     r_.ranks = ranks::size();
     if (book_.eq712.squared_reference > 0) r_.stress_vs_direct_md = book_.eq712.value();
     tally();
+    if (std::isfinite(r_.energy_growth) && r_.energy_growth > c_.energy_growth) r_.energy_grew = true;
+    if (r_.energy_grew && failure_.empty() && !o_.quiet && ranks::root())
+      fmt::print(stderr,
+                 "{}: warning: the total energy grew by {:.3g} of its scale (time.energy_growth = {:.3g}): the "
+                 "update may be unstable (a smaller time.dt, or scheme.update_velocity = \"musl\"); run.json's status "
+                 "is \"energy_growth\"\n",
+                 c_.id, r_.energy_growth, c_.energy_growth);
     if (comparison_) comparison_->finish(book_);
     r_.errors = book_.errors;
     r_.front_speed = book_.front_speed;
@@ -359,6 +389,8 @@ RunSummary run_any(const MpmConfig& c, const RunOptions& o) {
     s.ranks = r.ranks;
     s.rank_imbalance = r.rank_imbalance;
     s.stress_vs_direct_md = r.stress_vs_direct_md;
+    s.energy_growth = r.energy_growth;
+    s.energy_grew = r.energy_grew;
     return s;
   };
   if (c.convergence_levels > 1) {

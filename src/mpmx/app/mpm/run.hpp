@@ -53,6 +53,11 @@ struct RunResultOf {
   double rank_imbalance = 1.0;                // the slowest rank's MD time over the mean
   int rebalances = 0;                         // checkpoints at which boxes moved between ranks
   bool interrupted = false;                   // stopped by Ctrl-C (or stop_after): checkpoint written
+  // The total energy's growth (kinetic + stored less the boundary's work, over the
+  // initial scale) at the end or where the run stopped; NaN where the law keeps no
+  // energy account. Past time.energy_growth the run's status is "energy_growth".
+  double energy_growth = std::nan("");
+  bool energy_grew = false;
   mpm::State<Dim> state;                      // the final state
   double energy_error() const { return std::abs(kinetic_final - kinetic_initial + stress_work - boundary_work); }
   double momentum_error() const {
@@ -83,6 +88,8 @@ struct RunSummary {
   int threads = 1, ranks = 1;
   double rank_imbalance = 1.0;
   double stress_vs_direct_md = std::nan("");
+  double energy_growth = std::nan("");  // as RunResultOf's
+  bool energy_grew = false;
   std::map<std::string, double> convergence_order;  // a convergence study's L2 order by field
 };
 // Runs a deck of any dimension (a convergence study when convergence.levels > 1).

@@ -48,6 +48,7 @@ void record_conservation(const RunResultOf<Dim>& r, io::RunRecord& rec) {
   rec.set("conservation.energy.boundary_work", r.boundary_work);
   rec.set("conservation.energy.error", r.energy_error());
   rec.set("conservation.energy.relative_error", r.max_kinetic > 0 ? r.energy_error() / r.max_kinetic : 0.0);
+  if (std::isfinite(r.energy_growth)) rec.set("conservation.energy.growth", r.energy_growth);
 }
 
 // A law with a model inside every point (md_closure's boxes): their work and figures.
@@ -67,7 +68,10 @@ template <int Dim>
 void record_run(const MpmConfig& c, const RunResultOf<Dim>& r, const std::string& failure,
                 const std::string& checkpoint, io::RunRecord& rec) {
   const auto& s = r.state;
-  rec.set("status", !failure.empty() ? "stopped" : r.interrupted ? "interrupted" : "completed");
+  rec.set("status", r.energy_grew           ? "energy_growth"
+                    : !failure.empty()      ? "stopped"
+                    : r.interrupted         ? "interrupted"
+                                            : "completed");
   if (r.interrupted) rec.set("checkpoint", checkpoint);
   if (std::isfinite(r.stress_vs_direct_md)) rec.set("errors.stress_vs_direct_md", r.stress_vs_direct_md);
   if (const auto u = units::unit_system(c.units)) {  // for readers of the tables (tools/plot)
