@@ -15,6 +15,7 @@ Points<Dim> block(const Points<Dim>& p, std::size_t begin, std::size_t n) {
   for (auto& a : b.length) a += begin;
   for (auto& a : b.viscous)
     if (a) a += begin;
+  if (b.stress_zz) b.stress_zz += begin;
   b.mass += begin;
   b.volume += begin;
   b.volume0 += begin;

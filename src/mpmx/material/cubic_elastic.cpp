@@ -40,6 +40,7 @@ void CubicElastic<Dim>::set_stress(const Points<Dim>& p, std::size_t q) const {
     const Mat eps = jaumann::gather<Dim>(p.strain, q);
     const Mat s = Q * c_.stress<Dim>(Q.transpose() * eps * Q) * Q.transpose();
     jaumann::scatter<Dim>(0.5 * (s + s.transpose()), q, p.stress);
+    if constexpr (Dim == 2) p.set_sigma_zz(q, out_of_plane_stress(p, q));
   }
 }
 

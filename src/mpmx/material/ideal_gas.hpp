@@ -78,6 +78,7 @@ class IdealGas final : public Material<Dim> {
     const double pr = pressure(p, q);
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) p.stress[a * Dim + b][q] = a == b ? -pr : 0.0;
+    p.set_sigma_zz(q, -pr);
   }
 
   Mode mode_;

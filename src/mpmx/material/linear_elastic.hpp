@@ -47,6 +47,7 @@ class LinearElastic final : public Material<Dim> {
         jaumann::scatter<Dim>(sig, q, p.stress);
         for (int a = 0; a < Dim; ++a)
           for (int b = 0; b < Dim; ++b) p.eps(q, a, b) += dt * D(a, b);
+        if constexpr (Dim == 2) p.set_sigma_zz(q, lambda * (p.eps(q, 0, 0) + p.eps(q, 1, 1)));  // eps_zz = 0
       }
     }
   }
@@ -102,6 +103,7 @@ class LinearElastic final : public Material<Dim> {
       for (int a = 0; a < Dim; ++a) tr += p.eps(q, a, a);
       for (int a = 0; a < Dim; ++a)
         for (int b = 0; b < Dim; ++b) p.sigma(q, a, b) = 2.0 * mu * p.eps(q, a, b) + (a == b ? lambda * tr : 0.0);
+      if constexpr (Dim == 2) p.set_sigma_zz(q, lambda * tr);  // plane strain: eps_zz = 0
     }
   }
 

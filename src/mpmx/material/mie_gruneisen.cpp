@@ -48,6 +48,7 @@ void MieGruneisen<Dim>::set_stress(const Points<Dim>& p, std::size_t q) const {
   const double pr = pressure(q);
   for (int a = 0; a < Dim; ++a)
     for (int b = 0; b < Dim; ++b) p.stress[a * Dim + b][q] = s(a, b) - (a == b ? pr : 0.0);
+  p.set_sigma_zz(q, s(2, 2) - pr);  // the deviator is kept whole (3 x 3)
 }
 
 template <int Dim>

@@ -15,6 +15,10 @@ struct Points {
   std::size_t n = 0;
   std::array<const double*, tensor> grad_v{};  // L_ab = dv_a / dx_b at v^{n+1/2} (eq. 4.10)
   std::array<double*, tensor> stress{};        // Cauchy stress, tension positive
+  // 2-D (plane strain, D_zz = 0): the out-of-plane normal stress sigma_zz, which the
+  // in-plane forces do not use but the mean stress, the deviator and the output do;
+  // null in 1-D and 3-D.
+  double* stress_zz = nullptr;
   std::array<double*, tensor> strain{};        // integrated strain (small-strain measure)
   const double* mass = nullptr;
   const double* volume = nullptr;              // current volume (after this step's update)
@@ -29,6 +33,10 @@ struct Points {
   double L(std::size_t q, int a, int b) const { return grad_v[a * Dim + b][q]; }
   double& sigma(std::size_t q, int a, int b) const { return stress[a * Dim + b][q]; }
   double& eps(std::size_t q, int a, int b) const { return strain[a * Dim + b][q]; }
+  // sigma_zz where the view carries it (2-D), for a law to set.
+  void set_sigma_zz(std::size_t q, double value) const {
+    if (stress_zz) stress_zz[q] = value;
+  }
 };
 
 }  // namespace mpmx::material

@@ -26,6 +26,7 @@ struct Particles {
   std::array<std::vector<double>, tensor> length;
   std::array<std::vector<double>, tensor> strain;       // integrated strain
   std::array<std::vector<double>, tensor> stress;       // Cauchy stress (tension positive)
+  std::vector<double> stress_zz;                 // 2-D: plane strain's sigma_zz (empty otherwise)
   std::array<std::vector<double>, tensor> grad_v;       // velocity gradient at v^{n+1/2} (eq. 4.10)
   std::vector<double> viscous_pressure;          // linear artificial viscosity q (>= 0), ch. 6
   // Tensor artificial viscosity (eqs. 7.8-7.10), added to the stress in the force;
@@ -47,6 +48,7 @@ struct Particles {
       length[c].assign(n, 0.0);
     }
     viscous_pressure.assign(n, 0.0);
+    if constexpr (Dim == 2) stress_zz.assign(n, 0.0);
   }
 
   double density(std::size_t p) const { return mass[p] / volume[p]; }

@@ -15,6 +15,7 @@ material::Points<Dim> points(Particles<Dim>& p) {
     v.strain[c] = p.strain[c].data();
     if (!p.viscous[c].empty()) v.viscous[c] = p.viscous[c].data();
   }
+  if (!p.stress_zz.empty()) v.stress_zz = p.stress_zz.data();
   v.mass = p.mass.data();
   v.volume = p.volume.data();
   v.volume0 = p.volume0.data();

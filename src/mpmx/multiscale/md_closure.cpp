@@ -348,6 +348,7 @@ void MdClosure<Dim>::set_point_stress(const Points<Dim>& p, std::size_t q) const
     const Mat3d s = R * as_matrix(box) * R.transpose();
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) p.sigma(q, a, b) = s(a, b) / cfg_.units.stress_GPa;
+    p.set_sigma_zz(q, s(2, 2) / cfg_.units.stress_GPa);  // 2-D: the box's own, R turns in-plane only
   }
 }
 

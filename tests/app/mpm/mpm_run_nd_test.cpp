@@ -78,7 +78,8 @@ TEST(NdOutput, VtkFilesReadBackWithVtkAndRunJsonHasTheKeys) {
       "g = vtk.vtkXMLImageDataReader(); g.SetFileName(sys.argv[2]); g.Update(); i = g.GetOutput()\n"
       "print(o.GetNumberOfPoints(), s.GetNumberOfComponents(), v.GetNumberOfComponents(), "
       "repr(s.GetComponent(7, 0)), repr(v.GetComponent(7, 1)), repr(o.GetPoint(7)[0]), i.GetDimensions()[0], "
-      "i.GetDimensions()[1], i.GetPointData().GetArray('mass').GetNumberOfTuples())\n";
+      "i.GetDimensions()[1], i.GetPointData().GetArray('mass').GetNumberOfTuples(), repr(s.GetComponent(7, 8)), "
+      "repr(o.GetPointData().GetArray('pressure').GetComponent(7, 0)))\n";
   const fs::path py = dir / "read.py";
   std::ofstream(py) << script;
   const std::string out = capture("/usr/bin/python3 " + py.string() + " " + (dir / "vtk/particles_000050.vtu").string() +
@@ -86,9 +87,9 @@ TEST(NdOutput, VtkFilesReadBackWithVtkAndRunJsonHasTheKeys) {
   std::istringstream in(out);
   std::size_t n = 0;
   int sc = 0, vc = 0, nx = 0, ny = 0;
-  double s7 = 0, v7 = 0, x7 = 0;
+  double s7 = 0, v7 = 0, x7 = 0, zz7 = 0, p7 = 0;
   std::size_t nodes = 0;
-  in >> n >> sc >> vc >> s7 >> v7 >> x7 >> nx >> ny >> nodes;
+  in >> n >> sc >> vc >> s7 >> v7 >> x7 >> nx >> ny >> nodes >> zz7 >> p7;
   ASSERT_TRUE(in) << out;
   const auto& p = r.state.particles;
   EXPECT_EQ(n, p.size());
@@ -97,6 +98,10 @@ TEST(NdOutput, VtkFilesReadBackWithVtkAndRunJsonHasTheKeys) {
   EXPECT_EQ(s7, p.stress[0][7]);  // bit for bit
   EXPECT_EQ(v7, p.v[1][7]);
   EXPECT_EQ(x7, p.x[0][7]);
+  // Plane strain: sigma_zz in the tensor's zz slot, pressure -tr(sigma)/3 with it.
+  EXPECT_EQ(zz7, p.stress_zz[7]);
+  EXPECT_NE(zz7, 0.0);
+  EXPECT_DOUBLE_EQ(p7, -(p.stress[0][7] + p.stress[3][7] + p.stress_zz[7]) / 3.0);
   EXPECT_EQ(nx, 21);
   EXPECT_EQ(ny, 21);
   EXPECT_EQ(nodes, 21u * 21u);

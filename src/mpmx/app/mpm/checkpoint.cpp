@@ -20,6 +20,7 @@ void each_array(Particles<Dim>& p, F&& f) {
   for (int a = 0; a < Dim; ++a) f(p.x[a]), f(p.v[a]);
   for (auto* v : {&p.mass, &p.volume, &p.volume0, &p.viscous_pressure}) f(*v);
   for (int c = 0; c < Dim * Dim; ++c) f(p.length[c]), f(p.strain[c]), f(p.stress[c]), f(p.grad_v[c]);
+  if constexpr (Dim == 2) f(p.stress_zz);
   if (!p.viscous[0].empty())
     for (int c = 0; c < Dim * Dim; ++c) f(p.viscous[c]);
 }
@@ -37,7 +38,7 @@ void CheckpointOut::numbers(const std::vector<double>& v) {
 }
 
 io::CheckedKind run_checkpoint_kind(const std::string& deck_text, std::size_t points) {
-  return {"mpm_run", 1, io::text_hash(deck_text), points};
+  return {"mpm_run", 2, io::text_hash(deck_text), points};  // 2: a 2-D run keeps sigma_zz
 }
 
 long long CheckpointIn::offset() const {

@@ -186,6 +186,7 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
       const double pr = c.pressure(c.pressure.along(at[q], Dim), c.lower, L, dx);
       if (std::isfinite(m.density_at_pressure(1.0))) rho = m.density_at_pressure(pr);  // isothermal gas: p sets rho
       for (int d = 0; d < Dim; ++d) p.stress[d * Dim + d][q] = -pr;  // read by the adiabatic gas
+      if constexpr (Dim == 2) p.stress_zz[q] = -pr;
     }
     p.mass[q] = rho * V;
   }

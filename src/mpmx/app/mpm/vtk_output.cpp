@@ -10,13 +10,17 @@ using namespace mpm;
 
 namespace {
 
-// A Dim x Dim tensor field as VTK's 3 x 3 (zeros outside the run's dimensions).
+// A Dim x Dim tensor field as VTK's 3 x 3 (zeros outside the run's dimensions, but for
+// `zz` where given: plane strain's sigma_zz).
 template <int Dim>
-io::vtk::Field tensor(const std::string& name, const std::array<std::vector<double>, Dim * Dim>& t, std::size_t n) {
+io::vtk::Field tensor(const std::string& name, const std::array<std::vector<double>, Dim * Dim>& t, std::size_t n,
+                      const std::vector<double>* zz = nullptr) {
   io::vtk::Field f{name, 9, std::vector<double>(9 * n, 0.0)};
-  for (std::size_t q = 0; q < n; ++q)
+  for (std::size_t q = 0; q < n; ++q) {
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) f.values[9 * q + 3 * a + b] = t[a * Dim + b][q];
+    if (zz && !zz->empty()) f.values[9 * q + 8] = (*zz)[q];
+  }
   return f;
 }
 
@@ -49,16 +53,17 @@ void VtkOutput<Dim>::record(const State<Dim>& s) {
     for (int a = 0; a < Dim; ++a) xyz[3 * q + a] = p.x[a][q];
   std::vector<io::vtk::Field> f;
   f.push_back(vector<Dim>("velocity", p.v, n));
-  f.push_back(tensor<Dim>("stress", p.stress, n));
+  f.push_back(tensor<Dim>("stress", p.stress, n, &p.stress_zz));
   f.push_back(tensor<Dim>("strain", p.strain, n));
   f.push_back(tensor<Dim>("velocity_gradient", p.grad_v, n));
   io::vtk::Field mass{"mass", 1, p.mass}, volume{"volume", 1, p.volume}, density{"density", 1, {}},
       pressure{"pressure", 1, {}};
   for (std::size_t q = 0; q < n; ++q) {
     density.values.push_back(p.mass[q] / p.volume[q]);
-    double tr = 0.0;
+    // -tr(sigma)/3 with plane strain's sigma_zz in 2-D.
+    double tr = Dim == 2 ? p.stress_zz[q] : 0.0;
     for (int a = 0; a < Dim; ++a) tr += p.stress[a * Dim + a][q];
-    pressure.values.push_back(-tr / Dim);
+    pressure.values.push_back(-tr / (Dim == 2 ? 3 : Dim));
   }
   for (auto* x : {&mass, &volume, &density, &pressure}) f.push_back(std::move(*x));
   const std::string pname = fmt::format("vtk/particles_{:06d}.vtu", s.step);
