@@ -74,7 +74,7 @@ def row_figures(study, name, t20, partial=False):
         fail(f"no {path}: run scripts/jet-study first")
     with open(path) as f:
         run = json.load(f)
-    if partial and run.get("status") != "completed":
+    if partial and run.get("status") not in ("completed", "energy_growth"):
         return not_run(name)
     deck = run["deck"]
     cells = deck["grid"]["cells"]
