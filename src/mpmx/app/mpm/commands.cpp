@@ -36,7 +36,10 @@ void add_mpm_commands(CLI::App& app) {
   run->add_option("--out,-o", args->out, "output directory (default runs/<deck name>)");
   run->add_flag("--quiet,-q", args->quiet, "no progress line");
   run->add_flag("--no-plot", args->no_plot, "do not draw figures");
-  run->add_option("--threads,-j", args->threads, "threads for the MD boxes of md_closure (default: all cores)")
+  run->add_option("--threads,-j", args->threads,
+                  "threads for the whole step: md_closure's MD boxes and, in runs of 8192 points or more, every "
+                  "material law, the grid and the points; the same results for any N (default 0: the MD boxes "
+                  "on all cores, the rest on one)")
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   run->add_flag("--resume", args->resume, "continue from OUT/checkpoint.bin (bit-for-bit)");

@@ -18,7 +18,7 @@ struct RunOptions {
   std::string out_dir;   // "" = write nothing (tests)
   bool quiet = false;    // no progress line
   bool plot = true;      // call tools/plot when the deck allows and matplotlib is present
-  int threads = 0;       // MD boxes of md_closure in parallel (0: OpenMP default)
+  int threads = 0;       // the whole step (0: the MD boxes on all cores, the rest on one)
   // Checkpoints (need out_dir): OUT/checkpoint.bin every `checkpoint_every` steps, or
   // when `checkpoint_seconds` of wall time passed since the last one (0: never), and
   // on Ctrl-C. `resume` continues from OUT/checkpoint.bin bit-for-bit.

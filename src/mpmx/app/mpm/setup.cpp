@@ -209,8 +209,8 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
   // Threads over particles pay only on large batches (a parallel region costs microseconds,
   // much more on a busy machine); results are the same either way.
   constexpr std::size_t kParallelFrom = 8192;
-  // Without --threads the continuum stays on one (two threads have not yet been timed
-  // faster on a shared two-core machine: docs/performance.md).
+  // Without --threads the continuum stays on one: on a shared machine a second thread
+  // waits for a busy core (two free cores give 1.8-2x, docs/performance.md).
   s.threads = p.size() < kParallelFrom || threads <= 0 ? 1 : threads;
   s.shape->set_threads(s.threads);
   if constexpr (Dim > 1) s.material->set_threads(s.threads);
