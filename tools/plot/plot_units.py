@@ -46,16 +46,19 @@ def find_run_json(source):
 class Units:
     """The units of one run: unit(quantity) gives "nm", "GPa", ... or "" when unknown."""
 
-    def __init__(self, name=None, text=""):
+    def __init__(self, name=None, text="", length=""):
         self.name = name if name in SYSTEMS else None
         self.text = text
+        self.length = length  # a run in no named system that states its images' length unit
 
     @classmethod
     def of_record(cls, record):
         name = (record.get("units") or {}).get("name") if isinstance(record, dict) else None
         case = ((record.get("deck") or {}).get("case") or {}) if isinstance(record, dict) else {}
         text = str(case.get("units", "") or "")
-        return cls(name or (text if text in SYSTEMS else None), text)
+        # A direct-MD jet run (metal units inside) writes its ParaView bins in nm.
+        length = str(((record.get("jet") or {}) if isinstance(record, dict) else {}).get("bins_series_length_unit", ""))
+        return cls(name or (text if text in SYSTEMS else None), text, length)
 
     @classmethod
     def of_source(cls, source):
@@ -69,7 +72,9 @@ class Units:
             return cls()
 
     def unit(self, quantity):
-        return SYSTEMS[self.name].get(quantity, "") if self.name and quantity else ""
+        if not self.name:
+            return self.length if quantity == "length" else ""
+        return SYSTEMS[self.name].get(quantity, "") if quantity else ""
 
     def of_field(self, field):
         return self.unit(QUANTITY.get(field))

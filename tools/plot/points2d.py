@@ -228,7 +228,7 @@ def layout(width, height, panels):
     stretch = float(np.ceil(MIN_ASPECT / aspect)) if aspect < MIN_ASPECT else 1.0
     shown = aspect * stretch
     if shown < STACK_ASPECT:
-        w = 9.0
+        w = min(9.0, max(6.0, 3.0 / shown))  # a stacked panel about 1-3 inches high
         return panels, 1, w, max(w * shown, 0.9), stretch, "horizontal"
     cols = min(panels, 4)
     rows = -(-panels // cols)
@@ -313,8 +313,8 @@ def main(argv=None):
     # Each frame its own pitch: the first is the regular lattice, later ones are deformed.
     pitch = [np.array([args.marker_size] * 2 if args.marker_size else point_spacing(xy)) for _, _, xy, _ in frames]
     h = np.max(pitch, axis=0)
-    lo = np.min([xy.min(axis=0) for _, _, xy, _ in frames], axis=0) - h
-    hi = np.max([xy.max(axis=0) for _, _, xy, _ in frames], axis=0) + h
+    lo = np.min([xy.min(axis=0) for _, _, xy, _ in frames], axis=0) - 0.6 * h  # half a square and a little
+    hi = np.max([xy.max(axis=0) for _, _, xy, _ in frames], axis=0) + 0.6 * h
     rows, cols, pw, ph, stretch, orient = layout(hi[0] - lo[0], hi[1] - lo[1], len(frames))
 
     bar_in = 0.9 if orient == "horizontal" else 0.0
