@@ -64,6 +64,16 @@ TEST(J1Tiny, ShockSpeedWithinTenPercentOfHugoniot) {
   EXPECT_TRUE(fs::exists(out / "vtk" / "md_bins_001500.vti"));
   EXPECT_TRUE(fs::exists(out / "bins" / "md_bins_001500.csv"));
   EXPECT_TRUE(fs::exists(out / "jet_profile.csv"));
+  // The images are in nm, as the jet's continuum (nm_ps_GPa) beside them in ParaView:
+  // 20 x 5 bins over the sample's length and period, given in Angstrom in run.json.
+  const std::string vti = slurp(out / "vtk" / "md_bins_001500.vti");
+  const auto at = vti.find("Spacing=\"");
+  ASSERT_NE(at, std::string::npos);
+  double dx = 0, dy = 0;
+  ASSERT_EQ(std::sscanf(vti.c_str() + at, "Spacing=\"%lf %lf", &dx, &dy), 2);
+  EXPECT_NEAR(dx, 0.1 * json_number(json, "length_A") / 20, 1e-9);
+  EXPECT_NEAR(dy, 0.1 * json_number(json, "ly_A") / 5, 1e-9);
+  EXPECT_NE(json.find("\"bins_series_length_unit\" : \"nm\""), std::string::npos);
 }
 
 TEST(J1Tiny, SameOutputsWhateverTheThreadCount) {

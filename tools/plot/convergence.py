@@ -6,12 +6,17 @@ Usage: convergence.py RUN_DIR   (writes RUN_DIR/convergence.png)
 """
 import json
 import math
+import os
 import sys
+import textwrap
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_units  # noqa: E402
 
 
 def main(run_dir):
@@ -20,7 +25,7 @@ def main(run_dir):
     levels = run["convergence"]["levels"]
     orders = run["convergence"].get("order", {})
     dx = [lv["dx"] for lv in levels]
-    fig, ax = plt.subplots(figsize=(5.5, 4.2))
+    fig, ax = plt.subplots(figsize=(6.0, 4.6))
     anchor = None
     for field in levels[-1]["errors"]:
         e = [lv["errors"].get(field, {}).get("l2") for lv in levels]
@@ -35,12 +40,18 @@ def main(run_dir):
     if anchor:  # slope 2 through the finest point, for the eye
         h0, e0 = anchor
         ax.loglog([h0, dx[0]], [e0, e0 * (dx[0] / h0) ** 2], ":", color="gray", label="slope 2")
-    ax.set_xlabel("cell size dx")
+    units = plot_units.Units.of_record(run)
+    ax.set_xlabel(units.label("cell size dx", "length"))
     ax.set_ylabel("L2 error (relative)")
-    ax.set_title(run.get("deck", {}).get("case", {}).get("title", "convergence"))
+    case = run.get("deck", {}).get("case", {})
+    head = f"{case.get('id', '')}: {case.get('title', 'convergence')}".strip(": ")
+    # Wrapped to the axes' width: a long case title is otherwise cut at the figure's edge.
+    ax.set_title("\n".join(textwrap.wrap(f"{head}, grid convergence", 60)), fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
+    ax.legend(fontsize=9)
+    if units.note():
+        fig.text(0.01, 0.005, units.note(), ha="left", va="bottom", fontsize=7, color="0.5")
+    fig.tight_layout(rect=(0, 0.02, 1, 1))
     fig.savefig(f"{run_dir}/convergence.png", dpi=120)
 
 

@@ -66,8 +66,25 @@ def grid(run_dir, step, field):
     return values, extent
 
 
+def map_figure(extent):
+    """A figure sized to the map's aspect (the sample is about twice as long as high, its
+    jet longer still), and where its colour bar goes: beneath a wide map, beside a tall one."""
+    aspect = (extent[3] - extent[2]) / max(extent[1] - extent[0], 1e-300)
+    width = 7.5
+    wide = aspect < 0.6
+    height = width * aspect + (1.6 if wide else 1.2)
+    fig, ax = plt.subplots(figsize=(width + (0 if wide else 1.2), height), layout="constrained")
+    return fig, ax, "horizontal" if wide else "vertical"
+
+
+def colour_bar(fig, mappable, ax, orientation, label):
+    bar = fig.colorbar(mappable, ax=ax, orientation=orientation, label=label,
+                       shrink=0.6 if orientation == "horizontal" else 0.9, aspect=30)
+    bar.ax.tick_params(labelsize=9)
+
+
 def save(fig, path, quiet):
-    fig.savefig(path, dpi=150, bbox_inches="tight")
+    fig.savefig(path, dpi=150)
     plt.close(fig)
     if not quiet:
         print(path)
@@ -76,12 +93,13 @@ def save(fig, path, quiet):
 def stress_map(run_dir, out, steps, dt, t, scale, quiet):
     step = nearest_step(steps, dt, t * scale)
     values, extent = grid(run_dir, step, "sxx_GPa")
-    fig, ax = plt.subplots(figsize=(7, 3.8))
+    fig, ax, orientation = map_figure(extent)
     im = ax.imshow(values, origin="lower", extent=extent, cmap="jet", aspect="equal")
-    fig.colorbar(im, ax=ax, label="$\\sigma_{xx}$ (GPa)", shrink=0.8)
+    colour_bar(fig, im, ax, orientation, "$\\sigma_{xx}$ (GPa)")
     ax.set_xlabel("x (nm)")
     ax.set_ylabel("y (nm)")
-    ax.set_title(f"direct MD, $\\sigma_{{xx}}$ at t = {step * dt:.3g} ps (full-size {t:g} ps, s = {scale:g})")
+    ax.set_title(f"direct MD, $\\sigma_{{xx}}$ at t = {step * dt:.3g} ps\n(full-size {t:g} ps, s = {scale:g})",
+                 fontsize=11)
     save(fig, os.path.join(out, f"sxx_map_t{t:g}.png"), quiet)
 
 
@@ -112,22 +130,23 @@ def last_dump_frame_near(path, step_wanted):
 
 def jet_figure(run_dir, out, steps, dt, t, scale, quiet):
     dump = os.path.join(run_dir, "dump.lammpstrj")
-    fig, ax = plt.subplots(figsize=(7, 3.8))
     if os.path.exists(dump):
         step, a = last_dump_frame_near(dump, round(t * scale / dt))
+        x, y = 0.1 * a["x"], 0.1 * a["y"]
+        fig, ax, orientation = map_figure([x.min(), x.max(), y.min(), y.max()])
         size = min(4.0, max(0.2, 3e4 / len(a["x"])))  # dots that neither vanish nor merge
-        im = ax.scatter(0.1 * a["x"], 0.1 * a["y"], c=0.1 * a["vx"], s=size, cmap="coolwarm", vmin=-3, vmax=3,
-                        linewidths=0)
+        im = ax.scatter(x, y, c=0.1 * a["vx"], s=size, cmap="coolwarm", vmin=-3, vmax=3, linewidths=0)
         ax.set_aspect("equal")
-        fig.colorbar(im, ax=ax, label="$v_x$ (km/s)", shrink=0.8)
+        colour_bar(fig, im, ax, orientation, "$v_x$ (km/s)")
     else:
         step = nearest_step(steps, dt, t * scale)
         values, extent = grid(run_dir, step, "density_g_cm3")
+        fig, ax, orientation = map_figure(extent)
         im = ax.imshow(values, origin="lower", extent=extent, cmap="viridis", aspect="equal")
-        fig.colorbar(im, ax=ax, label="density (g/cm$^3$)", shrink=0.8)
+        colour_bar(fig, im, ax, orientation, "density (g/cm$^3$)")
     ax.set_xlabel("x (nm)")
     ax.set_ylabel("y (nm)")
-    ax.set_title(f"direct MD, the jet at t = {step * dt:.3g} ps (full-size {t:g} ps, s = {scale:g})")
+    ax.set_title(f"direct MD, the jet at t = {step * dt:.3g} ps\n(full-size {t:g} ps, s = {scale:g})", fontsize=11)
     save(fig, os.path.join(out, f"jet_t{t:g}.png"), quiet)
 
 
@@ -135,7 +154,7 @@ def front_figure(run_dir, out, record, quiet):
     c = read_columns(os.path.join(run_dir, "jet_front.csv"))
     up = record["jet"]["velocity_km_s"]
     us = record.get("shock_speed_km_s")
-    fig, ax = plt.subplots(figsize=(5, 3.5))
+    fig, ax = plt.subplots(figsize=(5.5, 3.8), layout="constrained")
     ok = np.isfinite(c["front_x_A"])
     ax.plot(c["time_ps"][ok], 0.1 * c["front_x_A"][ok], "o", color="C3", markersize=3, label="shock front (MD)")
     ax.plot(c["time_ps"], 0.1 * c["notch_tip_x_A"], "--", color="0.5", label="notch tip (unshocked block)")

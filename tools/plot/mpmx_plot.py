@@ -34,6 +34,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_units  # noqa: E402
+
 FIELDS = ("velocity", "strain", "stress", "pressure", "density")
 LABELS = {
     "velocity": "velocity $v$",
@@ -128,6 +131,16 @@ class Run:
         if self.at_nodes:
             self.particles = read_csv(nodes)
             require_columns(self.particles, ("time", "x"), nodes)
+        self.units = plot_units.Units.of_record(self.record)
+
+    def label(self, text, field):
+        """An axis label with the run's unit of the field: 'stress $\\sigma$ (GPa)'."""
+        return self.units.label(text, plot_units.QUANTITY.get(field))
+
+    def energy_label(self, text):
+        # A 1-D energy is per unit cross-section: stress x length (GPa nm = J/m^2).
+        s, l = self.units.unit("stress"), self.units.unit("length")
+        return f"{text} ({s} {l})" if s and l else text
 
     # deck values, with fallbacks so that a sparse run.json still plots
     @property
@@ -217,17 +230,27 @@ def plot_field(ax, run, snap, field, time, with_legend=True):
     if ref is not None and np.isfinite(ref).any():
         ax.plot(x, ref, label=run.reference_label, zorder=3, **REFERENCE_STYLE)
     ax.plot(x, snap[field], label=scheme_label(run), zorder=2, markevery=every, **NUMERIC_STYLE)
-    ax.set_xlabel("position $x$")
-    ax.set_ylabel(LABELS.get(field, field))
+    ax.set_xlabel(run.label("position $x$", "x"))
+    ax.set_ylabel(run.label(LABELS.get(field, field), field))
     ax.grid(True, linewidth=0.3, alpha=0.5)
     ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 4), useOffset=False)
     if with_legend:
         ax.legend(loc="best", fontsize=8, **LEGEND_STYLE)
 
 
-def title_lines(run, extra):
+def title_lines(run, extra, width=70):
+    """Case and detail, each wrapped to the figure's width so that no title is cut."""
+    import textwrap
     head = f"{run.case_id}: {run.case_title}" if run.case_title else run.case_id
-    return f"{head}\n{extra}"
+    return "\n".join(textwrap.wrap(head, width) + textwrap.wrap(extra, width))
+
+
+def footnotes(fig, run):
+    """The seed on the right; free-text units (no named system) on the left."""
+    if run.seed:
+        fig.text(0.99, 0.005, run.seed, ha="right", va="bottom", fontsize=7, color="0.5")
+    if run.units.note():
+        fig.text(0.01, 0.005, run.units.note(), ha="left", va="bottom", fontsize=7, color="0.5")
 
 
 def save(fig, path, quiet):
@@ -259,9 +282,8 @@ def single_run(directory, quiet):
                 text = "  ".join(f"{n} = {v:.3g}" for n, v in (("L1", l1), ("L2", l2)) if v is not None)
                 ax.text(0.99, 0.02, f"rel. error {text}", transform=ax.transAxes, ha="right",
                         va="bottom", fontsize=8, color="0.3")
-            if run.seed:
-                fig.text(0.99, 0.005, run.seed, ha="right", va="bottom", fontsize=7, color="0.5")
-            fig.tight_layout()
+            footnotes(fig, run)
+            fig.tight_layout(rect=(0, 0.02, 1, 1))
             save(fig, os.path.join(out, f"{field}_t{format_time(time)}.png"), quiet)
             written += 1
     written += energy_figure(run, out, quiet)
@@ -285,21 +307,22 @@ def energy_figure(run, out, quiet):
     if has_data(e, "ref_total"):
         ax.plot(e["time"], e["ref_total"], label=run.reference_label, **REFERENCE_STYLE)
     ax.plot(e["time"], e["total"], color="C3", linewidth=1.0, label=f"{scheme_label(run)} total")
-    ax.set_ylabel("total energy $E$")
+    ax.set_ylabel(run.energy_label("total energy $E$"))
     ax.set_title(title_lines(run, f"total energy, {run.scheme}, {run.ppc} particles/cell"), fontsize=10)
     axes = [ax]
     if parts:
         styles = {"kinetic": dict(color="C0", linestyle="--"), "internal": dict(color="C2", linestyle=":")}
         for n in parts:
             ax2.plot(e["time"], e[n], linewidth=0.9, label=f"{scheme_label(run)} {n}", **styles[n])
-        ax2.set_ylabel("energy")
+        ax2.set_ylabel(run.energy_label("energy"))
         axes.append(ax2)
-    axes[-1].set_xlabel("time $t$")
+    axes[-1].set_xlabel(run.label("time $t$", "time"))
     for a in axes:
         a.grid(True, linewidth=0.3, alpha=0.5)
         a.ticklabel_format(axis="y", style="sci", scilimits=(-3, 4), useOffset=False)
         a.legend(loc="best", fontsize=8, **LEGEND_STYLE)
-    fig.tight_layout()
+    footnotes(fig, run)
+    fig.tight_layout(rect=(0, 0.02, 1, 1))
     save(fig, os.path.join(out, "energy.png"), quiet)
     return 1
 
@@ -316,16 +339,18 @@ def front_figure(run, out, quiet):
     label = scheme_label(run)
     if ok.sum() >= 2 and np.ptp(t[ok]) > 0:
         speed = np.polyfit(t[ok], x[ok], 1)[0]
-        label += f" (fitted speed {speed:.4g})"
+        v = run.units.unit("velocity")
+        label += f" (fitted speed {speed:.4g}{' ' + v if v else ''})"
     if has_data(f, "ref_front"):
         ax.plot(t, f["ref_front"], label=run.reference_label, **REFERENCE_STYLE)
     ax.plot(t[ok], x[ok], label=label, **NUMERIC_STYLE)
-    ax.set_xlabel("time $t$")
-    ax.set_ylabel("front position $x$")
+    ax.set_xlabel(run.label("time $t$", "time"))
+    ax.set_ylabel(run.label("front position $x$", "x"))
     ax.grid(True, linewidth=0.3, alpha=0.5)
     ax.legend(loc="best", fontsize=8, **LEGEND_STYLE)
     ax.set_title(title_lines(run, f"shock front, {run.scheme}, {run.ppc} particles/cell"), fontsize=10)
-    fig.tight_layout()
+    footnotes(fig, run)
+    fig.tight_layout(rect=(0, 0.02, 1, 1))
     save(fig, os.path.join(out, "front.png"), quiet)
     return 1
 

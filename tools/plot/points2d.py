@@ -2,17 +2,27 @@
 """2-D points coloured by a field, one square per point (like the dissertation's fig. 7.3).
 
     tools/plot/points2d.py RUN_DIR|FILE.pvd|FILE.vtu|FILE.vti --field stress --component xx \\
-        [--time T] --out FILE.png
+        [--time T | --times T1 T2 ... | --frames N] --out FILE.png
 
 RUN_DIR means RUN_DIR/particles.pvd; with a .pvd, --time picks the record nearest T (the
-last one without it). --component is x|y|z|magnitude for a vector, xx|xy|...|zz,
+last one without it), --times one panel per time, --frames N up to N panels: the first
+record, the one where the field spans most (a collision at its height), the last, and
+records evenly between; one colour scale and one frame of axes for all panels.
+--component is x|y|z|magnitude for a vector, xx|xy|...|zz,
 magnitude (Frobenius) or pressure (-trace/3) for a row-major 3x3 tensor, or a component
 index. Without --field: the file's active scalars, else its first array; without
 --component: magnitude for a vector, xx for a tensor. Each point is drawn as a square
 marker whose sides are the point pitch along x and y (a rectangle on a rectangular
 lattice; --marker-size fixes a square), in data units, so the picture is filled wherever
-the material is and empty where it is not. Headless (Agg); uses
-Debian's python3-vtk9, python3-numpy, python3-matplotlib. Prints the written path.
+the material is and empty where it is not.
+
+Units come from the run's run.json (units.name, from the deck's case.units: nm_ps_GPa,
+mm_us_GPa, metal, SI) onto the axes and the colour bar; a deck with free-text units has
+them printed under the figure. --unit and --length-unit override. A body much longer
+than wide (a planar impact, a jet) is drawn with y stretched, and says by how much, so
+that its thickness stays visible; its panels stack and the colour bar lies beneath.
+Headless (Agg); uses Debian's python3-vtk9, python3-numpy, python3-matplotlib. Prints
+the written path.
 """
 
 import argparse
@@ -24,9 +34,12 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
-from mpl_toolkits.axes_grid1 import make_axes_locatable  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot_units  # noqa: E402
 
 try:
     from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -63,6 +76,45 @@ def pick_record(source, time):
     return os.path.join(os.path.dirname(source), file), t
 
 
+def list_records(source):
+    """[(time, dataset file)] of a run directory or .pvd, in time order."""
+    if os.path.isdir(source):
+        source = os.path.join(source, "particles.pvd")
+    if not source.endswith(".pvd"):
+        fail(f"{source}: a time series needs a run directory or a .pvd")
+    if not os.path.exists(source):
+        fail(f"no such file {source}")
+    try:
+        root = ET.parse(source).getroot()
+    except ET.ParseError as e:
+        fail(f"{source}: {e}")
+    records = sorted((float(d.get("timestep")), os.path.join(os.path.dirname(source), d.get("file")))
+                     for d in root.iter("DataSet"))
+    if not records:
+        fail(f"{source} lists no records yet")
+    return records
+
+
+def frame_indices(spans, n):
+    """Up to n record indices in time order: the last, the one whose field spans most
+    (a single last frame after a collision shows only its ringing), the first, and the
+    rest spread evenly in between."""
+    count = len(spans)
+    if count <= n:
+        return list(range(count))
+    peak = int(np.nanargmax(spans)) if np.isfinite(spans).any() else 0
+    chosen = []
+    for j in [count - 1, peak, 0] + [int(round(k)) for k in np.linspace(0, count - 1, n)]:
+        if j not in chosen:
+            chosen.append(j)
+    for j in range(count):  # even picks that coincided: any record not shown yet
+        if len(chosen) >= n:
+            break
+        if j not in chosen:
+            chosen.append(j)
+    return sorted(chosen[:n])
+
+
 def read_dataset(path):
     """(points n x 3, {name: values n x components}, active scalars name or None)."""
     if path.endswith(".vtu"):
@@ -97,9 +149,14 @@ def read_dataset(path):
     return points, fields, active
 
 
+SYMBOLS = {"stress": "\\sigma", "strain": "\\varepsilon", "velocity": "v", "velocity_gradient": "L",
+           "displacement": "u"}
+
+
 def component_values(values, name, component):
-    """The plotted scalar per point, and its label."""
+    """The plotted scalar per point, and its label (sigma_xx for stress xx)."""
     ncomp = values.shape[1]
+    sym = SYMBOLS.get(name)
     if component is None:
         component = {1: None, 3: "magnitude", 9: "xx"}.get(ncomp)
     if component is None:
@@ -112,13 +169,15 @@ def component_values(values, name, component):
             fail(f"{name} has {ncomp} components, no component {c}")
         return values[:, c], f"{name}[{c}]"
     if component == "magnitude":
-        return np.sqrt(np.sum(values * values, axis=1)), f"|{name}|"
+        return np.sqrt(np.sum(values * values, axis=1)), f"$|{sym}|$" if sym else f"|{name}|"
     if ncomp == 3 and component in AXES:
-        return values[:, AXES[component]], f"{name}$_{component}$"
+        return values[:, AXES[component]], f"${sym}_{component}$" if sym else f"{name}$_{component}$"
     if ncomp == 9 and len(component) == 2 and all(c in AXES for c in component):
-        return values[:, 3 * AXES[component[0]] + AXES[component[1]]], f"{name}$_{{{component}}}$"
+        label = f"${sym}_{{{component}}}$" if sym else f"{name}$_{{{component}}}$"
+        return values[:, 3 * AXES[component[0]] + AXES[component[1]]], label
     if ncomp == 9 and component == "pressure":
-        return -(values[:, 0] + values[:, 4] + values[:, 8]) / 3.0, f"pressure (-tr {name}/3)"
+        return -(values[:, 0] + values[:, 4] + values[:, 8]) / 3.0, \
+            f"pressure (-tr ${sym}$/3)" if sym else f"pressure (-tr {name}/3)"
     fail(f"component '{component}' does not apply to {name} ({ncomp} components)")
 
 
@@ -154,68 +213,177 @@ def point_spacing(xy):
     return (h[0] if not np.isnan(h[0]) else h[1]), (h[1] if not np.isnan(h[1]) else h[0])
 
 
+# Shapes of the drawing: a body flatter than MIN_ASPECT is stretched along y up to it
+# (N6's strip is 70:1, a line at any width); one flatter than STACK_ASPECT stacks its
+# panels in a column under one horizontal colour bar, otherwise they stand in a row.
+MIN_ASPECT = 0.12
+CLIP_PERCENT = 0.5
+STACK_ASPECT = 0.6
+
+
+def layout(width, height, panels):
+    """(rows, columns, panel width and height in inches, y stretch, colour bar orientation)."""
+    aspect = height / max(width, 1e-300)
+    # A whole factor, so that the label's "stretched 6x" is exact.
+    stretch = float(np.ceil(MIN_ASPECT / aspect)) if aspect < MIN_ASPECT else 1.0
+    shown = aspect * stretch
+    if shown < STACK_ASPECT:
+        w = min(9.0, max(6.0, 3.0 / shown))  # a stacked panel about 1-3 inches high
+        return panels, 1, w, max(w * shown, 0.9), stretch, "horizontal"
+    cols = min(panels, 4)
+    rows = -(-panels // cols)
+    w = {1: 6.0, 2: 4.6}.get(cols, 3.4)
+    h = min(w * shown, 8.0)
+    return rows, cols, h / shown, h, stretch, "vertical"
+
+
+def title_text(base, width_in):
+    """The title wrapped to the figure's width (about 0.11 inch a character at 11 pt)."""
+    import textwrap
+    return "\n".join(textwrap.wrap(base, max(30, int(width_in / 0.11))))
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("source", help="run directory, .pvd, .vtu or .vti")
     ap.add_argument("--field", help="point-data array name")
     ap.add_argument("--component", help="x|y|z|xx..zz|magnitude|pressure|index")
     ap.add_argument("--time", type=float, help="record nearest this time (a .pvd)")
+    ap.add_argument("--times", type=float, nargs="+", help="one panel per record nearest each time")
+    ap.add_argument("--frames", type=int, help="up to N panels chosen over the run (first, peak, last)")
     ap.add_argument("--out", help="PNG file (default: next to the data)")
     ap.add_argument("--cmap", default="jet")
     ap.add_argument("--vmin", type=float)
     ap.add_argument("--vmax", type=float)
     ap.add_argument("--scale", type=float, default=1.0, help="multiply values (unit change)")
-    ap.add_argument("--unit", default="", help="colour-bar unit text, e.g. GPa")
+    ap.add_argument("--unit", help="colour-bar unit text, e.g. GPa (default: the run's units)")
+    ap.add_argument("--length-unit", help="axis unit text, e.g. nm (default: the run's units)")
     ap.add_argument("--marker-size", type=float, help="square side in length units "
                     "(default: the point pitch along x and y)")
-    ap.add_argument("--title", help="replaces the default title (field, time)")
+    ap.add_argument("--title", help="replaces the default title (case, field)")
     args = ap.parse_args(argv)
+    if sum(a is not None for a in (args.time, args.times, args.frames)) > 1:
+        fail("give one of --time, --times, --frames")
+    if args.frames is not None and args.frames < 1:
+        fail("--frames needs at least 1")
 
-    path, time = pick_record(args.source, args.time)
-    points, fields, active = read_dataset(path)
-    if not fields:
-        fail(f"{path} has no point data")
-    name = args.field or active or next(iter(fields))
-    if name not in fields:
-        fail(f"{path} has no field '{name}' (it has: {', '.join(fields)})")
-    values, label = component_values(fields[name], name, args.component)
-    values = values * args.scale
-
-    xy = points[:, :2]
-    h = np.array([args.marker_size] * 2 if args.marker_size else point_spacing(xy))
-    # Cells in data units: filled material, as in ParaView, at any figure size or DPI.
-    corners = np.array([[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]) * h
-    squares = xy[:, None, :] + corners[None, :, :]
-    coll = PolyCollection(squares, array=values, cmap=args.cmap, edgecolors="none",
-                          antialiaseds=False)
-    coll.set_clim(args.vmin if args.vmin is not None else np.nanmin(values),
-                  args.vmax if args.vmax is not None else np.nanmax(values))
-
-    lo, hi = xy.min(axis=0) - h, xy.max(axis=0) + h
-    aspect = (hi[1] - lo[1]) / max(hi[0] - lo[0], 1e-300)
-    fig, ax = plt.subplots(figsize=(8.0, min(max(8.0 * aspect, 2.5), 10.0) + 0.8))
-    ax.add_collection(coll)
-    ax.set_xlim(lo[0], hi[0])
-    ax.set_ylim(lo[1], hi[1])
-    ax.set_aspect("equal")
-    ax.set_xlabel("x")
-    ax.set_ylabel("y")
-    # A colour bar as tall as the (equal-aspect) plot, whatever its shape.
-    bar = fig.colorbar(coll, cax=make_axes_locatable(ax).append_axes("right", "3%", pad=0.1))
-    bar.set_label(f"{label} ({args.unit})" if args.unit else label)
-    if args.title:
-        title = args.title
-    elif time is not None:
-        title = f"{label}, t = {time:g}"
+    # The frames: (dataset, time or None), each with its points and values.
+    if args.times or args.frames:
+        records = list_records(args.source)
+        if args.times:
+            picks = sorted({min(range(len(records)), key=lambda k: abs(records[k][0] - t)) for t in args.times})
+            records = [records[k] for k in picks]
     else:
-        title = f"{label}, {os.path.basename(path)}"
-    ax.set_title(title)
+        path, time = pick_record(args.source, args.time)
+        records = [(time, path)]
+    frames = []
+    for time, path in records:
+        points, fields, active = read_dataset(path)
+        if not fields:
+            fail(f"{path} has no point data")
+        name = args.field or active or next(iter(fields))
+        if name not in fields:
+            fail(f"{path} has no field '{name}' (it has: {', '.join(fields)})")
+        values, label = component_values(fields[name], name, args.component)
+        frames.append((time, path, points[:, :2], values * args.scale))
+    if args.frames:
+        spans = np.array([np.nanmax(v) - np.nanmin(v) if np.isfinite(v).any() else np.nan
+                          for _, _, _, v in frames])
+        frames = [frames[k] for k in frame_indices(spans, args.frames)]
+
+    units = plot_units.Units.of_source(args.source)
+    vunit = args.unit if args.unit is not None else (units.of_field(name) if args.scale == 1.0 else "")
+    lunit = args.length_unit if args.length_unit is not None else units.unit("length")
+    tunit = units.unit("time")
+
+    every = np.concatenate([v for _, _, _, v in frames])
+    every = every[np.isfinite(every)]
+    # The scale spans the values but for the outer CLIP_PERCENT: a few points at a contact
+    # (N3's disks: -600 against some -50 elsewhere) would leave the rest one colour. The
+    # bar's arrows say when values lie beyond it.
+    lo_v = args.vmin if args.vmin is not None else float(np.percentile(every, CLIP_PERCENT))
+    hi_v = args.vmax if args.vmax is not None else float(np.percentile(every, 100 - CLIP_PERCENT))
+    if not hi_v > lo_v:  # a uniform field (t = 0) still needs a scale
+        lo_v, hi_v = float(every.min()), float(every.max())
+    if not hi_v > lo_v:
+        pad = max(abs(lo_v) * 0.05, 1e-12)
+        lo_v, hi_v = lo_v - pad, hi_v + pad
+    extend = {(False, False): "neither", (True, False): "min", (False, True): "max", (True, True): "both"}[
+        (bool(every.min() < lo_v), bool(every.max() > hi_v))]
+    # Each frame its own pitch: the first is the regular lattice, later ones are deformed.
+    pitch = [np.array([args.marker_size] * 2 if args.marker_size else point_spacing(xy)) for _, _, xy, _ in frames]
+    h = np.max(pitch, axis=0)
+    lo = np.min([xy.min(axis=0) for _, _, xy, _ in frames], axis=0) - 0.6 * h  # half a square and a little
+    hi = np.max([xy.max(axis=0) for _, _, xy, _ in frames], axis=0) + 0.6 * h
+    rows, cols, pw, ph, stretch, orient = layout(hi[0] - lo[0], hi[1] - lo[1], len(frames))
+
+    bar_in = 0.9 if orient == "horizontal" else 0.0
+    # Room for the labels, the title and the bar around the panels; equal-aspect panels
+    # leave any excess as blank margin, so it is kept small.
+    fig_w = cols * (pw + 0.15) + (1.0 if orient == "vertical" else 0.0) + 0.8
+    fig_h = rows * (ph + (0.35 if len(frames) > 1 else 0.0)) + bar_in + 1.0
+    fig, axes = plt.subplots(rows, cols, figsize=(fig_w, fig_h), squeeze=False, layout="constrained",
+                             sharex=True, sharey=True)
+    # Cells in data units: filled material, as in ParaView, at any figure size or DPI.
+    corners = np.array([[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]])
+    coll = None
+    for k, ax in enumerate(axes.flat):
+        if k >= len(frames):
+            ax.set_visible(False)
+            continue
+        time, path, xy, values = frames[k]
+        coll = PolyCollection(xy[:, None, :] + (corners * pitch[k])[None, :, :], array=values, cmap=args.cmap,
+                              edgecolors="none", antialiaseds=False)
+        coll.set_clim(lo_v, hi_v)
+        ax.add_collection(coll)
+        ax.set_xlim(lo[0], hi[0])
+        ax.set_ylim(lo[1], hi[1])
+        ax.set_aspect(stretch)  # 1: equal; a y unit drawn `stretch` times an x unit
+        ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(nbins=4 if ph > 1.5 else 2))
+        if len(frames) > 1 and time is not None:
+            ax.set_title(f"t = {time:g}" + (f" {tunit}" if tunit else ""), fontsize=10)
+        if k // cols == rows - 1 or orient == "horizontal" and k == len(frames) - 1:
+            ax.set_xlabel(f"x ({lunit})" if lunit else "x")
+        if k % cols == 0:
+            ylabel = f"y ({lunit})" if lunit else "y"
+            ax.set_ylabel(ylabel + (f"\n(stretched {stretch:.0f}x)" if stretch > 1.0 else ""))
+        ax.tick_params(labelsize=9)
+    used = [ax for ax in axes.flat if ax.get_visible()]
+    # A bar about 0.35 inch thick, whatever the figure's size (the default is 15% of it).
+    bar = fig.colorbar(coll, ax=used, orientation=orient, extend=extend, pad=0.02,
+                       fraction=0.35 / (fig_w if orient == "vertical" else fig_h), shrink=0.9 if orient == "vertical" else 0.6,
+                       aspect=30 if orient == "horizontal" else 25)
+    bar.set_label(f"{label} ({vunit})" if vunit else label)
+    bar.ax.tick_params(labelsize=9)
+
+    if args.title:
+        title = title_text(args.title, fig_w)
+    else:
+        case = ""
+        run_json = plot_units.find_run_json(args.source)
+        if run_json:
+            import json
+            try:
+                with open(run_json) as f:
+                    c = json.load(f).get("deck", {}).get("case", {})
+                case = f"{c.get('id', '')}: {c.get('title', '')}".strip(": ")
+            except (OSError, ValueError):
+                pass
+        time = frames[0][0]
+        when = ("" if len(frames) > 1 else f", t = {time:g}" + (f" {tunit}" if tunit else "")
+                if time is not None else f", {os.path.basename(frames[0][1])}")
+        title = title_text(case, fig_w) + "\n" if case else ""
+        title += f"{label}{when}"
+    fig.suptitle(title, fontsize=11)
+    note = units.note() if not (args.unit or args.length_unit) else ""
+    if note:
+        fig.text(0.995, 0.003, note, ha="right", va="bottom", fontsize=7, color="0.4")
 
     out = args.out
     if not out:
-        stem = os.path.splitext(path)[0]
+        stem = os.path.splitext(frames[-1][1])[0]
         out = f"{stem}_{name}{'_' + args.component if args.component else ''}.png"
-    fig.savefig(out, dpi=150, bbox_inches="tight")
+    fig.savefig(out, dpi=150)
     plt.close(fig)
     print(out)
     return 0

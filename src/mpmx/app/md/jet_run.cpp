@@ -43,7 +43,11 @@ void write_bins_csv(const std::string& path, const BinFields& f) {
   if (!csv) throw RunError(fmt::format("error writing {}", path));
 }
 
-// ParaView image: one point per bin centre (stress GPa, density g/cm^3, T K, v km/s).
+// ParaView image: one point per bin centre (stress GPa, density g/cm^3, T K, v km/s),
+// positions in nm: the jet's continuum decks are nm_ps_GPa, and both sit side by side in
+// ParaView (the CSV keeps Angstrom, as its x_A, y_A say).
+constexpr double kNmPerA = 0.1;
+
 void write_bins_vti(const std::string& path, const BinFields& f) {
   const BinGrid& g = f.grid;
   io::vtk::Field sxx{"sxx_GPa", 1, {}}, stress{"stress_GPa", 9, {}}, rho{"density_g_cm3", 1, {}},
@@ -56,8 +60,9 @@ void write_bins_vti(const std::string& path, const BinFields& f) {
     for (double v : {f.vx[k], f.vy[k], f.vz[k]}) vel.values.push_back(0.1 * v);
     n.values.push_back(f.atoms[k]);
   }
-  io::vtk::write_image(path, {g.nx, g.ny, 1}, {g.x_centre(0), g.y_centre(0), 0.5 * g.lz}, {g.dx, g.dy, g.lz},
-                       {sxx, stress, rho, temp, vel, n});
+  io::vtk::write_image(path, {g.nx, g.ny, 1},
+                       {kNmPerA * g.x_centre(0), kNmPerA * g.y_centre(0), kNmPerA * 0.5 * g.lz},
+                       {kNmPerA * g.dx, kNmPerA * g.dy, kNmPerA * g.lz}, {sxx, stress, rho, temp, vel, n});
 }
 
 }  // namespace
@@ -148,6 +153,7 @@ toml::table jet_table(const MdConfig& c, const JetGeometry& geo, const BinGrid& 
                      {"record_every_steps", c.jet_every},
                      {"records", static_cast<std::int64_t>(records)},
                      {"bins_series", "md_bins.pvd"},
+                     {"bins_series_length_unit", "nm"},
                      {"profile_csv", "jet_profile.csv"},
                      {"front_csv", "jet_front.csv"}};
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The direct-MD jet run of an MD deck with a [jet] table (jet.hpp): binned fields per
-// record (DIR/bins/md_bins_STEP.csv, DIR/vtk/md_bins_STEP.vti and DIR/md_bins.pvd for
-// ParaView), the y-pooled profile along x (jet_profile.csv), the shock front per record
+// record (DIR/bins/md_bins_STEP.csv in Angstrom, DIR/vtk/md_bins_STEP.vti in nm and
+// DIR/md_bins.pvd for ParaView), the y-pooled profile along x (jet_profile.csv), the shock front per record
 // (jet_front.csv), thermo.csv, a LAMMPS dump every run.dump_every steps, and the
 // figures run.json takes: the lab-frame shock speed and the peak compression.
 #include <string>

@@ -48,6 +48,7 @@ ConvergenceStudy run_convergence(const MpmConfig& c, const RunOptions& o) {
     if (!o.out_dir.empty()) ok.out_dir = fmt::format("{}/level_{}", o.out_dir, k);
     ok.checkpoint_every = 0;
     ok.checkpoint_seconds = 0.0;
+    ok.plot = false;  // the study's figure is convergence.png; each level keeps its VTK files
     if (!o.quiet)
       fmt::print(stderr, "{}: level {} of {}: {} cells along x, dt = {}\n", c.id, k + 1, c.convergence_levels,
                  ck.cells_all[0], ck.dt);

@@ -217,7 +217,9 @@ class ContinuumRun {
   // time.energy_growth_stop the run stops where it is.
   void check_energy_growth(const Sums& now) {
     const bool known = Dim == 1 ? s_.material->stored_energy_in_1d() : s_.material->keeps_energy_account();
-    if (!known) return;
+    // A manufactured solution's body force works on the body and that work is not in the
+    // account: its energy grows by design (N4).
+    if (!known || s_.manufactured) return;
     const double e0 = carry_.kinetic_initial + carry_.stored_initial, wb = s_.tallies.boundary_work;
     const double scale = std::max({std::abs(e0), std::abs(e0 + wb), carry_.max_kinetic});
     if (!(scale > 0.0)) return;
@@ -334,7 +336,9 @@ class ContinuumRun {
     if (!(Dim == 1 || (Dim == 2 && vtk_)) || !io::matplotlib_present()) return;
     if (Dim == 1) io::run_plot_script("mpmx_plot.py", fmt::format("--quiet '{}'", o_.out_dir));
     else
-      io::run_plot_script("points2d.py", fmt::format("'{}/particles.pvd' --field stress --component xx "
+      // Frames over the run (first, peak, last): the last record alone can mislead, e.g.
+      // two disks after their rebound show only their ringing.
+      io::run_plot_script("points2d.py", fmt::format("'{}/particles.pvd' --field stress --component xx --frames 4 "
                                                      "--out '{}/stress_xx.png' >/dev/null",
                                                      o_.out_dir, o_.out_dir));
   }
