@@ -23,9 +23,9 @@ if len(rows) != 7:
     bad.append(f"{len(rows)} rows, not 7")
 for r in rows:
     e = float(r["error_percent"] or "nan")
-    # A regression bound at this size (docs/validation.md has the figures): the tiny
-    # block's errors are 25-65%, not the seed's.
-    if not (0.0 < e < 80.0):
+    # A regression bound at this size (docs/jet.md has the figures): with MUSL the tiny
+    # block's errors are 21-47%, not the seed's (the midpoint update gave up to 54%).
+    if not (0.0 < e < 50.0):
         bad.append(f"{r['row']}: eq. 7.12 = {e}%")
     if r["row"].startswith("J4"):
         continue
