@@ -87,12 +87,25 @@ TEST(MpmBudget, MemoryBeyondTheMachineIsRefusedEvenForced) {
     EXPECT_EQ(r.code, 2) << cmd;
     EXPECT_NE(r.err.find("particles.per_cell and grid.cells: 1e+13 points"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("of memory"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(d + ": particles.per_cell"), std::string::npos) << r.err;  // the deck named
   }
   const auto r = mpmx(fmt::format("run --force --no-plot --quiet '{}' --out '{}'", d,
                                   (test::scratch_root() / "mem_out").string()));
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("of memory"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(test::scratch_root() / "mem_out"));
+}
+
+TEST(MpmBudget, MdBoxesBeyondTheMachineNameTheDeckAndTheRanks) {
+  // The J2 jet at s = 0.1 with 20^3-cell boxes (32,000 atoms a point): 5e8 atoms.
+  std::string t = test::slurp(test::example("J2_ddmp_md_100x50_4ppc_s0p1.toml"));
+  t.replace(t.find("\ncells = 5"), 10, "\ncells = 20");
+  t.replace(t.find("\"../runs/"), 9, "\"" + std::string(MPMX_SOURCE_DIR) + "/runs/");
+  const std::string d = test::scratch_file("md_mem.toml", t).string();
+  const auto r = mpmx(fmt::format("check '{}'", d));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find(d + ": material.md.cells"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--ranks N"), std::string::npos) << r.err;
 }
 
 TEST(MpmBudget, SubpointsAndHugeGridsNameTheirKey) {

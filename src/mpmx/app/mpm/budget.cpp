@@ -36,6 +36,7 @@ double node_bytes(int dim) { return kOverhead * 8.0 * (4 + 6 * dim); }
 
 MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
   MpmBudget b;
+  b.deck = c.deck_path;
   b.ranks = ranks > 1 ? ranks : 1;
   const int dim = c.dim;
   b.points = 1, b.nodes = 1;
@@ -78,12 +79,17 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
 void check_mpm_budget(const MpmBudget& b, std::uint64_t memory_bytes, bool force) {
   if (memory_bytes > 0 && !(b.bytes <= static_cast<double>(memory_bytes)))
     throw InputError(fmt::format(
-        "{}: {:.4g} points{}, {:.4g} grid nodes{} need about {} of memory ({:.4g} bytes), more than this "
-        "machine's {}: make the deck smaller",
-        b.size_key, b.points, b.subpoints > 1 ? fmt::format(" of {:.4g} sub-points each", b.subpoints) : std::string(),
-        b.nodes,
+        "{}{}: {:.4g} points{}, {:.4g} grid nodes{} need about {} of memory ({:.4g} bytes){}, more than this "
+        "machine's {}: make the deck smaller{}",
+        b.deck.empty() ? std::string() : b.deck + ": ", b.size_key, b.points,
+        b.subpoints > 1 ? fmt::format(" of {:.4g} sub-points each", b.subpoints) : std::string(), b.nodes,
         b.md_atoms > 0 ? fmt::format(" and {:.4g} MD atoms", b.md_atoms) : std::string(), format_bytes(b.bytes),
-        b.bytes, format_bytes(static_cast<double>(memory_bytes))));
+        b.bytes, b.ranks > 1 ? fmt::format(" on each of {} ranks", b.ranks) : std::string(),
+        format_bytes(static_cast<double>(memory_bytes)),
+        b.md_atoms > 0 ? fmt::format(", or spread its MD boxes over MPI ranks (mpirun -np N mpmx run ...; "
+                                     "`mpmx check --ranks N {}` prints one rank's share)",
+                                     b.deck.empty() ? "DECK" : b.deck)
+                       : std::string()));
   if (!force && !(b.seconds <= kWorkLimitSeconds))
     throw InputError(fmt::format(
         "time.end / time.dt: {:.4g} points x {:.4g} steps{}, about {:.3g} days of work: more than the day a run "

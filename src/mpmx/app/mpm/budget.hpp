@@ -32,6 +32,7 @@ struct MpmBudget {
   double seconds = 0;      // estimated wall time on one core
   double steps = 0;
   std::string size_key;    // the key the largest memory share comes from
+  std::string deck;        // the deck's path, for the refusal's message
 };
 
 // `ranks`: the MPI ranks the md_closure boxes spread over (each holds and advances
