@@ -87,7 +87,8 @@ int run(int argc, char** argv) {
   });
   app.require_subcommand(1);
   app.footer("Exit status: 0 done, 1 internal error, 2 bad input, 3 run stopped by the physics (partial "
-             "result written), 130 interrupted (resumable).");
+             "result written), 130 interrupted by Ctrl-C or SIGTERM (run, md, dpd: a checkpoint written, --resume "
+             "continues; fit-dpd: not resumable).");
   mpmx::app::add_mpm_commands(app);
   mpmx::app::add_md_commands(app);
   mpmx::app::add_dpd_commands(app);

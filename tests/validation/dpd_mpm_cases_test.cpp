@@ -84,7 +84,9 @@ app::dpd::DpdRunSummary run(const std::string& name, const std::string& text) {
   const app::dpd::DpdConfig c = app::dpd::read_dpd_config(deck);
   const fs::path out = dir() / name;
   fs::create_directories(out);
-  return app::dpd::run_dpd(c, out.string(), deck.table(), 2, true, multiscale::dpd_mpm_mover(c.grid, c.continuum, c.potential, 2));
+  app::RunControlOptions o;
+  o.quiet = true;
+  return app::dpd::run_dpd(c, out.string(), deck.table(), 2, o, multiscale::dpd_mpm_mover(c.grid, c.continuum, c.potential, 2));
 }
 
 std::map<std::string, std::vector<double>> csv(const fs::path& p) {

@@ -2,8 +2,6 @@
 
 #include <csignal>
 
-#include "mpmx/core/ranks.hpp"
-
 namespace mpmx {
 
 namespace {
@@ -12,22 +10,22 @@ volatile std::sig_atomic_t g_interrupted = 0;
 
 extern "C" void on_interrupt(int sig) {
   g_interrupted = 1;
-  std::signal(sig, SIG_DFL);
+  std::signal(sig, SIG_DFL);  // a second one kills
 }
 
 }  // namespace
 
-InterruptGuard::InterruptGuard(bool active)
-    : active_(active), term_(active && ranks::active()), previous_(SIG_DFL), previous_term_(SIG_DFL) {
+InterruptGuard::InterruptGuard(bool active) : active_(active), previous_(SIG_DFL), previous_term_(SIG_DFL) {
   if (!active_) return;
   g_interrupted = 0;
   previous_ = std::signal(SIGINT, on_interrupt);
-  if (term_) previous_term_ = std::signal(SIGTERM, on_interrupt);
+  previous_term_ = std::signal(SIGTERM, on_interrupt);
 }
 
 InterruptGuard::~InterruptGuard() {
-  if (active_) std::signal(SIGINT, previous_);
-  if (term_) std::signal(SIGTERM, previous_term_);
+  if (!active_) return;
+  std::signal(SIGINT, previous_);
+  std::signal(SIGTERM, previous_term_);
 }
 
 bool InterruptGuard::interrupted() { return g_interrupted != 0; }

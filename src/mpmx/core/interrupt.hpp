@@ -1,7 +1,8 @@
 #pragma once
-// Ctrl-C asks a run loop to write a checkpoint and stop; a second one kills. Under MPI,
-// SIGTERM does the same: mpirun turns a Ctrl-C into SIGTERM to every rank, and a batch
-// system's time limit sends it too. The guard holds the handlers for the loop's life.
+// Ctrl-C (SIGINT) or SIGTERM asks a run loop to write a checkpoint and stop at its next
+// step boundary; a second signal kills. SIGTERM is what mpirun turns a Ctrl-C into for
+// every rank, what `kill` sends by default and what a batch system's time limit sends.
+// The guard holds the handlers for the loop's life.
 namespace mpmx {
 
 class InterruptGuard {
@@ -15,7 +16,7 @@ class InterruptGuard {
   static bool interrupted();
 
  private:
-  bool active_, term_;
+  bool active_;
   void (*previous_)(int);
   void (*previous_term_)(int);
 };

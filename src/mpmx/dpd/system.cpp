@@ -115,6 +115,10 @@ void System::rebuild() {
   }
   const bool sweep = par_.integrator == Integrator::shardlow && par_.gamma > 0;
   list_.build(p_, d_, neighbor_cutoff(), opt_.skin, sweep, opt_.threads);
+  mark_external();
+}
+
+void System::mark_external() {
   // The points of external groups (a continuum) do not interact with each other: the mask
   // follows the particle order, which only a rebuild changes (make_external asks for one).
   bool external = false;

@@ -119,8 +119,18 @@ class System {
   // Neighbour list and forces for the current state.
   void refresh(double dt);
 
+  // Checkpoint (dpd/checkpoint.cpp): the whole state (particles with their forces, the
+  // groups' motion, step, time, the tallies, the neighbour list's build positions) in a
+  // portable binary form. load() replaces the state of a system built from the same deck
+  // (the same particles and groups, in any order) and continues bit-for-bit: the list is
+  // rebuilt from the positions it was built from. The random forces need no state: they
+  // are drawn from (seed, step, pair). Throws InputError for a state that does not fit.
+  void save(std::ostream& out) const;
+  void load(std::istream& in);
+
  private:
   void rebuild();
+  void mark_external();
   void compute_forces(double dt, bool tally = true);
   void check_finite() const;
   void kick_free_groups(double dt);

@@ -33,6 +33,10 @@ DpdGrid::DpdGrid(double cell, const particles::Vec3& lo, const particles::Vec3& 
     a[d] = lo[d];
     b[d] = lo[d] + n[d] * cell;
   }
+  make_grid(a, b, n);
+}
+
+void DpdGrid::make_grid(const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<int, 3>& n) {
   g_ = mpm::Grid<3>(a, b, n);
   for (int k = 0; k < 8; ++k)
     off_[k] = static_cast<std::size_t>(kCorner[k][0] * g_.stride[0] + kCorner[k][1] * g_.stride[1] +

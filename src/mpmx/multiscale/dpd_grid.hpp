@@ -50,6 +50,8 @@ class DpdGrid final : public dpd::Mover {
 
   void move(dpd::Particles& p, double dt) override;
   void report(toml::table& out) const override;
+  void save(std::ostream& out) const override;
+  void load(std::istream& in) override;
   // Whether the continuum points take the reaction of their DPD neighbours' pair forces
   // (default) or only their stress, as eq. 3.1 is written.
   void set_pair_reaction(bool on) { reaction_ = on; }
@@ -67,6 +69,8 @@ class DpdGrid final : public dpd::Mover {
     std::size_t base = 0;     // storage index of the cell's lowest node
     std::array<double, 3> f;  // position in the cell, 0..1 per axis
   };
+  void make_grid(const std::array<double, 3>& lower, const std::array<double, 3>& upper,
+                 const std::array<int, 3>& cells);
   void locate(const dpd::Particles& p);
   double corner(const Stencil& s, int k, double G[3]) const;
   material::Points<3> points();

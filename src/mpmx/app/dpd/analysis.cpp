@@ -121,6 +121,64 @@ void Recorder::record(const System& s) {
   }
 }
 
+void Recorder::save(CheckpointOut& out) const {
+  out.numbers({t0_, length_, area_, sep0_, profile_lo_, profile_hi_});
+  out.integers({grip_[0], grip_[1]});
+  out.numbers(x0_);
+  out.integer(static_cast<std::int64_t>(track_ids_.size()));
+  for (const auto& ids : track_ids_) out.integers(ids);
+  for (const auto* v : {&times_, &strain_, &stress_, &profile_times_}) out.numbers(*v);
+  for (const auto* v : {&track_u_, &track_v_, &profile_u_}) out.rows(*v);
+}
+
+Recorder Recorder::load(const AnalysisSpec& spec, const System& s, CheckpointIn& in) {
+  Recorder r(spec);
+  const long long at = in.offset();
+  auto refuse = [&](const std::string& why) { return in.refuse(at, fmt::format("the DPD analysis: {}", why)); };
+  const auto k = in.numbers();
+  if (k.size() != 6) throw refuse("its start is not 6 numbers");
+  r.t0_ = k[0], r.length_ = k[1], r.area_ = k[2], r.sep0_ = k[3], r.profile_lo_ = k[4], r.profile_hi_ = k[5];
+  const auto grips = in.integers();
+  const auto groups = static_cast<std::int64_t>(s.groups().size());
+  if (grips.size() != 2 || (grips[0] >= 0) != !spec.grips[0].empty())
+    throw refuse("its grips are not the deck's");
+  for (int g = 0; g < 2; ++g) {
+    if (grips[g] < -1 || grips[g] >= groups) throw refuse(fmt::format("grip group {}", grips[g]));
+    r.grip_[g] = static_cast<int>(grips[g]);
+  }
+  r.x0_ = in.numbers();
+  const std::int64_t tracks = in.integer();
+  if (tracks != static_cast<std::int64_t>(spec.tracks.size()))
+    throw refuse(fmt::format("{} tracks, the deck has {}", tracks, spec.tracks.size()));
+  r.track_ids_.resize(spec.tracks.size());
+  for (auto& ids : r.track_ids_) {
+    ids = in.integers();
+    for (auto id : ids)
+      if (id < 0 || id >= static_cast<std::int64_t>(r.x0_.size()) || std::isnan(r.x0_[id]))
+        throw refuse(fmt::format("track particle {} has no start position", id));
+    if (ids.empty()) throw refuse("an empty track");
+  }
+  for (auto* v : {&r.times_, &r.strain_, &r.stress_, &r.profile_times_}) *v = in.numbers();
+  for (auto* v : {&r.track_u_, &r.track_v_, &r.profile_u_}) *v = in.rows();
+  const std::size_t records = r.times_.size();
+  auto rows_of = [](const std::vector<std::vector<double>>& v, std::size_t n, std::size_t width) {
+    if (v.size() != n) return false;
+    for (const auto& row : v)
+      if (row.size() != width) return false;
+    return true;
+  };
+  const bool grips_on = r.grip_[0] >= 0;
+  if (!spec.tracks.empty() && (!rows_of(r.track_u_, records, spec.tracks.size()) ||
+                               !rows_of(r.track_v_, records, spec.tracks.size())))
+    throw refuse("its track records do not match its times");
+  if (grips_on && (r.strain_.size() != records || r.stress_.size() != records))
+    throw refuse("its tensile records do not match its times");
+  if (!rows_of(r.profile_u_, r.profile_times_.size(), static_cast<std::size_t>(spec.profile_bins)) &&
+      !r.profile_times_.empty())
+    throw refuse("its profiles do not match the deck's bins");
+  return r;
+}
+
 double Recorder::onset_time(std::size_t k) const {
   const double sgn = spec_.onset_direction, th = spec_.onset;
   double lowest = sgn * (track_u_.empty() ? 0.0 : track_u_[0][k]);

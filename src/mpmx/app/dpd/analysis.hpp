@@ -20,6 +20,7 @@
 
 #include <toml++/toml.h>
 
+#include "mpmx/app/checkpoint_fields.hpp"
 #include "mpmx/dpd/system.hpp"
 
 namespace mpmx::app::dpd {
@@ -62,7 +63,14 @@ class Recorder {
   double peak_stress() const;
   double peak_strain() const;  // the strain at the peak
 
+  // Checkpoint: the run's start it measures from and every record so far. load() gives
+  // the recorder of a resumed run (of the deck's spec, on the system `s`), InputError
+  // for a state that does not fit them.
+  void save(CheckpointOut& out) const;
+  static Recorder load(const AnalysisSpec& spec, const System& s, CheckpointIn& in);
+
  private:
+  explicit Recorder(const AnalysisSpec& spec) : spec_(spec) {}
   double onset_time(std::size_t track) const;
   std::vector<double> displacement(const System& s) const;  // x - x0 by particle, NaN rigid
 

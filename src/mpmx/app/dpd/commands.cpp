@@ -11,7 +11,9 @@
 #include "mpmx/app/dpd/budget.hpp"
 #include "mpmx/app/dpd/config.hpp"
 #include "mpmx/app/dpd/fit_run.hpp"
+#include "mpmx/app/dpd/fit_stop.hpp"
 #include "mpmx/app/dpd/run.hpp"
+#include "mpmx/app/run_folder.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/io/deck.hpp"
 #include "mpmx/io/plot.hpp"
@@ -25,7 +27,8 @@ void add_dpd_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
     int threads = 0;  // all cores, as run and md
-    bool check = false, quiet = false, no_plot = false, still = false, force = false;
+    bool check = false, quiet = false, no_plot = false, still = false, force = false, resume = false;
+    std::int64_t stop_after = 0;
   };
   auto args = std::make_shared<Args>();
   dpd->add_option("deck", args->deck, "DPD deck (TOML)")->required();
@@ -35,6 +38,10 @@ void add_dpd_commands(CLI::App& app) {
   dpd->add_flag("--check", args->check, "validate the deck, print its work estimate and exit");
   dpd->add_flag("--force", args->force, "run even when the work estimate exceeds about a day");
   dpd->add_flag("--quiet", args->quiet, "no progress line");
+  dpd->add_flag("--resume", args->resume,
+                "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit)");
+  // For tests: stop as if interrupted at the first record at or past step N.
+  dpd->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   dpd->add_flag("--no-plot", args->no_plot, "no figures (tools/plot/dpd_study.py) after the run");
   dpd->add_flag("--still", args->still,
                 "the rigid groups (flyer, grips) start at rest: the undriven twin of the run, which "
@@ -54,11 +61,19 @@ void add_dpd_commands(CLI::App& app) {
     }
     const std::string out = out_dir_of(args->out, args->deck);
     const int threads = threads_of(args->threads);
-    const auto r = io::run_staged(
-        out, [&](const std::string& dir) {
-          return dpd::run_dpd(config, dir, deck.table(), threads, args->quiet,
-                              multiscale::dpd_mpm_mover(config.grid, config.continuum, config.potential, threads));
-        });
+    RunControlOptions o;
+    o.quiet = args->quiet;
+    o.resume = args->resume;
+    o.stop_after = args->stop_after;
+    o.out = out;
+    const auto r = run_resumable(out, args->resume, [&](const std::string& dir) {
+      return dpd::run_dpd(config, dir, deck.table(), threads, o,
+                          multiscale::dpd_mpm_mover(config.grid, config.continuum, config.potential, threads));
+    });
+    if (r.interrupted)
+      throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx dpd {} --out {} --resume{}",
+                                    r.step, r.last_step, checkpoint_path(out), args->deck, out,
+                                    args->still ? " --still" : ""));
     fmt::print("{} particles, {} steps, {:.3g} s, {:.4g} particle-steps/s, mean T {:.2f} K -> {}/run.json\n",
                r.particles, r.steps, r.wall_seconds, r.particle_steps_per_second, r.temperature, out);
     if (config.analysis.records() && !args->no_plot && io::matplotlib_present())
@@ -80,8 +95,10 @@ void add_dpd_commands(CLI::App& app) {
     }
     const std::string out = out_dir_of(fargs->out, fargs->deck);
     const int threads = threads_of(fargs->threads);
-    const auto r =
-        io::run_staged(out, [&](const std::string& dir) { return dpd::run_fit(config, dir, deck.table(), threads); });
+    const auto r = io::run_staged(out, [&](const std::string& dir) {
+      dpd::FitStop on_signal(fargs->deck, out, deck.table());  // stops the fit at once, not resumable
+      return dpd::run_fit(config, dir, deck.table(), threads);
+    });
     fmt::print("morse D0 = {:.6g} eV, alpha = {:.6g} 1/A, r0 = {:.6g} A, rc = {} A; max |P_DPDE - P_MD| = {:.3g} of "
                "the MD range; zero-pressure rho/rho0 MD {:.5f} DPDE {:.5f}; {:.3g} s -> {}/{}\n",
                r.potential.d0, r.potential.alpha, r.potential.r0, r.potential.rc, r.max_deviation_over_range,

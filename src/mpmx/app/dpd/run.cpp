@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -72,15 +73,10 @@ System build_system(const DpdConfig& c, int threads) {
 
 namespace {
 
+// thermo.csv: a row per thermo interval of each phase.
 class Thermo {
  public:
-  Thermo(const std::string& path, const System& s) : out_(path) {
-    out_ << "phase,step,time_ps,pe_eV,ke_eV,internal_eV,etotal_eV,temperature_K,internal_temperature_K,"
-            "px_amu_A_per_ps,py_amu_A_per_ps,pz_amu_A_per_ps,pressure_GPa,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,"
-            "sxz_GPa,syz_GPa";
-    for (const auto& g : s.groups()) out_ << fmt::format(",{0}_fx_eV_per_A,{0}_fy_eV_per_A,{0}_fz_eV_per_A", g.name);
-    out_ << "\n";
-  }
+  Thermo(RunTables& tables, const System& s) : out_(tables.open("thermo.csv", header(s))) {}
   void row(const char* phase, const System& s) {
     const auto st = s.stress_gpa();
     const auto m = s.momentum();
@@ -97,76 +93,18 @@ class Thermo {
   }
 
  private:
-  std::ofstream out_;
+  static std::string header(const System& s) {
+    std::string h =
+        "phase,step,time_ps,pe_eV,ke_eV,internal_eV,etotal_eV,temperature_K,internal_temperature_K,"
+        "px_amu_A_per_ps,py_amu_A_per_ps,pz_amu_A_per_ps,pressure_GPa,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,"
+        "sxz_GPa,syz_GPa";
+    for (const auto& g : s.groups()) h += fmt::format(",{0}_fx_eV_per_A,{0}_fy_eV_per_A,{0}_fz_eV_per_A", g.name);
+    return h + "\n";
+  }
+  std::ofstream& out_;
 };
 
 toml::array vec(const particles::Vec3& v) { return toml::array{v[0], v[1], v[2]}; }
-
-// What a run writes as it goes: thermo rows, dump frames (with their CNA structure when
-// asked), the analysis records, and the run phase's rows the energy drift and the mean
-// temperature are taken from.
-class RunLog {
- public:
-  RunLog(const DpdConfig& c, System& sys, const std::string& out_dir, bool quiet)
-      : c_(c), sys_(sys), thermo_((std::filesystem::path(out_dir) / "thermo.csv").string(), sys), quiet_(quiet) {
-    if (c.dump_every > 0) dump_.open(std::filesystem::path(out_dir) / "dump.lammpstrj");
-  }
-
-  // One phase of `steps` steps with thermo rows and progress; `run`: the run itself (its
-  // rows counted, frames dumped, records taken), not the equilibration. Returns its seconds.
-  double phase(const char* name, std::int64_t steps, const Berendsen* b, bool run) {
-    thermo_.row(name, sys_);
-    if (run && c_.dump_every > 0) frame();
-    Progress progress(fmt::format("dpd {}", name), steps, quiet_);
-    progress.show_rate(static_cast<double>(sys_.particles().size()), "particle-steps");
-    const auto start = std::chrono::steady_clock::now();
-    const std::int64_t stride = run && recorder ? c_.analysis.every : c_.thermo;
-    for (std::int64_t done = 0; done < steps;) {
-      const std::int64_t chunk = std::min<std::int64_t>(stride, steps - done);
-      sys_.advance(static_cast<int>(chunk), c_.dt, b);
-      done += chunk;
-      if (run && recorder) recorder->record(sys_);
-      if (done % c_.thermo != 0 && done != steps) continue;
-      thermo_.row(name, sys_);
-      if (run) {
-        tsum += sys_.temperature(), ++tcount;
-        add_row();
-      }
-      if (run && c_.dump_every > 0 && done % c_.dump_every == 0) frame();
-      progress.update(done);
-    }
-    progress.finish();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  // The run's row of the system as it stands (its start, then every thermo row).
-  void add_row() {
-    row_step.push_back(static_cast<double>(sys_.step()));
-    row_energy.push_back(sys_.total_energy());
-    row_kinetic.push_back(sys_.kinetic_energy());
-  }
-
-  std::unique_ptr<Recorder> recorder;  // the run's analysis records
-  double tsum = 0;  // kinetic temperature summed over the run's thermo rows
-  long tcount = 0;
-  std::vector<double> row_step, row_energy, row_kinetic;  // the run's rows, for the drift
-
- private:
-  void frame() {
-    if (c_.analysis.cna_lattice > 0) {
-      structure_ = common_neighbour_analysis(sys_.particles(), sys_.domain(), c_.analysis.cna_lattice);
-      write_lammps_dump(dump_, sys_.step(), sys_.particles(), sys_.domain(), &structure_);
-    } else {
-      write_lammps_dump(dump_, sys_.step(), sys_.particles(), sys_.domain());
-    }
-  }
-
-  const DpdConfig& c_;
-  System& sys_;
-  Thermo thermo_;
-  std::ofstream dump_;
-  std::vector<std::uint8_t> structure_;
-  bool quiet_;
-};
 
 // The run's start after the equilibration: rigid groups at their velocities, in
 // build_system's order (blocks, then regions), the free ones then moving by their forces;
@@ -195,10 +133,8 @@ void start_run(const DpdConfig& c, System& sys) {
 // Drift: least-squares slope of the total energy over the run's rows, per 1000 steps,
 // over the mean kinetic energy (the rows' scatter is velocity Verlet's O(dt^2) wobble);
 // 0 unless DPDE.
-double energy_drift(const RunLog& log, bool energy_conserving) {
-  const std::vector<double>& row_step = log.row_step;
-  const std::vector<double>& row_energy = log.row_energy;
-  const std::vector<double>& row_kinetic = log.row_kinetic;
+double energy_drift(const std::vector<double>& row_step, const std::vector<double>& row_energy,
+                    const std::vector<double>& row_kinetic, bool energy_conserving) {
   double slope = 0, mean_k = 0;
   if (row_step.size() >= 2) {
     const double m = static_cast<double>(row_step.size());
@@ -221,13 +157,14 @@ struct RunStart {
 
 // run.json's figures of the run (the model, analysis and CNA are added after).
 toml::table run_record(const DpdConfig& c, const System& sys, const DpdRunSummary& r, const toml::table& deck_echo,
-                       int threads, double run_seconds, const RunStart& at) {
+                       int threads, double run_seconds, const RunStart& at, const RunControl& control) {
   const double e0 = at.energy, k0 = at.kinetic;
   const particles::Vec3& p0 = at.momentum;
   const std::int64_t step0 = at.step;
   const particles::Vec3 p1 = sys.momentum();
   toml::table rec{{"version", MPMX_VERSION},
                   {"command", "dpd"},
+                  {"status", control.interrupted() ? "interrupted" : "completed"},
                   {"deck_file", c.deck_file},
                   {"deck", deck_echo},
                   {"case", c.id},
@@ -262,68 +199,236 @@ toml::table run_record(const DpdConfig& c, const System& sys, const DpdRunSummar
                                {"momentum_start", vec(p0)},
                                {"momentum_end", vec(p1)},
                                {"from_step", step0}}}};
+  if (control.interrupted()) rec.insert("checkpoint", control.shown_checkpoint());
   return rec;
 }
+
+// One DPD run: the equilibration and the run phases with their tables, and the checkpoint
+// a Ctrl-C or SIGTERM (or --stop-after) writes at a record, which --resume reads back.
+// The checkpoint (app/run_control.hpp; kind dpd_run, counted in particles) holds the
+// phase, the system (dpd/checkpoint.cpp), and in the run phase the mover's state, the
+// analysis records, the run's start and the thermo rows' sums.
+class DpdRun {
+ public:
+  DpdRun(const DpdConfig& c, const std::string& dir, const toml::table& deck_echo, int threads,
+         const RunControlOptions& o, const MoverFactory& make_mover)
+      : c_(c), dir_(dir), deck_echo_(deck_echo), threads_(threads), make_mover_(make_mover),
+        control_(dir, "dpd_run", deck_echo, o), sys_(build_system(c, threads)) {}
+
+  DpdRunSummary run() {
+    namespace fs = std::filesystem;
+    const auto t0 = std::chrono::steady_clock::now();
+    if (control_.resuming()) control_.resume(sys_.particles().size(), [&](CheckpointIn& in) { load(in); });
+    fs::create_directories(dir_);
+    thermo_.emplace(control_.tables(), sys_);
+    if (c_.dump_every > 0) dump_ = &control_.tables().open("dump.lammpstrj");
+    if (phase_ == kEquilibrate) {
+      if (c_.equilibrate && c_.equilibrate_steps > 0) phase("equilibrate", c_.equilibrate_steps, &c_.berendsen);
+      if (!control_.interrupted()) begin_run();
+    }
+    double run_seconds = 0;
+    if (!control_.interrupted()) run_seconds = phase("run", c_.steps, nullptr);
+    return finish(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), run_seconds);
+  }
+
+ private:
+  enum Phase : std::int64_t { kEquilibrate = 0, kRun = 1 };
+
+  // The run's start: rigid groups at their velocities, the mover in place, the analysis's
+  // reference, energy and momentum from here.
+  void begin_run() {
+    start_run(c_, sys_);
+    if (make_mover_) {
+      mover_ = make_mover_(sys_);
+      sys_.set_mover(mover_.get());
+    }
+    if (c_.analysis.cna_lattice > 0) fcc_start_ = fcc_now();
+    if (c_.analysis.records()) recorder_ = std::make_unique<Recorder>(c_.analysis, sys_);
+    start_ = {sys_.total_energy(), sys_.kinetic_energy(), sys_.momentum(), sys_.step()};
+    phase_ = kRun;
+    add_row();
+  }
+
+  double fcc_now() const { return interior_fcc_fraction(sys_.particles(), sys_.domain(), c_.analysis.cna_lattice); }
+
+  // One phase of `steps` steps with thermo rows and progress; in the run phase, the rows
+  // counted, frames dumped and records taken. Stops at a record when asked to (the
+  // checkpoint written). Returns its seconds in this process.
+  double phase(const char* name, std::int64_t steps, const Berendsen* b) {
+    const bool run = phase_ == kRun;
+    const std::int64_t from = sys_.step() - (run ? start_.step : 0);
+    if (run) run_from_ = from;
+    if (from == 0) {
+      thermo_->row(name, sys_);
+      if (run && dump_) frame();
+    }
+    Progress progress(fmt::format("dpd {}", name), steps, control_.options().quiet, from);
+    progress.show_rate(static_cast<double>(sys_.particles().size()), "particle-steps");
+    const auto start = std::chrono::steady_clock::now();
+    const std::int64_t stride = run && recorder_ ? c_.analysis.every : c_.thermo;
+    std::int64_t done = from;
+    while (done < steps) {
+      const std::int64_t chunk = std::min<std::int64_t>(stride, steps - done);
+      sys_.advance(static_cast<int>(chunk), c_.dt, b);
+      done += chunk;
+      if (run && recorder_) recorder_->record(sys_);
+      if (done % c_.thermo == 0 || done == steps) {
+        thermo_->row(name, sys_);
+        if (run) {
+          tsum_ += sys_.temperature(), ++tcount_;
+          add_row();
+        }
+        if (run && dump_ && done % c_.dump_every == 0) frame();
+        progress.update(done);
+      }
+      if (done < steps && control_.stop_due(sys_.step())) {
+        control_.checkpoint(sys_.particles().size(), [&](CheckpointOut& w) { save(w); });
+        break;
+      }
+    }
+    progress.finish(done);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  // The run's row of the system as it stands (its start, then every thermo row).
+  void add_row() {
+    row_step_.push_back(static_cast<double>(sys_.step()));
+    row_energy_.push_back(sys_.total_energy());
+    row_kinetic_.push_back(sys_.kinetic_energy());
+  }
+
+  void frame() {
+    if (c_.analysis.cna_lattice > 0) {
+      structure_ = common_neighbour_analysis(sys_.particles(), sys_.domain(), c_.analysis.cna_lattice);
+      write_lammps_dump(*dump_, sys_.step(), sys_.particles(), sys_.domain(), &structure_);
+    } else {
+      write_lammps_dump(*dump_, sys_.step(), sys_.particles(), sys_.domain());
+    }
+  }
+
+  void save(CheckpointOut& w) const {
+    w.integer(phase_);
+    sys_.save(w.stream());
+    if (phase_ != kRun) return;
+    w.integer(mover_ ? 1 : 0);
+    if (mover_) mover_->save(w.stream());
+    w.integer(recorder_ ? 1 : 0);
+    if (recorder_) recorder_->save(w);
+    w.numbers({start_.energy, start_.kinetic, start_.momentum[0], start_.momentum[1], start_.momentum[2], fcc_start_,
+               tsum_});
+    w.integer(start_.step);
+    w.integer(tcount_);
+    for (const auto* v : {&row_step_, &row_energy_, &row_kinetic_}) w.numbers(*v);
+  }
+
+  // Every piece read aside and checked against the deck before the run takes it.
+  void load(CheckpointIn& in) {
+    const long long at_phase = in.offset();
+    const std::int64_t phase = in.integer();
+    if (phase != kEquilibrate && phase != kRun) throw in.refuse(at_phase, fmt::format("phase {}", phase));
+    const long long at_sys = in.offset();
+    try {
+      sys_.load(in.stream());
+    } catch (const InputError& e) {
+      throw in.refuse(at_sys, fmt::format("the DPD system: {}", e.what()));
+    }
+    const std::int64_t last = (c_.equilibrate ? c_.equilibrate_steps : 0) + c_.steps;
+    if (sys_.step() >= last)
+      throw in.refuse(at_sys, fmt::format("step {} is at or past the deck's last step {}", sys_.step(), last));
+    phase_ = static_cast<Phase>(phase);
+    if (phase_ != kRun) return;
+    const long long at_mover = in.offset();
+    if ((in.integer() != 0) != static_cast<bool>(make_mover_))
+      throw in.refuse(at_mover, "its DPD/MPM grid is not the deck's");
+    if (make_mover_) {
+      mover_ = make_mover_(sys_);
+      sys_.set_mover(mover_.get());
+      try {
+        mover_->load(in.stream());
+      } catch (const InputError& e) {
+        throw in.refuse(at_mover, e.what());
+      }
+    }
+    const long long at_rec = in.offset();
+    if ((in.integer() != 0) != c_.analysis.records()) throw in.refuse(at_rec, "its analysis is not the deck's");
+    if (c_.analysis.records()) recorder_ = std::make_unique<Recorder>(Recorder::load(c_.analysis, sys_, in));
+    const long long at_start = in.offset();
+    const auto k = in.numbers();
+    if (k.size() != 7) throw in.refuse(at_start, "the run's start is not 7 numbers");
+    start_ = {k[0], k[1], {k[2], k[3], k[4]}, in.integer()};
+    fcc_start_ = k[5], tsum_ = k[6];
+    tcount_ = in.integer();
+    if (start_.step < 0 || start_.step > sys_.step() || tcount_ < 0)
+      throw in.refuse(at_start, fmt::format("the run's start at step {} with {} rows", start_.step, tcount_));
+    for (auto* v : {&row_step_, &row_energy_, &row_kinetic_}) *v = in.numbers();
+  }
+
+  DpdRunSummary finish(double wall_seconds, double run_seconds) {
+    DpdRunSummary r;
+    const double n = static_cast<double>(sys_.particles().size());
+    const std::int64_t run_steps = phase_ == kRun ? sys_.step() - start_.step : 0;
+    r.particles = static_cast<long>(n);
+    r.steps = static_cast<long>(run_steps);
+    r.wall_seconds = wall_seconds;
+    r.particle_steps_per_second = run_seconds > 0 ? n * static_cast<double>(run_steps - run_from_) / run_seconds : 0.0;
+    r.energy_drift = energy_drift(row_step_, row_energy_, row_kinetic_, c_.params.energy_conserving);
+    r.temperature = tcount_ > 0 ? tsum_ / tcount_ : sys_.temperature();
+    r.interrupted = control_.interrupted();
+    r.step = sys_.step();
+    r.last_step = (c_.equilibrate ? c_.equilibrate_steps : 0) + c_.steps;
+
+    toml::table rec = run_record(c_, sys_, r, deck_echo_, threads_, run_seconds, start_, control_);
+    toml::table model{{"name", c_.continuum.on ? "dpd_mpm_concurrent" : mover_ ? "dpd_mpm_grid" : "dpd_only"}};
+    if (mover_) mover_->report(model);
+    rec.insert("model", model);
+    if (recorder_) {
+      recorder_->write(dir_);
+      rec.insert("analysis", recorder_->summary());
+      r.wave_speed = recorder_->wave_speed();
+      r.initial_slope = recorder_->initial_slope();
+      r.peak_stress = recorder_->peak_stress();
+      r.peak_strain = recorder_->peak_strain();
+    }
+    if (c_.analysis.cna_lattice > 0 && phase_ == kRun) {
+      r.fcc_start = fcc_start_;
+      r.fcc_end = fcc_now();
+      rec.insert("cna", toml::table{{"lattice_constant_A", c_.analysis.cna_lattice},
+                                    {"interior_fcc_fraction_start", r.fcc_start},
+                                    {"interior_fcc_fraction_end", r.fcc_end}});
+    }
+    std::ostringstream os;
+    os << toml::json_formatter{rec} << '\n';
+    io::write_file_atomic((std::filesystem::path(dir_) / "run.json").string(), os.str());
+    if (!r.interrupted) control_.finished();
+    return r;
+  }
+
+  const DpdConfig& c_;
+  std::string dir_;
+  const toml::table& deck_echo_;
+  int threads_;
+  const MoverFactory& make_mover_;
+  RunControl control_;
+  System sys_;
+  Phase phase_ = kEquilibrate;
+  std::unique_ptr<Mover> mover_;
+  std::unique_ptr<Recorder> recorder_;
+  std::optional<Thermo> thermo_;
+  std::ofstream* dump_ = nullptr;
+  std::vector<std::uint8_t> structure_;
+  RunStart start_;
+  double fcc_start_ = -1;
+  double tsum_ = 0;  // kinetic temperature summed over the run's thermo rows
+  std::int64_t tcount_ = 0;
+  std::int64_t run_from_ = 0;  // the run phase's steps before this process
+  std::vector<double> row_step_, row_energy_, row_kinetic_;  // the run's rows, for the drift
+};
 
 }  // namespace
 
 DpdRunSummary run_dpd(const DpdConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads,
-                      bool quiet, const MoverFactory& make_mover) {
-  namespace fs = std::filesystem;
-  fs::create_directories(out_dir);
-  const auto t0 = std::chrono::steady_clock::now();
-  System sys = build_system(c, threads);
-  const double n = static_cast<double>(sys.particles().size());
-  RunLog log(c, sys, out_dir, quiet);
-
-  if (c.equilibrate && c.equilibrate_steps > 0) log.phase("equilibrate", c.equilibrate_steps, &c.berendsen, false);
-  // The run: rigid groups at their velocities, energy and momentum from here.
-  DpdRunSummary r;
-  start_run(c, sys);
-  std::unique_ptr<Mover> mover;
-  if (make_mover) {
-    mover = make_mover(sys);
-    sys.set_mover(mover.get());
-  }
-  double fcc_start = -1;
-  auto fcc_now = [&] { return interior_fcc_fraction(sys.particles(), sys.domain(), c.analysis.cna_lattice); };
-  if (c.analysis.cna_lattice > 0) fcc_start = fcc_now();
-  if (c.analysis.records()) log.recorder = std::make_unique<Recorder>(c.analysis, sys);
-  const RunStart start{sys.total_energy(), sys.kinetic_energy(), sys.momentum(), sys.step()};
-  log.add_row();
-  const double run_seconds = log.phase("run", c.steps, nullptr, true);
-  const auto t1 = std::chrono::steady_clock::now();
-
-  r.particles = static_cast<long>(n);
-  r.steps = static_cast<long>(c.steps);
-  r.wall_seconds = std::chrono::duration<double>(t1 - t0).count();
-  r.particle_steps_per_second = run_seconds > 0 ? n * c.steps / run_seconds : 0.0;
-  r.energy_drift = energy_drift(log, c.params.energy_conserving);
-  r.temperature = log.tcount > 0 ? log.tsum / log.tcount : sys.temperature();
-
-  toml::table rec = run_record(c, sys, r, deck_echo, threads, run_seconds, start);
-  toml::table model{{"name", c.continuum.on ? "dpd_mpm_concurrent" : mover ? "dpd_mpm_grid" : "dpd_only"}};
-  if (mover) mover->report(model);
-  rec.insert("model", model);
-  if (log.recorder) {
-    log.recorder->write(out_dir);
-    rec.insert("analysis", log.recorder->summary());
-    r.wave_speed = log.recorder->wave_speed();
-    r.initial_slope = log.recorder->initial_slope();
-    r.peak_stress = log.recorder->peak_stress();
-    r.peak_strain = log.recorder->peak_strain();
-  }
-  if (c.analysis.cna_lattice > 0) {
-    r.fcc_start = fcc_start;
-    r.fcc_end = fcc_now();
-    rec.insert("cna", toml::table{{"lattice_constant_A", c.analysis.cna_lattice},
-                                  {"interior_fcc_fraction_start", r.fcc_start},
-                                  {"interior_fcc_fraction_end", r.fcc_end}});
-  }
-  std::ostringstream os;
-  os << toml::json_formatter{rec} << '\n';
-  io::write_file_atomic((fs::path(out_dir) / "run.json").string(), os.str());
-  return r;
+                      const RunControlOptions& o, const MoverFactory& make_mover) {
+  return DpdRun(c, out_dir, deck_echo, threads, o, make_mover).run();
 }
 
 }  // namespace mpmx::app::dpd

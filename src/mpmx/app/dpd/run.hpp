@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 
 #include "mpmx/app/dpd/config.hpp"
+#include "mpmx/app/run_control.hpp"
 #include "mpmx/dpd/mover.hpp"
 #include "mpmx/dpd/system.hpp"
 
@@ -34,9 +35,13 @@ struct DpdRunSummary {
   // run's start and end.
   double wave_speed = std::nan(""), initial_slope = std::nan(""), peak_stress = std::nan(""), peak_strain = std::nan("");
   double fcc_start = std::nan(""), fcc_end = std::nan("");
+  bool interrupted = false;  // stopped on Ctrl-C, SIGTERM or stop_after: a checkpoint written
+  std::int64_t step = 0, last_step = 0;  // the system's step where it ended, and the deck's last
 };
 
+// Ctrl-C or SIGTERM stops it at the next record with a checkpoint, from which
+// `options.resume` continues bit-for-bit (app/run_control.hpp).
 DpdRunSummary run_dpd(const DpdConfig& config, const std::string& out_dir, const toml::table& deck_echo,
-                      int threads = 1, bool quiet = false, const MoverFactory& mover = {});
+                      int threads = 1, const RunControlOptions& options = {}, const MoverFactory& mover = {});
 
 }  // namespace mpmx::app::dpd

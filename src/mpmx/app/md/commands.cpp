@@ -15,6 +15,7 @@
 #include "mpmx/app/md/lammps_bar.hpp"
 #include "mpmx/app/md/lammps_jet.hpp"
 #include "mpmx/app/md/run.hpp"
+#include "mpmx/app/run_folder.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/io/deck.hpp"
@@ -95,8 +96,9 @@ void add_md_commands(CLI::App& app) {
   auto* md = app.add_subcommand("md", "Run an MD-only deck (fcc crystal, EAM/LJ/Sutton-Chen, NVE)");
   struct Args {
     std::string deck, out;
-    bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false;
+    bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false, resume = false;
     int ranks = 1, threads = 1;
+    std::int64_t stop_after = 0;
   };
   auto args = std::make_shared<Args>();
   md->add_option("deck", args->deck, "MD deck (TOML)")->required();
@@ -107,6 +109,10 @@ void add_md_commands(CLI::App& app) {
                "validate the deck, the potential file and the memory and work estimates; write nothing");
   md->add_flag("--quiet", args->quiet, "no progress line");
   md->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
+  md->add_flag("--resume", args->resume,
+               "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit)");
+  // For tests: stop as if interrupted at the first record at or past step N.
+  md->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   auto* lammps = md->add_flag("--lammps", args->lammps,
                               "bar and jet decks: run the sample through LAMMPS (lmp) instead of mpmx's MD; "
                               "inputs in OUT/lammps/, binned stress in OUT/bar_stress_lammps.csv or "
@@ -150,6 +156,7 @@ void add_md_commands(CLI::App& app) {
       if (!config.jet && !config.bar)
         throw InputError(
             fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", args->deck));
+      if (args->resume) throw InputError("--resume continues mpmx's own MD, not a --lammps run");
       io::run_staged(out, [&](const std::string& dir) {
         if (config.jet) run_jet_lammps(config, out, dir, args->lammps_write_only, args->ranks);
         else run_bar_lammps(args->deck, config, out, dir, args->lammps_write_only, args->ranks);
@@ -157,8 +164,16 @@ void add_md_commands(CLI::App& app) {
       });
       return;
     }
-    const auto r = io::run_staged(
-        out, [&](const std::string& dir) { return md::run_md(config, dir, deck.table(), args->quiet); });
+    RunControlOptions o;
+    o.quiet = args->quiet;
+    o.resume = args->resume;
+    o.stop_after = args->stop_after;
+    o.out = out;
+    const auto r = run_resumable(out, args->resume,
+                                 [&](const std::string& dir) { return md::run_md(config, dir, deck.table(), o); });
+    if (r.interrupted)
+      throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx md {} --out {} --resume", r.step,
+                                    r.last_step, checkpoint_path(out), args->deck, out));
     fmt::print("{} atoms, {} steps, {:.3g} s, {:.4g} atom-steps/s, PE {:.6f} eV/atom -> {}/run.json\n", r.atoms,
                r.steps, r.wall_seconds, r.atom_steps_per_second, r.potential_energy_per_atom, out);
   });

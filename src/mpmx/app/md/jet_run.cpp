@@ -161,9 +161,16 @@ toml::table jet_table(const MdConfig& c, const JetGeometry& geo, const BinGrid& 
 }  // namespace
 
 std::string run_jet(const MdConfig& c, const Potential& pot, const std::string& out_dir, MdRunSummary& r,
-                    toml::table& rec, bool quiet) {
+                    toml::table& rec, RunControl& control, bool quiet) {
   JetGeometry geo;
   System sys = build_jet(c.jet_config, pot, c.options, &geo);
+  JetTrack track;
+  if (control.resuming()) {
+    const Tracked t = resume_md(control, sys, c.steps);
+    if (t.size() != 4 || t[0].size() != 1 || t[1].size() != t[2].size() || t[1].size() != t[3].size())
+      throw InputError(fmt::format("{}/checkpoint.bin: its jet track is not one a jet run writes", out_dir));
+    track.peak = t[0][0], track.times = t[1], track.front_x = t[2], track.compressions = t[3];
+  }
   const BinGrid grid = jet_grid(geo, c.jet_bins[0], c.jet_bins[1]);
   BinGrid colgrid = grid;
   colgrid.ny = 1, colgrid.dy = geo.ly;
@@ -171,16 +178,15 @@ std::string run_jet(const MdConfig& c, const Potential& pot, const std::string& 
   fs::create_directories(fs::path(out_dir) / "bins");   // only once the sample is built
   fs::create_directories(fs::path(out_dir) / "vtk");
   io::vtk::Series series((fs::path(out_dir) / "md_bins.pvd").string());
-  std::ofstream profile(fs::path(out_dir) / "jet_profile.csv"), fronts(fs::path(out_dir) / "jet_front.csv"),
-      thermo(fs::path(out_dir) / "thermo.csv");
-  profile << "step,time_ps,ix,x_A,atoms,density_g_cm3,vx_km_s,sxx_GPa\n";
-  fronts << "step,time_ps,front_x_A,notch_tip_x_A,peak_compression_GPa\n";
-  thermo << "step,time_ps,pe_per_atom_eV,ke_per_atom_eV,etotal_per_atom_eV,temperature_K\n";
-  std::ofstream dump;
-  if (c.dump_every > 0) dump.open(fs::path(out_dir) / "dump.lammpstrj");
+  if (control.resuming()) series.restore_up_to(sys.time());
+  RunTables& tables = control.tables();
+  std::ofstream& profile = tables.open("jet_profile.csv", "step,time_ps,ix,x_A,atoms,density_g_cm3,vx_km_s,sxx_GPa\n");
+  std::ofstream& fronts = tables.open("jet_front.csv", "step,time_ps,front_x_A,notch_tip_x_A,peak_compression_GPa\n");
+  std::ofstream& thermo =
+      tables.open("thermo.csv", "step,time_ps,pe_per_atom_eV,ke_per_atom_eV,etotal_per_atom_eV,temperature_K\n");
+  std::ofstream* dump = c.dump_every > 0 ? &tables.open("dump.lammpstrj") : nullptr;
 
   const double n = static_cast<double>(sys.atoms().size());
-  JetTrack track;
   std::string stopped;
   auto record = [&] {
     const Atoms a = sys.snapshot();
@@ -212,26 +218,32 @@ std::string run_jet(const MdConfig& c, const Potential& pot, const std::string& 
       stopped = fmt::format("step {}: the state went non-finite (potential energy {} eV/atom, kinetic {} eV/atom)",
                             sys.step(), pe, ke);
   };
-  record();
-  if (c.dump_every > 0) write_lammps_dump(dump, sys.step(), sys.snapshot(), sys.box());
-  Progress progress("md jet", c.steps, quiet);
+  if (!control.resuming()) {
+    record();
+    if (dump) write_lammps_dump(*dump, sys.step(), sys.snapshot(), sys.box());
+  }
+  const std::int64_t first = sys.step();
+  Progress progress("md jet", c.steps, quiet, first);
   progress.show_rate(n, "atom-steps");
   const auto t0 = std::chrono::steady_clock::now();
-  std::int64_t done = 0;
+  std::int64_t done = first;
   while (done < c.steps && stopped.empty()) {
     const std::int64_t chunk = std::min<std::int64_t>(c.jet_every, c.steps - done);
     sys.advance(static_cast<int>(chunk), c.dt);  // jet_every < INT_MAX (config)
     done += chunk;
     record();
-    if (c.dump_every > 0 && sys.step() % c.dump_every == 0)
-      write_lammps_dump(dump, sys.step(), sys.snapshot(), sys.box());
+    if (dump && sys.step() % c.dump_every == 0) write_lammps_dump(*dump, sys.step(), sys.snapshot(), sys.box());
     progress.update(done);
+    if (stopped.empty() && done < c.steps &&
+        stop_md_at(control, sys, {{track.peak}, track.times, track.front_x, track.compressions}))
+      break;
   }
   progress.finish(done);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.atoms = static_cast<long>(n);
   r.steps = static_cast<long>(sys.step());
-  r.atom_steps_per_second = secs > 0 ? n * static_cast<double>(sys.step()) / secs : 0.0;
+  r.atom_steps_per_second = secs > 0 ? n * static_cast<double>(sys.step() - first) / secs : 0.0;
+  r.step = sys.step(), r.last_step = c.steps;
   r.potential_energy_per_atom = sys.potential_energy() / n;
   r.stress_gpa = sys.stress_gpa();
   insert_jet_figures(c, geo, grid, track, rec);

@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "mpmx/app/md/config.hpp"
+#include "mpmx/app/md/checkpoint.hpp"
 #include "mpmx/md/bins2d.hpp"
 #include "mpmx/md/jet.hpp"
 
@@ -30,9 +31,10 @@ double shock_front(const BinFields& columns, double piston_face, double up_A_ps)
 double shock_speed(const std::vector<double>& t, const std::vector<double>& front, double piston_face,
                    double notch_tip0, double up_A_ps, double column_width);
 
-// Runs it; returns "" or, when the state went non-finite, why the run stopped.
+// Runs it (or, on a resumed run, continues it from its checkpoint); returns "" or, when
+// the state went non-finite, why the run stopped.
 std::string run_jet(const MdConfig& c, const Potential& pot, const std::string& out_dir, MdRunSummary& r,
-                    toml::table& rec, bool quiet);
+                    toml::table& rec, RunControl& control, bool quiet);
 
 // The grid of bins over a jet sample: nx x ny over [x0, x0 + length) x [0, ly).
 BinGrid jet_grid(const JetGeometry& g, int nx, int ny);

@@ -73,12 +73,13 @@ toml::table lattice_scan(const MdConfig& c, const Potential& pot) {
 // Direct-MD bar: slab stress over time in bar_stress.csv (long format).
 // Returns "" or, when the state went non-finite, why the run stopped.
 std::string run_bar(const MdConfig& c, const Potential& pot, const std::string& out_dir, MdRunSummary& r,
-                    toml::table& rec) {
+                    toml::table& rec, RunControl& control) {
   namespace fs = std::filesystem;
   Bar bar(c.bar_config, pot, c.options);
+  if (control.resuming()) resume_md(control, bar.system(), c.steps);
   fs::create_directories(out_dir);  // only once the bar is built: a bad deck leaves nothing
-  std::ofstream csv(fs::path(out_dir) / "bar_stress.csv");
-  csv << "step,time_ps,bin,x_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n";
+  std::ofstream& csv =
+      control.tables().open("bar_stress.csv", "step,time_ps,bin,x_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n");
   auto rows = [&] {
     const auto s = bar.slab_stress_gpa();
     const auto x = bar.slab_centres();
@@ -86,25 +87,28 @@ std::string run_bar(const MdConfig& c, const Potential& pot, const std::string& 
       csv << fmt::format("{},{:.6f},{},{:.6g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", bar.system().step(),
                          bar.system().time(), b, x[b], s[b][0], s[b][4], s[b][8], s[b][1], s[b][2], s[b][5]);
   };
-  rows();
+  if (!control.resuming()) rows();
   const auto t0 = std::chrono::steady_clock::now();
+  const std::int64_t first = bar.system().step();
   std::string stopped;
-  for (std::int64_t done = 0; done < c.steps;) {
+  for (std::int64_t done = first; done < c.steps;) {
     const std::int64_t chunk = std::min<std::int64_t>(c.bar_every, c.steps - done);
     bar.advance(static_cast<int>(chunk), c.dt);  // bar_every <= INT_MAX (config)
     done += chunk;
     rows();
     stopped = non_finite_state(bar.system(), bar.system().potential_energy());
     if (!stopped.empty()) break;
+    if (done < c.steps && stop_md_at(control, bar.system(), {})) break;
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const System& s = bar.system();
   const double n = static_cast<double>(s.atoms().size());
   r.atoms = static_cast<long>(n);
   r.steps = static_cast<long>(s.step());
-  r.atom_steps_per_second = secs > 0 ? n * static_cast<double>(s.step()) / secs : 0.0;
+  r.atom_steps_per_second = secs > 0 ? n * static_cast<double>(s.step() - first) / secs : 0.0;
   r.potential_energy_per_atom = s.potential_energy() / n;
   r.stress_gpa = s.stress_gpa();
+  r.step = s.step(), r.last_step = c.steps;
   rec.insert("bar", toml::table{{"wall_lo", s.walls().lo}, {"wall_hi", s.walls().hi},
                                 {"bins", c.bar_config.bins}, {"stress_csv", "bar_stress.csv"}});
   return stopped;
@@ -112,13 +116,14 @@ std::string run_bar(const MdConfig& c, const Potential& pot, const std::string& 
 
 // The keys every md run.json has; `extra` adds the run's own, then run.json is written
 // atomically, valid JSON even when the state went non-finite. `stopped`: why the physics
-// stopped the run ("" when it completed).
+// stopped the run ("" when it completed); an interrupted run names its checkpoint.
 void write_record(const MdConfig& c, const Potential& pot, const toml::table& deck_echo,
                   const MdRunSummary& r, toml::table extra, const std::string& out_dir,
-                  const std::string& stopped) {
+                  const std::string& stopped, const RunControl& control) {
+  const char* status = !stopped.empty() ? "stopped" : control.interrupted() ? "interrupted" : "completed";
   toml::table rec{{"version", MPMX_VERSION},
                   {"command", "md"},
-                  {"status", stopped.empty() ? "completed" : "stopped"},
+                  {"status", status},
                   {"deck_file", c.deck_file},
                   {"deck", deck_echo},
                   {"potential", pot.describe()},
@@ -131,38 +136,50 @@ void write_record(const MdConfig& c, const Potential& pot, const toml::table& de
                   {"potential_energy_per_atom", r.potential_energy_per_atom},
                   {"stress_gpa", matrix(r.stress_gpa)}};
   if (!stopped.empty()) rec.insert("error", stopped);
+  if (control.interrupted()) rec.insert("checkpoint", control.shown_checkpoint());
   for (auto&& [k, v] : extra) rec.insert_or_assign(k, std::move(v));
   io::write_file_atomic((std::filesystem::path(out_dir) / "run.json").string(), io::json_text(rec));
+  if (stopped.empty() && !control.interrupted()) control.finished();
   if (!stopped.empty()) throw RunError(fmt::format("{} (partial results in {})", stopped, out_dir));
 }
 
 }  // namespace
 
-MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::table& deck_echo, bool quiet) {
+MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::table& deck_echo,
+                    const RunControlOptions& o) {
   namespace fs = std::filesystem;
   const auto t0 = std::chrono::steady_clock::now();
+  RunControl control(out_dir, "md_run", deck_echo, o);
   const Potential pot(c.potential);
   if (c.bar || c.jet) {
     MdRunSummary r;
     toml::table rec;
-    const std::string stopped = c.bar ? run_bar(c, pot, out_dir, r, rec) : run_jet(c, pot, out_dir, r, rec, quiet);
+    const std::string stopped =
+        c.bar ? run_bar(c, pot, out_dir, r, rec, control) : run_jet(c, pot, out_dir, r, rec, control, o.quiet);
     r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    write_record(c, pot, deck_echo, r, std::move(rec), out_dir, stopped);
+    r.interrupted = control.interrupted();
+    write_record(c, pot, deck_echo, r, std::move(rec), out_dir, stopped, control);
     return r;
   }
   System sys(fcc(c.cells[0], c.cells[1], c.cells[2], c.lattice_constant, c.strain_x), pot, c.options);
+  const std::int64_t last_step = c.relax_steps + c.steps;
+  if (control.resuming()) {
+    resume_md(control, sys, last_step);
+  } else {
+    if (c.temperature > 0) sys.thermalize(c.temperature, c.seed, 0);
+    if (c.relax_steps > 0) advance_steps(sys, c.relax_steps, Mat3{}, c.dt);  // section 6.2
+    if (c.streaming) sys.add_streaming_velocity(c.velocity_gradient);
+  }
   // Only now, with the potential read and the system built: a bad deck or potential
   // leaves no output folder behind.
   fs::create_directories(out_dir);
-  if (c.temperature > 0) sys.thermalize(c.temperature, c.seed, 0);
-  if (c.relax_steps > 0) advance_steps(sys, c.relax_steps, Mat3{}, c.dt);  // section 6.2
-  if (c.streaming) sys.add_streaming_velocity(c.velocity_gradient);
   const double n = static_cast<double>(sys.atoms().size());
   std::string stopped;
 
-  std::ofstream csv(fs::path(out_dir) / "thermo.csv");
-  csv << "step,time_ps,pe_per_atom_eV,ke_per_atom_eV,etotal_per_atom_eV,temperature_K,"
-         "sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa,lx_A,ly_A,lz_A\n";
+  std::ofstream& csv = control.tables().open(
+      "thermo.csv",
+      "step,time_ps,pe_per_atom_eV,ke_per_atom_eV,etotal_per_atom_eV,temperature_K,"
+      "sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa,lx_A,ly_A,lz_A\n");
   auto row = [&] {
     const Mat3 s = sys.stress_gpa();
     const double pe = sys.potential_energy() / n, ke = sys.kinetic_energy() / n;
@@ -171,28 +188,28 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
                        sys.step(), sys.time(), pe, ke, pe + ke, sys.temperature(), s[0], s[4], s[8], s[1], s[2],
                        s[5], sys.box().lx, sys.box().ly, sys.box().lz);
   };
-  row();
-  std::ofstream dump;
-  if (c.dump_every > 0) {
-    dump.open(fs::path(out_dir) / "dump.lammpstrj");
-    write_lammps_dump(dump, sys.step(), sys.snapshot(), sys.box());
+  std::ofstream* dump = c.dump_every > 0 ? &control.tables().open("dump.lammpstrj") : nullptr;
+  if (!control.resuming()) {
+    row();
+    if (dump) write_lammps_dump(*dump, sys.step(), sys.snapshot(), sys.box());
   }
-  Progress progress("md", c.steps, quiet);
+  std::int64_t done = sys.step() - c.relax_steps;
+  Progress progress("md", c.steps, o.quiet, done);
   progress.show_rate(n, "atom-steps");
+  const std::int64_t first = done;
   const auto run_start = std::chrono::steady_clock::now();
-  std::int64_t done = 0;
   while (done < c.steps) {
     const std::int64_t chunk = std::min<std::int64_t>(c.thermo - sys.step() % c.thermo, c.steps - done);
     sys.advance(static_cast<int>(chunk), c.velocity_gradient, c.dt);
     done += chunk;
     if (sys.step() % c.thermo == 0 || done == c.steps) row();
     if (!stopped.empty()) break;
-    if (c.dump_every > 0 && sys.step() % c.dump_every == 0) write_lammps_dump(dump, sys.step(), sys.snapshot(), sys.box());
+    if (dump && sys.step() % c.dump_every == 0) write_lammps_dump(*dump, sys.step(), sys.snapshot(), sys.box());
     progress.update(done);
+    if (done < c.steps && stop_md_at(control, sys, {})) break;
   }
   const auto t1 = std::chrono::steady_clock::now();
   progress.finish(done);
-  csv.close();
 
   MdRunSummary r;
   r.atoms = static_cast<long>(n);
@@ -200,9 +217,11 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   r.steps = static_cast<long>(run_steps);
   r.wall_seconds = std::chrono::duration<double>(t1 - t0).count();
   const double run_seconds = std::chrono::duration<double>(t1 - run_start).count();
-  r.atom_steps_per_second = run_seconds > 0 ? n * static_cast<double>(run_steps) / run_seconds : 0.0;
+  r.atom_steps_per_second = run_seconds > 0 ? n * static_cast<double>(done - first) / run_seconds : 0.0;
   r.potential_energy_per_atom = sys.potential_energy() / n;
   r.stress_gpa = sys.stress_gpa();
+  r.interrupted = control.interrupted();
+  r.step = sys.step(), r.last_step = last_step;
 
   toml::table rec;
   rec.insert("relax_steps", static_cast<std::int64_t>(c.relax_steps));
@@ -213,8 +232,8 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
                                 {"xy", sys.box().xy}, {"xz", sys.box().xz}, {"yz", sys.box().yz}});
   rec.insert("neighbor_builds", sys.neighbor_builds());
   rec.insert("precision", c.options.mixed_precision ? "mixed" : "double");
-  if (c.scan_points > 0 && stopped.empty()) rec.insert("scan", lattice_scan(c, pot));
-  write_record(c, pot, deck_echo, r, std::move(rec), out_dir, stopped);
+  if (c.scan_points > 0 && stopped.empty() && !r.interrupted) rec.insert("scan", lattice_scan(c, pot));
+  write_record(c, pot, deck_echo, r, std::move(rec), out_dir, stopped, control);
   return r;
 }
 

@@ -1,11 +1,14 @@
 #pragma once
 // Runs an MD-only deck: builds the crystal, thermalises it, advances it (optionally
-// under a velocity gradient) and writes DIR/run.json and DIR/thermo.csv.
+// under a velocity gradient) and writes DIR/run.json and DIR/thermo.csv; or the deck's
+// bar or jet. Ctrl-C or SIGTERM stops it at the next record with a checkpoint
+// (run_control.hpp), from which --resume continues bit-for-bit.
 #include <string>
 
 #include <toml++/toml.h>
 
 #include "mpmx/app/md/config.hpp"
+#include "mpmx/app/md/checkpoint.hpp"
 
 namespace mpmx::app::md {
 
@@ -18,9 +21,11 @@ struct MdRunSummary {
   double atom_steps_per_second = 0;
   double potential_energy_per_atom = 0;
   Mat3 stress_gpa{};
+  bool interrupted = false;  // stopped on Ctrl-C, SIGTERM or stop_after: a checkpoint written
+  std::int64_t step = 0, last_step = 0;  // the system's step where it ended, and the deck's last
 };
 
 MdRunSummary run_md(const MdConfig& config, const std::string& out_dir, const toml::table& deck_echo,
-                    bool quiet = false);
+                    const RunControlOptions& options = {});
 
 }  // namespace mpmx::app::md

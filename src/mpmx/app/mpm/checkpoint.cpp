@@ -26,70 +26,8 @@ void each_array(Particles<Dim>& p, F&& f) {
 }
 }  // namespace
 
-void CheckpointOut::number(double v) { out_.write(reinterpret_cast<const char*>(&v), sizeof v); }
-void CheckpointOut::integer(std::int64_t v) { out_.write(reinterpret_cast<const char*>(&v), sizeof v); }
-void CheckpointOut::text(const std::string& s) {
-  integer(static_cast<std::int64_t>(s.size()));
-  out_.write(s.data(), static_cast<std::streamsize>(s.size()));
-}
-void CheckpointOut::numbers(const std::vector<double>& v) {
-  integer(static_cast<std::int64_t>(v.size()));
-  out_.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(double)));
-}
-
 io::CheckedKind run_checkpoint_kind(const std::string& deck_text, std::size_t points) {
   return {"mpm_run", 2, io::text_hash(deck_text), points};  // 2: a 2-D run keeps sigma_zz
-}
-
-long long CheckpointIn::offset() const {
-  const long long at = payload_offset(in_);
-  return at < 0 ? -1 : at + static_cast<long long>(base_);
-}
-InputError CheckpointIn::refuse(long long at, const std::string& why) const {
-  return InputError(fmt::format("checkpoint {}: byte {}: {}", name_, at, why));
-}
-void CheckpointIn::check(long long at, const char* what) {
-  if (!in_) throw refuse(at, fmt::format("the file ends inside {}: truncated", what));
-}
-double CheckpointIn::number() {
-  const long long at = offset();
-  double v = 0;
-  in_.read(reinterpret_cast<char*>(&v), sizeof v);
-  check(at, "a number");
-  return v;
-}
-std::int64_t CheckpointIn::integer() {
-  const long long at = offset();
-  std::int64_t v = 0;
-  in_.read(reinterpret_cast<char*>(&v), sizeof v);
-  check(at, "an integer");
-  return v;
-}
-std::string CheckpointIn::text() {
-  const long long at = offset();
-  std::uint64_t n = 0;
-  try {
-    n = read_count(in_, 1, "text");
-  } catch (const InputError& e) {
-    throw refuse(at, e.what());
-  }
-  std::string s(static_cast<std::size_t>(n), '\0');
-  in_.read(s.data(), static_cast<std::streamsize>(n));
-  check(at, "a text");
-  return s;
-}
-std::vector<double> CheckpointIn::numbers() {
-  const long long at = offset();
-  std::uint64_t n = 0;
-  try {
-    n = read_count(in_, sizeof(double), "number list");
-  } catch (const InputError& e) {
-    throw refuse(at, e.what());
-  }
-  std::vector<double> v(static_cast<std::size_t>(n));
-  in_.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(double)));
-  check(at, "a number list");
-  return v;
 }
 
 template <int Dim>

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <optional>
 #include <set>
 #include <utility>
 
@@ -19,13 +18,13 @@
 #include "mpmx/app/mpm/run_summary.hpp"
 #include "mpmx/app/mpm/setup.hpp"
 #include "mpmx/app/mpm/vtk_output.hpp"
+#include "mpmx/app/run_folder.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/interrupt.hpp"
 #include "mpmx/core/progress.hpp"
 #include "mpmx/core/ranks.hpp"
 #include "mpmx/io/plot.hpp"
 #include "mpmx/io/run_record.hpp"
-#include "mpmx/io/staged_dir.hpp"
 #include "mpmx/mpm/nodal_fields.hpp"
 #include "mpmx/mpm/state_checks.hpp"
 #include "mpmx/mpm/step.hpp"
@@ -38,27 +37,6 @@ using namespace mpm;
 namespace {
 
 double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
-// Where this process writes (io/staged_dir.hpp): a fresh run in OUT/.staging, moved into
-// OUT once it ends; a resumed run where its checkpoint lies (OUT, or the staging folder
-// of a run that was killed before it ended). Under MPI the ranks agree on it after all
-// have looked, before rank 0 (the only writer) touches the folder.
-struct RunFolder {
-  bool checkpoints = false;  // a folder to write checkpoints (and everything else) into
-  std::optional<io::StagedDir> stage;
-  std::string dir;
-
-  explicit RunFolder(const RunOptions& o) : checkpoints(!o.out_dir.empty()) {
-    if (o.resume && !checkpoints) throw InputError("resuming needs the run's output directory");
-    const bool resume_staged = o.resume && !std::filesystem::exists(checkpoint_path(o.out_dir)) &&
-                               std::filesystem::exists(checkpoint_path(io::StagedDir::staging_of(o.out_dir)));
-    if (o.resume && !resume_staged && !std::filesystem::exists(checkpoint_path(o.out_dir)))
-      throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(o.out_dir)));
-    const bool staged = checkpoints && (!o.resume || ranks::max({resume_staged ? 1.0 : 0.0})[0] > 0.0);
-    if (staged && ranks::root()) stage.emplace(o.out_dir, o.resume);
-    dir = staged ? io::StagedDir::staging_of(o.out_dir) : o.out_dir;
-  }
-};
 
 // The steps at which a run records its fields and compares them with its reference
 // (dt = "cfl": the record times, each step landing on the next).
@@ -87,7 +65,7 @@ template <int Dim>
 class ContinuumRun {
  public:
   ContinuumRun(const MpmConfig& c, const RunOptions& o, RunResultOf<Dim>& r)
-      : c_(c), o_(o), r_(r), s_(r.state), folder_(o), schedule_(c), book_(rec_),
+      : c_(c), o_(o), r_(r), s_(r.state), folder_(o.out_dir, o.resume), schedule_(c), book_(rec_),
         comparison_(make_comparison<Dim>(c)) {
     if (!o.resume && !o.quiet && ranks::root() && c.material.spec)
       if (const std::string note = c.material.spec->build_note(); !note.empty())
@@ -298,7 +276,7 @@ class ContinuumRun {
       out_.reset();  // close the tables before plotting
       rec_.write(folder_.dir + "/run.json");
       if (failure_.empty() && !r_.interrupted) std::filesystem::remove(checkpoint_path(folder_.dir));
-      if (folder_.stage) folder_.stage->publish();
+      folder_.publish();
       if (failure_.empty() && !r_.interrupted && o_.plot && c_.plot) plot();
     }
     if (!failure_.empty()) throw RunError(failure_);
@@ -361,8 +339,6 @@ class ContinuumRun {
 };
 
 }  // namespace
-
-std::string checkpoint_path(const std::string& out_dir) { return out_dir + "/checkpoint.bin"; }
 
 template <int Dim>
 RunResultOf<Dim> run_mpm_dim(const MpmConfig& c, const RunOptions& o) {

@@ -10,6 +10,7 @@
 
 #include "mpmx/app/mpm/comparison.hpp"
 #include "mpmx/app/mpm/config.hpp"
+#include "mpmx/app/run_folder.hpp"
 #include "mpmx/mpm/state.hpp"
 
 namespace mpmx::app {
@@ -94,8 +95,5 @@ struct RunSummary {
 };
 // Runs a deck of any dimension (a convergence study when convergence.levels > 1).
 RunSummary run_any(const MpmConfig& c, const RunOptions& o);
-
-// The checkpoint of a run directory.
-std::string checkpoint_path(const std::string& out_dir);
 
 }  // namespace mpmx::app

@@ -49,11 +49,7 @@ void save_run_checkpoint(const std::string& path, const MpmConfig& c, const mpm:
   std::ostringstream table;
   table << rec.table();
   w.text(table.str());
-  w.integer(static_cast<std::int64_t>(marks.size()));
-  for (const auto& [name, bytes] : marks) {
-    w.text(name);
-    w.integer(bytes);
-  }
+  w.marks(marks);
   if (!f) throw RunError(fmt::format("cannot write the checkpoint {}", path));
   if (ranks::root()) io::write_checked(path, run_checkpoint_kind(deck_text(c), s.particles.size()), f.view());
 }
@@ -91,19 +87,8 @@ Output::Marks load_run_checkpoint(const std::string& path, const MpmConfig& c, m
   } catch (const toml::parse_error& e) {
     throw in.refuse(at_rec, fmt::format("its run record does not parse: {}", e.what()));
   }
-  Output::Marks marks;
-  for (std::int64_t k = in.integer(); k > 0; --k) {
-    const long long at_name = in.offset();
-    const std::string name = in.text();
-    // A table of the run directory itself: never a path that leads out of it.
-    if (name.empty() || name.find_first_of("/\\") != std::string::npos || name.front() == '.')
-      throw in.refuse(at_name, fmt::format("'{}' is not a table name of a run directory", name));
-    const long long at = in.offset();
-    const std::int64_t bytes = in.integer();
-    if (bytes < 0) throw in.refuse(at, fmt::format("a table length of {} bytes", bytes));
-    marks[name] = bytes;
-  }
-  if (f.peek() != std::char_traits<char>::eof()) throw in.refuse(in.offset(), "trailing bytes after the state");
+  const Output::Marks marks = in.marks();
+  in.end();
   return marks;
 }
 

@@ -1,0 +1,65 @@
+#include "mpmx/app/run_control.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "mpmx/app/run_folder.hpp"
+#include "mpmx/io/checked_file.hpp"
+
+namespace mpmx::app {
+
+namespace {
+
+std::string text_of(const toml::table& deck) {
+  std::ostringstream ss;
+  ss << deck;
+  return ss.str();
+}
+
+}  // namespace
+
+RunControl::RunControl(std::string dir, std::string_view kind, const toml::table& deck_echo,
+                       const RunControlOptions& o)
+    : dir_(std::move(dir)), kind_(kind), deck_text_(text_of(deck_echo)), o_(o), guard_(true) {
+  if (!o_.resume) tables_.emplace(dir_);
+}
+
+void RunControl::resume(std::uint64_t count, const std::function<void(CheckpointIn&)>& read) {
+  const std::string path = checkpoint_path(dir_);
+  std::istringstream f(io::read_checked(path, {kind_, 1, io::text_hash(deck_text_), count}), std::ios::binary);
+  CheckpointIn in(f, path, io::kCheckedHeaderBytes);
+  if (in.text() != deck_text_)
+    throw InputError(fmt::format("{} was written for another deck (the deck changed since); run afresh "
+                                 "without --resume",
+                                 path));
+  read(in);
+  TableMarks marks = in.marks();
+  in.end();
+  tables_.emplace(dir_, std::move(marks));
+}
+
+bool RunControl::stop_due(std::int64_t step) const {
+  return InterruptGuard::interrupted() || (o_.stop_after > 0 && step >= o_.stop_after);
+}
+
+void RunControl::checkpoint(std::uint64_t count, const std::function<void(CheckpointOut&)>& write) {
+  std::ostringstream f(std::ios::binary);
+  CheckpointOut w(f);
+  w.text(deck_text_);
+  write(w);
+  w.marks(tables_->marks());
+  if (!f) throw RunError(fmt::format("cannot write the checkpoint {}", checkpoint_path(dir_)));
+  io::write_checked(checkpoint_path(dir_), {kind_, 1, io::text_hash(deck_text_), count}, f.view());
+  interrupted_ = true;
+}
+
+std::string RunControl::shown_checkpoint() const { return checkpoint_path(o_.out.empty() ? dir_ : o_.out); }
+
+void RunControl::finished() const {
+  std::error_code ec;
+  std::filesystem::remove(checkpoint_path(dir_), ec);
+}
+
+}  // namespace mpmx::app

@@ -1,0 +1,25 @@
+#include "mpmx/app/run_folder.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/ranks.hpp"
+
+namespace mpmx::app {
+
+std::string checkpoint_path(const std::string& out_dir) { return out_dir + "/checkpoint.bin"; }
+
+RunFolder::RunFolder(const std::string& out, bool resume) : checkpoints(!out.empty()) {
+  namespace fs = std::filesystem;
+  if (resume && !checkpoints) throw InputError("resuming needs the run's output directory");
+  const bool resume_staged = resume && !fs::exists(checkpoint_path(out)) &&
+                             fs::exists(checkpoint_path(io::StagedDir::staging_of(out)));
+  if (resume && !resume_staged && !fs::exists(checkpoint_path(out)))
+    throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(out)));
+  const bool staged = checkpoints && (!resume || ranks::max({resume_staged ? 1.0 : 0.0})[0] > 0.0);
+  if (staged && ranks::root()) stage.emplace(out, resume);
+  dir = staged ? io::StagedDir::staging_of(out) : out;
+}
+
+}  // namespace mpmx::app

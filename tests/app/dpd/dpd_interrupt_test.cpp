@@ -1,0 +1,226 @@
+// ctest-label: slow
+// Ctrl-C or SIGTERM on `mpmx dpd`: the run stops at the next record with a checkpoint,
+// run.json "interrupted" and exit status 130; `--resume` (on another thread count) then
+// ends with every file an uninterrupted run writes, byte for byte (run.json less its
+// wall-clock figures): a DPDE crystal with a grip, stopped in its run or in its
+// equilibration, and a concurrent DPD/MPM rod with its grid, continuum points, free
+// flyer, tracks and profiles. A damaged checkpoint is refused (exit 2). `fit-dpd`, which
+// cannot resume, stops at once: exit 130, run.json "interrupted", its work hidden in
+// OUT/.staging and nothing else in OUT changed.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "app/interrupt_util.hpp"
+#include "cli_util.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using mpmx::test::run_cli;
+using mpmx::test::slurp;
+
+const mpmx::test::ScratchFolder kDir("mpmx_dpd_interrupt");
+
+std::string deck(const std::string& name, const std::string& text) { return kDir.file(name, text); }
+
+// A DPDE Cu crystal with a rigid grip pulled away, after a Berendsen start.
+std::string crystal(int steps) {
+  return fmt::format(R"([case]
+id = "dpd_interrupt"
+[potential]
+style = "morse"
+d0 = 2.7432
+alpha = 0.6794
+r0 = 5.732
+cutoff = 12.0
+[[block]]
+lattice = "fcc"
+constant = 7.23
+cells = [5, 4, 4]
+mass = 508.368
+[[rigid]]
+name = "grip"
+x = [0.0, 3.0]
+velocity = [-0.5, 0.0, 0.0]
+[box]
+boundary = ["f", "p", "p"]
+[dpd]
+ensemble = "dpde"
+gamma = 0.2
+temperature = 298.0
+heat_capacity_kB = 21.0
+seed = 5
+[equilibrate]
+tau = 0.5
+steps = 40
+[run]
+dt = 0.005
+steps = {}
+thermo = 20
+dump_every = 100
+)",
+                     steps);
+}
+
+// A concurrent DPD/MPM rod (D3 shrunk): continuum points on the left, a free flyer on the
+// right, the grid, tracks and displacement profiles.
+const std::string kConcurrent = R"([case]
+id = "dpd_concurrent_interrupt"
+[potential]
+style = "morse"
+d0 = 2.7432
+alpha = 0.6794
+r0 = 5.732
+cutoff = 12.0
+[[block]]
+lattice = "fcc"
+constant = 7.293
+cells = [10, 3, 3]
+mass = 508.368
+[[block]]
+lattice = "fcc"
+constant = 7.293
+cells = [2, 3, 3]
+origin = [76.58, 0, 0]
+mass = 508.368
+group = "flyer"
+velocity = [-5.0, 0, 0]
+free = true
+[box]
+size = [95.0, 21.879, 21.879]
+boundary = ["f", "f", "f"]
+[dpd]
+ensemble = "dpde"
+gamma = 0.2
+temperature = 298.0
+heat_capacity_kB = 21.0
+seed = 7
+[equilibrate]
+temperature = 298.0
+tau = 1.0
+steps = 20
+[run]
+dt = 0.005
+steps = 160
+thermo = 20
+dump_every = 80
+[grid]
+cell = 4.0
+margin = 40.0
+[continuum]
+x = [-100.0, 30.0]
+lattice_constant = 7.293
+[[track]]
+name = "near"
+x = [55.0, 62.0]
+[[track]]
+name = "far"
+x = [10.0, 20.0]
+[analysis]
+every = 5
+onset = 0.3
+onset_direction = -1
+wave_speed = ["near", "far"]
+[profile]
+bins = 6
+every = 40
+)";
+
+std::string whole_run(const std::string& d, const std::string& name) {
+  const fs::path whole = kDir / (name + "_whole");
+  const auto w = run_cli(fmt::format("dpd '{}' --quiet --no-plot --threads 2 --out '{}'", d, whole.string()));
+  EXPECT_EQ(w.status, 0) << w.output;
+  return whole.string();
+}
+
+void resume_and_compare(const std::string& d, const fs::path& whole, const fs::path& cut) {
+  const auto r = run_cli(fmt::format("dpd '{}' --quiet --no-plot --threads 1 --out '{}' --resume", d, cut.string()));
+  ASSERT_EQ(r.status, 0) << r.output;
+  mpmx::test::expect_same_folders(whole, cut);
+}
+
+TEST(DpdInterrupt, CtrlCInTheRunResumesToTheSameFiles) {
+  const std::string d = deck("crystal.toml", crystal(3000));
+  const fs::path whole = whole_run(d, "crystal"), cut = kDir / "crystal_cut";
+  const std::string log = (kDir / "crystal.log").string();
+  // Past the equilibration's 3 rows and a few of the run's.
+  const int status = mpmx::test::signal_when(
+      fmt::format("'{}' dpd '{}' --quiet --no-plot --threads 2 --out '{}'", MPMX_BINARY, d, cut.string()),
+      (cut / ".staging" / "thermo.csv").string(), 12, "INT", log);
+  ASSERT_EQ(status, 130) << slurp(log);
+  EXPECT_NE(slurp(log).find(fmt::format("written to {}/checkpoint.bin; continue with: mpmx dpd {} --out {} --resume",
+                                        cut.string(), d, cut.string())),
+            std::string::npos)
+      << slurp(log);
+  ASSERT_TRUE(fs::exists(cut / "checkpoint.bin"));
+  EXPECT_NE(slurp(cut / "run.json").find("\"status\" : \"interrupted\""), std::string::npos);
+  resume_and_compare(d, whole, cut);
+}
+
+TEST(DpdInterrupt, StoppedInTheEquilibrationResumesToTheSameFiles) {
+  const std::string d = deck("equilibrating.toml", crystal(100));
+  const fs::path whole = whole_run(d, "equilibrating"), cut = kDir / "equilibrating_cut";
+  const auto stop =
+      run_cli(fmt::format("dpd '{}' --quiet --no-plot --out '{}' --stop-after 20", d, cut.string()));
+  ASSERT_EQ(stop.status, 130) << stop.output;
+  EXPECT_NE(stop.output.find("step 20 of 140 written to"), std::string::npos) << stop.output;
+  resume_and_compare(d, whole, cut);
+}
+
+TEST(DpdInterrupt, TheConcurrentRodResumesToTheSameFiles) {
+  const std::string d = deck("concurrent.toml", kConcurrent);
+  const fs::path whole = whole_run(d, "concurrent"), cut = kDir / "concurrent_cut";
+  const auto stop =
+      run_cli(fmt::format("dpd '{}' --quiet --no-plot --out '{}' --stop-after 85", d, cut.string()));
+  ASSERT_EQ(stop.status, 130) << stop.output;
+  EXPECT_NE(stop.output.find("step 85 of 180 written to"), std::string::npos) << stop.output;
+  for (const char* f : {"tracks.csv", "profile.csv"}) EXPECT_TRUE(fs::exists(whole / f)) << f;
+  resume_and_compare(d, whole, cut);
+}
+
+TEST(DpdInterrupt, ADamagedCheckpointIsRefused) {
+  const std::string d = deck("damaged.toml", crystal(100));
+  const fs::path cut = kDir / "damaged";
+  ASSERT_EQ(run_cli(fmt::format("dpd '{}' --quiet --no-plot --out '{}' --stop-after 60", d, cut.string())).status,
+            130);
+  const fs::path ck = cut / "checkpoint.bin";
+  const std::string good = slurp(ck);
+  ASSERT_GT(good.size(), 1000u);
+  std::string bad = good;
+  bad[bad.size() / 3] ^= 0x01;
+  std::ofstream(ck, std::ios::binary | std::ios::trunc) << bad;
+  auto r = run_cli(fmt::format("dpd '{}' --quiet --no-plot --out '{}' --resume", d, cut.string()));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("the payload is damaged"), std::string::npos) << r.output;
+  std::ofstream(ck, std::ios::binary | std::ios::trunc) << good.substr(0, good.size() - 9);
+  r = run_cli(fmt::format("dpd '{}' --quiet --no-plot --out '{}' --resume", d, cut.string()));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("truncated"), std::string::npos) << r.output;
+  std::ofstream(ck, std::ios::binary | std::ios::trunc) << good;
+  r = run_cli(fmt::format("dpd '{}' --quiet --no-plot --out '{}' --resume", d, cut.string()));
+  EXPECT_EQ(r.status, 0) << r.output;
+}
+
+TEST(DpdInterrupt, FitDpdStopsAtOnceLeavingOutAsItWas) {
+  const fs::path out = kDir / "fit";
+  fs::create_directories(out);
+  std::ofstream(out / "earlier.csv") << "an earlier run's table\n";
+  const std::string log = (kDir / "fit.log").string();
+  const int status = mpmx::test::signal_when(
+      fmt::format("'{}' fit-dpd '{}/examples/D0_md_to_dpd_fit.toml' --threads 1 --out '{}'", MPMX_BINARY,
+                  MPMX_SOURCE_DIR, out.string()),
+      (out / ".staging").string(), 0, "INT", log);
+  ASSERT_EQ(status, 130) << slurp(log);
+  EXPECT_NE(slurp(log).find("fit-dpd stopped"), std::string::npos) << slurp(log);
+  EXPECT_NE(slurp(out / "run.json").find("\"status\" : \"interrupted\""), std::string::npos);
+  EXPECT_EQ(slurp(out / "earlier.csv"), "an earlier run's table\n");
+  EXPECT_TRUE(fs::is_directory(out / ".staging"));
+  EXPECT_FALSE(fs::exists(out / "isotherm.csv"));
+}
+
+}  // namespace
