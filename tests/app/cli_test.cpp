@@ -203,3 +203,26 @@ TEST(Cli, OutThatIsAFileIsRefusedByEveryCommand) {
 }
 
 }  // namespace
+
+// One front door: `mpmx check` reads the deck's kind from its tables and runs that kind's
+// check, with its estimate; a potential file is named as one.
+TEST(Cli, CheckTakesEveryKindOfDeck) {
+  const std::string ex = std::string(MPMX_SOURCE_DIR) + "/examples/";
+  struct Case {
+    const char* deck;
+    int status;
+    const char* says;
+  };
+  for (const Case& c : {Case{"M1_cu_energy_vs_lattice.toml", 0, "ok (md deck: 256 atoms"},
+                        Case{"J1_direct_md_tiny.toml", 0, "atom-steps/s (a box of its potential timed"},
+                        Case{"D1_flyer_dpd_only.toml", 0, "ok (dpd deck); 1.28e+04 particles"},
+                        Case{"D1_flyer_grid_4A.toml", 0, "ok (dpd deck)"},
+                        Case{"D0_md_to_dpd_fit.toml", 0, "ok (fit-dpd deck)"},
+                        Case{"A1_standing_wave_moving.toml", 0, "ok (case A1"},
+                        Case{"cu_sc_298K_morse.toml", 2, "a DPD potential file"}}) {
+    const Result r = mpmx_cli("check " + ex + c.deck);
+    EXPECT_EQ(r.status, c.status) << c.deck << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << c.deck << "\n" << r.output;
+    EXPECT_EQ(r.output.find("is missing"), std::string::npos) << c.deck << "\n" << r.output;
+  }
+}

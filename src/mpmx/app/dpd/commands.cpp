@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/app/cli_checks.hpp"
+#include "mpmx/app/deck_kind.hpp"
 #include "mpmx/app/commands.hpp"
 #include "mpmx/app/dpd/budget.hpp"
 #include "mpmx/app/dpd/config.hpp"
@@ -22,7 +23,33 @@
 
 namespace mpmx::app {
 
+namespace {
+
+// `dpd --check`, and `mpmx check` of a DPD deck: what the run checks before its work,
+// and its work estimate.
+void check_dpd(const std::string& path, bool force) {
+  auto deck = io::Deck::from_file(path);
+  const dpd::DpdConfig config = dpd::read_dpd_config(deck);
+  const dpd::DpdBudget budget = dpd::estimate_dpd(config);
+  dpd::check_dpd_work(budget, force);  // check refuses what the run would
+  fmt::print("{}: ok (dpd deck); {:.4g} particles, {:.4g} particle-steps ({}), about {} on one core at {:.2g} "
+             "particle-steps/s\n",
+             path, budget.particles, budget.particle_steps, budget.work_key, format_duration(budget.seconds()),
+             dpd::kDpdParticleStepsPerSecond);
+}
+
+// `fit-dpd --check`, and `mpmx check` of a fit deck.
+void check_fit(const std::string& path, bool) {
+  auto deck = io::Deck::from_file(path);
+  (void)dpd::read_fit_config(deck);
+  fmt::print("{}: ok (fit-dpd deck)\n", path);
+}
+
+}  // namespace
+
 void add_dpd_commands(CLI::App& app) {
+  register_deck_check(DeckKind::dpd, check_dpd);
+  register_deck_check(DeckKind::fit_dpd, check_fit);
   auto* dpd = app.add_subcommand("dpd", "Run a DPD / DPDE mesoparticle deck (Shardlow or velocity Verlet)");
   struct Args {
     std::string deck, out;
@@ -47,18 +74,11 @@ void add_dpd_commands(CLI::App& app) {
                 "the rigid groups (flyer, grips) start at rest: the undriven twin of the run, which "
                 "tools/plot/dpd_study.py subtracts to leave the wave alone");
   dpd->callback([args] {
+    if (args->check) return check_dpd(args->deck, args->force);
     auto deck = io::Deck::from_file(args->deck);
     dpd::DpdConfig config = dpd::read_dpd_config(deck);
     config.still = args->still;
-    const dpd::DpdBudget budget = dpd::estimate_dpd(config);
-    dpd::check_dpd_work(budget, args->force);  // check refuses what the run would
-    if (args->check) {
-      fmt::print("{}: ok; {:.4g} particles, {:.4g} particle-steps ({}), about {} on one core at {:.2g} "
-                 "particle-steps/s\n",
-                 args->deck, budget.particles, budget.particle_steps, budget.work_key,
-                 format_duration(budget.seconds()), dpd::kDpdParticleStepsPerSecond);
-      return;
-    }
+    dpd::check_dpd_work(dpd::estimate_dpd(config), args->force);
     const std::string out = out_dir_of(args->out, args->deck);
     const int threads = threads_of(args->threads);
     RunControlOptions o;
@@ -87,12 +107,9 @@ void add_dpd_commands(CLI::App& app) {
   fit->add_option("--threads", fargs->threads, "threads over the densities (default: all cores)");
   fit->add_flag("--check", fargs->check, "validate the deck and exit");
   fit->callback([fargs] {
+    if (fargs->check) return check_fit(fargs->deck, false);
     auto deck = io::Deck::from_file(fargs->deck);
     const dpd::FitConfig config = dpd::read_fit_config(deck);
-    if (fargs->check) {
-      fmt::print("{}: ok\n", fargs->deck);
-      return;
-    }
     const std::string out = out_dir_of(fargs->out, fargs->deck);
     const int threads = threads_of(fargs->threads);
     const auto r = io::run_staged(out, [&](const std::string& dir) {

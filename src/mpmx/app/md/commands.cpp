@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/app/cli_checks.hpp"
+#include "mpmx/app/deck_kind.hpp"
 #include "mpmx/app/commands.hpp"
 #include "mpmx/app/md/budget.hpp"
 #include "mpmx/app/md/config.hpp"
@@ -90,20 +91,47 @@ void run_jet_lammps(const md::MdConfig& c, const std::string& out, const std::st
              shown.string(), (fs::path(out) / "jet_stress_lammps.csv").string());
 }
 
+// `md --check`, and `mpmx check` of an md deck: every validation the run makes (deck,
+// potential file and its elements, memory always, work over a day unless `force`) and
+// the estimate at the rate of a 500-atom box of the deck's potential timed on this core.
+void check_md(const std::string& path, bool force) {
+  auto deck = io::Deck::from_file(path);
+  md::MdConfig config = md::read_md_config(deck);
+  config.options.threaded = true;
+  const md::Potential potential(config.potential);
+  const md::MdBudget budget = md::estimate_md(config, potential.cutoff());
+  md::check_md_budget(budget, physical_memory_bytes(), force);
+  md::SystemOptions one = config.options;
+  one.threaded = false;
+  double rate = md::measure_atom_steps_per_second(potential, one, config.lattice_constant, 5, config.temperature, 1,
+                                                  config.dt);
+  const bool measured = rate > 0;
+  if (!measured) rate = md::kMdAtomStepsPerSecond;
+  fmt::print("{}: ok (md deck: {:.4g} atoms, {} steps, about {} of memory, {:.3g} atom-steps, about {:.3g} h on one "
+             "core at {:.3g} atom-steps/s ({}))\n",
+             path, budget.atoms, config.steps, format_bytes(budget.bytes), budget.atom_steps,
+             budget.atom_steps / rate / 3600.0, rate,
+             measured ? "a box of its potential timed on this core just now" : "a typical figure");
+  if (budget.bins > 0)
+    fmt::print("  {:.4g} bins: about {} of bin tables and images over the run\n", budget.bins,
+               format_bytes(budget.output_bytes));
+}
+
 }  // namespace
 
 void add_md_commands(CLI::App& app) {
+  register_deck_check(DeckKind::md, check_md);
   auto* md = app.add_subcommand("md", "Run an MD-only deck (fcc crystal, EAM/LJ/Sutton-Chen, NVE)");
   struct Args {
     std::string deck, out;
     bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false, resume = false;
-    int ranks = 1, threads = 1;
+    int ranks = 1, threads = 0;  // all cores, as run and dpd
     std::int64_t stop_after = 0;
   };
   auto args = std::make_shared<Args>();
   md->add_option("deck", args->deck, "MD deck (TOML)")->required();
   md->add_option("--threads", args->threads,
-                 "OpenMP threads over the atoms, 0 for all cores (default 1; results are the same for any count)");
+                 "OpenMP threads over the atoms (default: all cores, as run and dpd; results are the same for any count)");
   md->add_option("--out", args->out, "output directory (default runs/<deck name>, as run)");
   md->add_flag("--check", args->check,
                "validate the deck, the potential file and the memory and work estimates; write nothing");
@@ -124,6 +152,7 @@ void add_md_commands(CLI::App& app) {
       ->check(whole_number(1, 1 << 20))
       ->needs(lammps);
   md->callback([args] {
+    if (args->check) return check_md(args->deck, args->force || args->lammps_write_only);
     auto deck = io::Deck::from_file(args->deck);
     md::MdConfig config = md::read_md_config(deck);  // parses the potential file too
     // mpmx md advances one large system: its threaded form (the same bits for any count).
@@ -133,24 +162,6 @@ void add_md_commands(CLI::App& app) {
     const md::MdBudget budget = md::estimate_md(config, potential.cutoff());
     // Memory always; work unless --force, or when only LAMMPS inputs are written.
     md::check_md_budget(budget, physical_memory_bytes(), args->force || args->lammps_write_only);
-    if (args->check) {
-      // The rate of a 500-atom box of the deck's potential on this core, timed now.
-      md::SystemOptions one = config.options;
-      one.threaded = false;
-      double rate = md::measure_atom_steps_per_second(potential, one, config.lattice_constant, 5,
-                                                      config.temperature, 1, config.dt);
-      const bool measured = rate > 0;
-      if (!measured) rate = md::kMdAtomStepsPerSecond;
-      fmt::print("{}: ok ({:.4g} atoms, {} steps, about {} of memory, {:.3g} atom-steps, about {:.3g} h on one "
-                 "core at {:.3g} atom-steps/s ({}))\n",
-                 args->deck, budget.atoms, config.steps, format_bytes(budget.bytes), budget.atom_steps,
-                 budget.atom_steps / rate / 3600.0, rate,
-                 measured ? "a box of its potential timed on this core just now" : "a typical figure");
-      if (budget.bins > 0)
-        fmt::print("  {:.4g} bins: about {} of bin tables and images over the run\n", budget.bins,
-                   format_bytes(budget.output_bytes));
-      return;
-    }
     const std::string out = out_dir_of(args->out, args->deck);
     if (args->lammps || args->lammps_write_only) {
       if (!config.jet && !config.bar)

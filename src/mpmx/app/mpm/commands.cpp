@@ -7,6 +7,7 @@
 #include <fmt/ranges.h>
 
 #include "mpmx/app/cli_checks.hpp"
+#include "mpmx/app/deck_kind.hpp"
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
@@ -96,13 +97,15 @@ void add_mpm_commands(CLI::App& app) {
                  100.0 * r.energy_growth, r.energy_grew ? " (past time.energy_growth: status energy_growth)" : "");
   });
 
-  CLI::App* check = app.add_subcommand("check", "validate a continuum deck without running it");
+  CLI::App* check = app.add_subcommand(
+      "check", "validate a deck of any kind (continuum, md, dpd, fit-dpd) and print its estimate, running nothing");
   check->add_option("deck", args->deck, "TOML deck")->required()->check(CLI::ExistingFile);
   check->add_flag("--force", args->force, "do not mention a work estimate over about a day (memory is always checked)");
   check->add_option("--ranks", args->ranks,
                     "estimate for a run over so many MPI ranks (md_closure boxes spread over them; default 1)")
       ->check(CLI::Range(1, 1 << 20));
   check->callback([args] {
+    if (check_deck_of_another_kind(args->deck, args->force)) return;  // md, dpd, fit-dpd: their own check
     const auto cfg = read_mpm_deck(args->deck);
     const auto budget = estimate_mpm(cfg, args->ranks);
     // A check refuses what cannot run here (memory); work over a day is said, not refused:
