@@ -147,3 +147,31 @@ TEST(MdClosure2d, SameParticlesOnOneAndTwoThreadsAndResumedBitForBit) {
   EXPECT_EQ(rest.steps, 4);
   test::expect_same_particles(two.state.particles, rest.state.particles);
 }
+
+// A resumed 2-D DDMP-MD run equals the uninterrupted one to the bit from a checkpoint at
+// every step, the first (right after the boxes' relaxation) included, with the boxes
+// shared, split and audited along the way (50 K: thermal boxes, eq. 7.11 on).
+TEST(MdClosure2d, ResumedFromEveryStepBitForBit) {
+  const int steps = 8;
+  const auto c = impact_2d(50.0, steps);
+  app::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  o.threads = 2;
+  const auto whole = app::run_mpm_dim<2>(c, o);
+  ASSERT_EQ(whole.steps, steps);
+  for (int k = 1; k < steps; ++k) {
+    o.out_dir = test::scratch_dir("md_closure_2d_every_step");
+    o.resume = false;
+    o.stop_after = k;
+    const auto first = app::run_mpm_dim<2>(c, o);
+    ASSERT_TRUE(first.interrupted) << k;
+    o.stop_after = 0;
+    o.resume = true;
+    const auto rest = app::run_mpm_dim<2>(c, o);
+    EXPECT_EQ(rest.steps, steps) << k;
+    EXPECT_EQ(rest.md_atom_steps, whole.md_atom_steps) << k;
+    test::expect_same_particles(whole.state.particles, rest.state.particles);
+    EXPECT_EQ(rest.state.particles.stress_zz, whole.state.particles.stress_zz) << k;
+  }
+}
