@@ -11,6 +11,7 @@
 #include "mpmx/app/dpd/budget.hpp"
 #include "mpmx/app/dpd/config.hpp"
 #include "mpmx/app/dpd/fit_run.hpp"
+#include "mpmx/app/dpd/preflight.hpp"
 #include "mpmx/app/dpd/run.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/io/deck.hpp"
@@ -43,8 +44,7 @@ void add_dpd_commands(CLI::App& app) {
     auto deck = io::Deck::from_file(args->deck);
     dpd::DpdConfig config = dpd::read_dpd_config(deck);
     config.still = args->still;
-    const dpd::DpdBudget budget = dpd::estimate_dpd(config);
-    dpd::check_dpd_work(budget, args->force);  // check refuses what the run would
+    const dpd::DpdBudget budget = dpd::preflight_dpd(config, args->force);  // --check refuses what the run would
     if (args->check) {
       fmt::print("{}: ok; {:.4g} particles, {:.4g} particle-steps ({}), about {} on one core at {:.2g} "
                  "particle-steps/s\n",
