@@ -55,7 +55,9 @@ struct RunFolder {
     if (o.resume && !resume_staged && !std::filesystem::exists(checkpoint_path(o.out_dir)))
       throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(o.out_dir)));
     const bool staged = checkpoints && (!o.resume || ranks::max({resume_staged ? 1.0 : 0.0})[0] > 0.0);
-    if (staged && ranks::root()) stage.emplace(o.out_dir, o.resume);
+    ranks::together([&] {  // a folder rank 0 cannot make stops every rank
+      if (staged && ranks::root()) stage.emplace(o.out_dir, o.resume);
+    });
     dir = staged ? io::StagedDir::staging_of(o.out_dir) : o.out_dir;
   }
 };
