@@ -27,7 +27,8 @@ FitConfig read_fit_config(io::Deck& deck) {
   io::Section pot = md.table("potential");
   c.md_potential = md::read_potential(pot, deck_dir);
   c.lattice_constant = md.number("lattice_constant");
-  md.positive("lattice_constant", c.lattice_constant);
+  md.check(c.lattice_constant >= 0.5 && c.lattice_constant <= 100, "lattice_constant",
+           "must lie in [0.5, 100] Angstrom (an atomic crystal's)");
   c.md.cells = md.integer_int("cells", 5, 2, 40);  // fcc cells per edge
   c.md.temperature = md.number("temperature");
   md.positive("temperature", c.md.temperature);
