@@ -80,6 +80,17 @@ TEST(FileMessages, FolderAsPotentialFileSaysItIsAFolder) {
   EXPECT_EQ(r.output.find("not found"), std::string::npos) << r.output;
 }
 
+TEST(FileMessages, FolderAsDpdPotentialFileSaysItIsAFolder) {
+  fs::create_directories(test::scratch_root() / "folder_potential.toml");
+  const auto deck = test::scratch_file("dpd_folder_potential.toml",
+                                       "[case]\nid = \"d\"\n[potential]\nfile = \"folder_potential.toml\"\n"
+                                       "[[block]]\nconstant = 7.23\ncells = [2, 2, 2]\nmass = 1.0\n[dpd]\ngamma = 0.2\n"
+                                       "temperature = 1.0\n[run]\ndt = 0.005\nsteps = 1\n");
+  const auto r = test::run_cli("dpd " + deck.string() + " --check");
+  EXPECT_EQ(r.status, exit_code::bad_input) << r.output;
+  EXPECT_HAS(r.output, "is a directory, not a potential file");
+}
+
 TEST(FileMessages, GarbagePotentialFileIsQuotedShortAndPrintable) {
   std::string junk = "comment 1\ncomment 2\ncomment 3\n1 Cu\n";
   for (int i = 0; i < 600; ++i) junk += static_cast<char>(i % 256 == 10 ? 1 : i % 256);

@@ -443,10 +443,10 @@ Deck::Deck(Deck&&) noexcept = default;
 Deck& Deck::operator=(Deck&&) noexcept = default;
 Deck::~Deck() = default;
 
-Deck Deck::from_file(const std::string& file) {
+Deck Deck::from_file(const std::string& file, std::string_view what) {
   namespace fs = std::filesystem;
-  if (file.empty()) throw InputError("deck: the file name is empty");
-  if (const std::string why = file_problem(file, "deck file"); !why.empty()) {
+  if (file.empty()) throw InputError(fmt::format("the {} name is empty", what));
+  if (const std::string why = file_problem(file, what); !why.empty()) {
     std::error_code ec;
     throw InputError(
         fmt::format("{}: {}{}", short_path(file), why, fs::is_directory(file, ec) ? " (give a .toml file)" : ""));

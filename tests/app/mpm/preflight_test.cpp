@@ -6,7 +6,10 @@
 // md_closure count past an int. `check` and `run` agree on every one.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
 
 #include "cli_util.hpp"
 #include "md/md_test_util.hpp"
@@ -143,6 +146,30 @@ TEST(MpmPreflight, CheckNamesAReferenceNotThereYetAndRunRefusesIt) {
     ADD_FAILURE() << "run accepted a reference that is not there";
   } catch (const InputError& e) {
     EXPECT_HAS(std::string(e.what()), "is not there yet");
+  }
+}
+
+// A 2-D direct-MD reference folder with no records (a header-only md_bins.pvd), or with
+// none at all: refused by both.
+TEST(MpmPreflight, HeaderOnly2dReferenceIsRefused) {
+  namespace fs = std::filesystem;
+  const fs::path empty = test::scratch_root() / "jet_ref_empty", header = test::scratch_root() / "jet_ref_header";
+  fs::create_directories(empty);
+  fs::create_directories(header / "bins");
+  std::ofstream(header / "md_bins.pvd") << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+                                           "<Collection>\n</Collection>\n</VTKFile>\n";
+  std::ofstream(header / "run.json") << "{\"jet\": {\"piston_face_A\": 1.0, \"x0_A\": 0.0, \"length_A\": 10.0, "
+                                        "\"ly_A\": 10.0}}\n";
+  for (const auto& [dir, why] : {std::pair<fs::path, std::string>{empty, "has no md_bins.pvd"}, {header, "lists no records"}}) {
+    auto c = test::deck_with(test::example("J2_ddmp_md_20x10_1ppc_tiny.toml"), [&](toml::table& t) {
+      t["reference"].as_table()->insert_or_assign("file", dir.string());
+    });
+    try {
+      app::preflight_mpm(c, 1, 0, true);
+      ADD_FAILURE() << "check accepted " << dir;
+    } catch (const InputError& e) {
+      EXPECT_HAS(std::string(e.what()), why);
+    }
   }
 }
 

@@ -42,7 +42,7 @@ PairPotential read_potential(io::Section s, const std::string& deck_dir) {
     std::filesystem::path path = s.string("file");
     if (path.is_relative() && !deck_dir.empty()) path = deck_dir / path;
     try {
-      io::Deck d = io::Deck::from_file(path.string());
+      io::Deck d = io::Deck::from_file(path.string(), "potential file");
       io::Section inner = d.root().table("potential");
       inner.check(!inner.has("file"), "file", "a potential file cannot name another");
       PairPotential p = inner.has("file") ? PairPotential{} : read_pair_potential(inner);

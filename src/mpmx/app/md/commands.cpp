@@ -127,6 +127,9 @@ void add_md_commands(CLI::App& app) {
     const md::MdBudget budget = md::estimate_md(config, potential.cutoff());
     // Memory always; work unless --force, or when only LAMMPS inputs are written.
     md::check_md_budget(budget, physical_memory_bytes(), args->force || args->lammps_write_only);
+    if ((args->lammps || args->lammps_write_only) && !config.jet && !config.bar)  // --check refuses it too
+      throw InputError(
+          fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", args->deck));
     if (args->check) {
       // The rate of a 500-atom box of the deck's potential on this core, timed now.
       md::SystemOptions one = config.options;
@@ -147,9 +150,6 @@ void add_md_commands(CLI::App& app) {
     }
     const std::string out = out_dir_of(args->out, args->deck);
     if (args->lammps || args->lammps_write_only) {
-      if (!config.jet && !config.bar)
-        throw InputError(
-            fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", args->deck));
       io::run_staged(out, [&](const std::string& dir) {
         if (config.jet) run_jet_lammps(config, out, dir, args->lammps_write_only, args->ranks);
         else run_bar_lammps(args->deck, config, out, dir, args->lammps_write_only, args->ranks);
