@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <new>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/core/ranks.hpp"
 #include "mpmx/md/potential/eam_one_type.hpp"
 #include "mpmx/core/isa.hpp"
@@ -142,6 +144,12 @@ int run(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     // The estimates refuse what cannot fit before anything runs; this is the last resort.
     return finish(code::internal, fmt::format("mpmx: out of memory while running `{}`\n", command_line(argc, argv)));
+  } catch (const std::filesystem::filesystem_error& e) {
+    // The inputs were checked before the work; a file system that fails later is the
+    // machine's (exit 1), said in words.
+    return finish(code::internal, fmt::format("mpmx: the file system failed: {} {}\n",
+                                              mpmx::short_path(e.path1().string()),
+                                              mpmx::path_problem(e.path1(), e.code())));
   } catch (const std::exception& e) {
     return finish(code::internal, fmt::format("mpmx: {}\n", e.what()));
   }

@@ -18,7 +18,9 @@ RunFolder::RunFolder(const std::string& out, bool resume) : checkpoints(!out.emp
   if (resume && !resume_staged && !fs::exists(checkpoint_path(out)))
     throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint_path(out)));
   const bool staged = checkpoints && (!resume || ranks::max({resume_staged ? 1.0 : 0.0})[0] > 0.0);
-  if (staged && ranks::root()) stage.emplace(out, resume);
+  ranks::together([&] {  // a folder rank 0 cannot make stops every rank
+    if (staged && ranks::root()) stage.emplace(out, resume);
+  });
   dir = staged ? io::StagedDir::staging_of(out) : out;
 }
 

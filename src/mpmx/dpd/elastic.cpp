@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/particles/lattice.hpp"
 
 namespace mpmx::dpd {
 
@@ -31,12 +32,11 @@ LatticeConstants fcc_born_constants(const PairPotential& pot, double a) {
                                  "would run over more than 100 cells per axis",
                                  a, rc));
   const int nmax = static_cast<int>(std::ceil(rc / a)) + 1;
-  static const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
   double c11 = 0, c12 = 0, c44 = 0, virial = 0;
   for (int i = -nmax; i <= nmax; ++i)
     for (int j = -nmax; j <= nmax; ++j)
       for (int k = -nmax; k <= nmax; ++k)
-        for (const auto& b : basis) {
+        for (const auto& b : particles::kFccBasis) {
           const double x = (i + b[0]) * a, y = (j + b[1]) * a, z = (k + b[2]) * a;
           const double r2 = x * x + y * y + z * z;
           if (r2 < 1e-12 || r2 >= rc * rc) continue;

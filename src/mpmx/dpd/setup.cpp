@@ -8,18 +8,17 @@
 #include "mpmx/core/units.hpp"
 #include "mpmx/dpd/pair_random.hpp"
 #include "mpmx/dpd/thermostat.hpp"
-#include "mpmx/particles/lattice.hpp"
-#include "mpmx/particles/rng.hpp"
 
 namespace mpmx::dpd {
 
 Particles fcc_block(const std::array<int, 3>& cells, double a, const particles::Vec3& origin, double mass, int type,
                     std::int64_t first_id) {
-  const particles::Crystal c = particles::fcc(cells[0], cells[1], cells[2], a, 0.0, type);
+  if (cells[0] < 1 || cells[1] < 1 || cells[2] < 1 || !(a > 0.0))
+    throw InputError(fmt::format("fcc block: cells {}x{}x{}, a = {}: need cells >= 1 and a > 0", cells[0], cells[1],
+                                 cells[2], a));
   Particles p;
-  for (std::size_t i = 0; i < c.atoms.size(); ++i)
-    p.push_back(origin[0] + c.atoms.x[i], origin[1] + c.atoms.y[i], origin[2] + c.atoms.z[i], mass, type,
-                first_id + static_cast<std::int64_t>(i));
+  std::int64_t id = first_id;
+  fcc_sites(cells, a, origin, [&](double x, double y, double z) { p.push_back(x, y, z, mass, type, id++); });
   return p;
 }
 
@@ -28,14 +27,9 @@ Particles random_block(long count, const particles::Vec3& size, const particles:
   if (count < 0 || !(size[0] > 0 && size[1] > 0 && size[2] > 0))
     throw InputError(fmt::format("random block: count {} in {} x {} x {}: need count >= 0 and a positive size",
                                  count, size[0], size[1], size[2]));
-  particles::RngStream rng(seed, 0);
   Particles p;
-  for (long i = 0; i < count; ++i) {
-    const double x = origin[0] + size[0] * rng.uniform();
-    const double y = origin[1] + size[1] * rng.uniform();
-    const double z = origin[2] + size[2] * rng.uniform();
-    p.push_back(x, y, z, mass, type, first_id + i);
-  }
+  std::int64_t id = first_id;
+  random_sites(count, size, origin, seed, [&](double x, double y, double z) { p.push_back(x, y, z, mass, type, id++); });
   return p;
 }
 

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 
 namespace mpmx::io {
 
@@ -442,21 +443,22 @@ Deck::Deck(Deck&&) noexcept = default;
 Deck& Deck::operator=(Deck&&) noexcept = default;
 Deck::~Deck() = default;
 
-Deck Deck::from_file(const std::string& file) {
+Deck Deck::from_file(const std::string& file, std::string_view what) {
   namespace fs = std::filesystem;
-  if (file.empty()) throw InputError("deck: the file name is empty");
-  std::error_code ec;
-  const auto st = fs::status(file, ec);
-  if (!fs::exists(st)) throw InputError(fmt::format("{}: no such deck file", file));
-  if (fs::is_directory(st))
-    throw InputError(fmt::format("{}: is a directory, not a deck file (give a .toml file)", file));
+  if (file.empty()) throw InputError(fmt::format("the {} name is empty", what));
+  if (const std::string why = file_problem(file, what); !why.empty()) {
+    std::error_code ec;
+    throw InputError(
+        fmt::format("{}: {}{}", short_path(file), why, fs::is_directory(file, ec) ? " (give a .toml file)" : ""));
+  }
   Deck d;
   d.name_ = file;
   try {
     d.table_ = std::make_unique<toml::table>(toml::parse_file(file));
   } catch (const toml::parse_error& e) {
     const auto& b = e.source().begin;
-    throw InputError(fmt::format("{}:{}:{}: {}", file, b.line, b.column, e.description()));
+    // The parser quotes the bytes it met: a binary file's are escaped, not sent to the terminal.
+    throw InputError(fmt::format("{}:{}:{}: {}", file, b.line, b.column, escape_unprintable(e.description())));
   }
   return d;
 }

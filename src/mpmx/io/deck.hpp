@@ -102,7 +102,8 @@ class Deck {
  public:
   // Parses the file; a syntax error throws InputError naming file, line and column; so
   // does a path that is missing or a directory.
-  static Deck from_file(const std::string& file);
+  // `what` names the file in those messages ("deck file", "potential file").
+  static Deck from_file(const std::string& file, std::string_view what = "deck file");
   static Deck from_string(std::string_view text, std::string name = "deck");
 
   Deck(Deck&&) noexcept;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 
 namespace mpmx::io {
 
@@ -19,6 +20,11 @@ StagedDir::StagedDir(std::string out, bool keep) : out_(std::move(out)), staging
   if (out_existed_ && !fs::is_directory(out_, ec))
     throw InputError(fmt::format("--out {}: exists and is not a directory", out_));
   if (!keep) fs::remove_all(staging_, ec);
+  // Made now, before the run's work: a folder that cannot be (read-only, a name too long)
+  // is bad input, said in words; a run that never writes removes it again.
+  if (fs::create_directories(staging_, ec); ec || !fs::is_directory(staging_, ec))
+    throw InputError(fmt::format("--out {}: cannot make the output folder: {}", short_path(out_),
+                                 path_problem(staging_, ec)));
 }
 
 void StagedDir::publish() {

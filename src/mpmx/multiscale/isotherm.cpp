@@ -5,6 +5,9 @@
 #include <limits>
 #include <numeric>
 
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/dpd/setup.hpp"
 #include "mpmx/dpd/system.hpp"
@@ -112,8 +115,12 @@ std::vector<IsothermPoint> dpd_isotherm(const dpd::PairPotential& pot,
 }
 
 double static_lattice_pressure(const dpd::PairPotential& pot, double a) {
-  static constexpr double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
   const double rc = dpd::cutoff(pot), rc2 = rc * rc;
+  // As the Born sums (dpd/elastic.cpp): at most 100 cells per axis, and the count an int.
+  if (!(a > 0) || !(rc / a <= 100))
+    throw InputError(fmt::format("static lattice pressure: lattice constant {} A against a cutoff of {} A: the "
+                                 "lattice sum would run over more than 100 cells per axis",
+                                 a, rc));
   const int m = static_cast<int>(std::ceil(rc / a)) + 1;
   double w = 0;  // sum over lattice vectors of r F(r) = r^2 (F/r)
   std::visit(
@@ -121,7 +128,7 @@ double static_lattice_pressure(const dpd::PairPotential& pot, double a) {
         for (int i = -m; i <= m; ++i)
           for (int j = -m; j <= m; ++j)
             for (int k = -m; k <= m; ++k)
-              for (const auto& b : basis) {
+              for (const auto& b : particles::kFccBasis) {
                 const double x = (i + b[0]) * a, y = (j + b[1]) * a, z = (k + b[2]) * a;
                 const double r2 = x * x + y * y + z * z;
                 if (r2 == 0 || r2 >= rc2) continue;

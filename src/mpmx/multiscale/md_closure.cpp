@@ -83,6 +83,8 @@ MdClosureProperties md_closure_properties(const md::PotentialSpec& spec, const u
 
 int MdClosureConfig::md_steps(double dt_continuum) const {
   const double steps = dt_continuum * units.time_ps / dt;
+  // A count past an int is not a step the boxes can take (they advance an int at a time).
+  if (!(steps < std::numeric_limits<int>::max())) return 0;
   const long k = std::lround(steps);
   return k >= 1 && std::abs(steps - k) <= 1e-6 * steps ? static_cast<int>(k) : 0;
 }

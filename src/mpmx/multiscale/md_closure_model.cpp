@@ -21,6 +21,9 @@ double MdClosureModel::wave_speed(int, double density, double) const { return st
 
 std::string MdClosureModel::time_step_problem(double dt) const {
   if (!(md.dt > 0) || md.md_steps(dt) > 0) return "";
+  if (const double steps = dt * md.units.time_ps / md.dt; steps >= std::numeric_limits<int>::max())
+    return fmt::format("is {:.4g} MD steps of material.md.dt = {} ps, more than the {} a macro step may take", steps,
+                       md.dt, std::numeric_limits<int>::max());
   return fmt::format("is {} ps, not a whole number of MD steps of material.md.dt = {} ps", dt * md.units.time_ps,
                      md.dt);
 }
@@ -83,7 +86,7 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   md.dt = s.number("dt", 0.001);
   s.positive("dt", md.dt);
   s.check(md.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
-  md.relax_steps = s.integer("relax_steps", 0, 0, std::numeric_limits<std::int64_t>::max());
+  md.relax_steps = s.integer("relax_steps", 0, 0, std::numeric_limits<int>::max());  // one advance of the box
   md.sample = s.choice("stress", {"last", "average"}, "last") == "last" ? multiscale::StressSample::last
                                                                         : multiscale::StressSample::average;
   md.skin = s.number("skin", 1.0);

@@ -11,7 +11,6 @@ Crystal fcc(int nx, int ny, int nz, double a, double strain_x, int type) {
     throw InputError(fmt::format("fcc lattice: cells {}x{}x{}, a = {}, strain {}: need cells >= 1, "
                                  "a > 0, strain > -1",
                                  nx, ny, nz, a, strain_x));
-  static constexpr double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
   Crystal c;
   const double sx = 1.0 + strain_x;
   c.box.lx = nx * a * sx;
@@ -21,7 +20,7 @@ Crystal fcc(int nx, int ny, int nz, double a, double strain_x, int type) {
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
-        for (const auto& b : basis)
+        for (const auto& b : kFccBasis)
           c.atoms.push_back((i + b[0]) * a * sx, (j + b[1]) * a, (k + b[2]) * a, type, id++);
   return c;
 }

@@ -7,6 +7,9 @@
 
 namespace mpmx::particles {
 
+// The four sites of the cubic fcc cell, in units of the lattice constant.
+inline constexpr double kFccBasis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+
 struct Crystal {
   Atoms atoms;
   Box box;

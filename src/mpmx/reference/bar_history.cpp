@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 
 namespace mpmx::reference {
 
@@ -22,9 +23,9 @@ BarHistory BarHistory::read(const std::string& path) {
   std::string line;
   std::getline(in, line);
   if (line.rfind("step,time_ps,bin,x_A,sxx_GPa", 0) != 0)
-    throw InputError(fmt::format("{}: header '{}' is not that of a bar stress table "
+    throw InputError(fmt::format("{}: header {} is not that of a bar stress table "
                                  "(step,time_ps,bin,x_A,sxx_GPa,...)",
-                                 path, line));
+                                 path, quote_excerpt(line)));
   int lineno = 1;
   while (std::getline(in, line)) {
     ++lineno;
@@ -39,7 +40,7 @@ BarHistory BarHistory::read(const std::string& path) {
       bin = std::stol(f[2]);
       sxx = std::stod(f[4]);
     } catch (const std::exception&) {
-      throw InputError(fmt::format("{}:{}: cannot read '{}'", path, lineno, line));
+      throw InputError(fmt::format("{}:{}: cannot read {}", path, lineno, quote_excerpt(line)));
     }
     if (h.times_.empty() || t > h.times_.back() + 1e-9) {
       if (!h.times_.empty() && static_cast<int>(h.sxx_.back().size()) != h.bins_)

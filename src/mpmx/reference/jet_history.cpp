@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/io/vtk.hpp"
 
 namespace mpmx::reference {
@@ -39,7 +40,7 @@ std::vector<Bin> read_bins(const fs::path& path) {
   std::string line;
   std::getline(in, line);
   if (line.rfind("ix,iy,x_A,y_A,atoms,density_g_cm3,temperature_K,vx_km_s,vy_km_s,sxx_GPa", 0) != 0)
-    throw InputError(fmt::format("{}: header '{}' is not that of a jet bin table", path.string(), line));
+    throw InputError(fmt::format("{}: header {} is not that of a jet bin table", path.string(), quote_excerpt(line)));
   std::vector<Bin> bins;
   int lineno = 1;
   while (std::getline(in, line)) {
@@ -55,7 +56,7 @@ std::vector<Bin> read_bins(const fs::path& path) {
       b.atoms = std::stoi(f[4]);
       b.sxx = std::stod(f[9]);
     } catch (const std::exception&) {
-      throw InputError(fmt::format("{}:{}: cannot read '{}'", path.string(), lineno, line));
+      throw InputError(fmt::format("{}:{}: cannot read {}", path.string(), lineno, quote_excerpt(line)));
     }
     if (b.ix < 0 || b.iy < 0 || b.ix > 1'000'000 || b.iy > 1'000'000)
       throw InputError(fmt::format("{}:{}: bin index out of range", path.string(), lineno));

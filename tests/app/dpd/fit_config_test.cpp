@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "mpmx/app/dpd/config.hpp"
@@ -148,4 +150,40 @@ TEST(FitConfig, PotentialFileCannotBeAnOutputOrAFolder) {
       EXPECT_NE(std::string(e.what()).find("output.potential_file"), std::string::npos) << e.what();
     }
   }
+}
+
+// Every integer of a fit deck through the checked reader: 2^32 + 2 is out of range by name,
+// not a count that wrapped; a lattice constant whose lattice sums would not end is refused.
+TEST(FitConfig, IntegersAndLatticeConstantAreBounded) {
+  std::ifstream in(std::string(MPMX_SOURCE_DIR) + "/tests/fuzz/corpus/fit_deck/minimal.toml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string good = ss.str();
+  auto error_of = [&](const std::string& from, const std::string& to) {
+    std::string t = good;
+    const auto at = t.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) t.replace(at, from.size(), to);
+    try {
+      io::Deck d = io::Deck::from_string(t, "fit.toml");
+      app::dpd::read_fit_config(d);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(error_of("cells = 5", "cells = 5"), "(no error)");
+  for (const auto& [from, key] : std::vector<std::pair<std::string, std::string>>{
+           {"cells = 5", "md.cells"},
+           {"cells = 4", "dpd.cells"},
+           {"points = 11", "densities.points"},
+           {"iterations = 3", "dpd.iterations"},
+           {"sample_steps = 5000", "md.sample_steps"},
+           {"sample_steps = 4000", "dpd.sample_steps"}}) {
+    const std::string to = from.substr(0, from.find('=') + 2) + "4294967298";
+    const std::string e = error_of(from, to);
+    EXPECT_NE(e.find("key '" + key + "' = 4294967298: out of range"), std::string::npos) << e;
+  }
+  const std::string e = error_of("lattice_constant = 3.61", "lattice_constant = 1e-300");
+  EXPECT_NE(e.find("key 'md.lattice_constant' = 1e-300: must lie in [0.5, 100] Angstrom"), std::string::npos) << e;
 }

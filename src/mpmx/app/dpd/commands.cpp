@@ -13,6 +13,7 @@
 #include "mpmx/app/dpd/config.hpp"
 #include "mpmx/app/dpd/fit_run.hpp"
 #include "mpmx/app/dpd/fit_stop.hpp"
+#include "mpmx/app/dpd/preflight.hpp"
 #include "mpmx/app/dpd/run.hpp"
 #include "mpmx/app/run_folder.hpp"
 #include "mpmx/core/machine.hpp"
@@ -30,8 +31,7 @@ namespace {
 void check_dpd(const std::string& path, bool force) {
   auto deck = io::Deck::from_file(path);
   const dpd::DpdConfig config = dpd::read_dpd_config(deck);
-  const dpd::DpdBudget budget = dpd::estimate_dpd(config);
-  dpd::check_dpd_work(budget, force);  // check refuses what the run would
+  const dpd::DpdBudget budget = dpd::preflight_dpd(config, force);  // check refuses what the run would
   fmt::print("{}: ok (dpd deck); {:.4g} particles, {:.4g} particle-steps ({}), about {} on one core at {:.2g} "
              "particle-steps/s\n",
              path, budget.particles, budget.particle_steps, budget.work_key, format_duration(budget.seconds()),
@@ -78,7 +78,7 @@ void add_dpd_commands(CLI::App& app) {
     auto deck = io::Deck::from_file(args->deck);
     dpd::DpdConfig config = dpd::read_dpd_config(deck);
     config.still = args->still;
-    dpd::check_dpd_work(dpd::estimate_dpd(config), args->force);
+    dpd::preflight_dpd(config, args->force);  // what --check refuses, the run refuses
     const std::string out = out_dir_of(args->out, args->deck);
     const int threads = threads_of(args->threads);
     RunControlOptions o;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <set>
 
 #include <fmt/format.h>
@@ -15,6 +16,12 @@
 namespace mpmx::app::dpd {
 
 namespace {
+
+constexpr std::int64_t kMaxSteps = std::numeric_limits<std::int64_t>::max();
+// Lengths a deck may give, in Angstrom: a coarse lattice constant (the seed's is 7.3) and
+// a block's size and place (a millimetre), so that the extents stay finite.
+constexpr double kMaxLatticeConstant = 1000.0;
+constexpr double kMaxLength = 1e7;
 
 bool read_vec3(io::Section& s, std::string_view key, particles::Vec3& out, bool required) {
   if (!required && !s.has(key)) return false;
@@ -35,7 +42,7 @@ PairPotential read_potential(io::Section s, const std::string& deck_dir) {
     std::filesystem::path path = s.string("file");
     if (path.is_relative() && !deck_dir.empty()) path = deck_dir / path;
     try {
-      io::Deck d = io::Deck::from_file(path.string());
+      io::Deck d = io::Deck::from_file(path.string(), "potential file");
       io::Section inner = d.root().table("potential");
       inner.check(!inner.has("file"), "file", "a potential file cannot name another");
       PairPotential p = inner.has("file") ? PairPotential{} : read_pair_potential(inner);
@@ -65,8 +72,7 @@ void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>&
     a.tracks.push_back(s);
   }
   auto an = root.optional_table("analysis");
-  a.every = an.integer("every", 5);
-  an.check(a.every >= 1 && a.every <= 1000000, "every", "must be from 1 to 1e6 steps");
+  a.every = an.integer("every", 5, 1, 1000000);
   an.check(c.thermo % std::max<std::int64_t>(a.every, 1) == 0, "every", "must divide run.thermo");
   a.onset = an.number("onset", 0.3);
   an.positive("onset", a.onset);
@@ -92,8 +98,8 @@ void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>&
   auto pr = root.optional_table("profile");
   if (pr.present()) {
     a.profile_bins = pr.integer_int("bins", 1, 100000);
-    a.profile_every = pr.integer("every");
-    pr.check(a.profile_every >= 1 && a.profile_every % std::max<std::int64_t>(a.every, 1) == 0, "every",
+    a.profile_every = pr.integer("every", 1, kMaxSteps);
+    pr.check(a.profile_every % std::max<std::int64_t>(a.every, 1) == 0, "every",
              "must be a positive multiple of analysis.every");
   }
 }
@@ -167,7 +173,8 @@ BlockSpec read_block(io::Section& b, std::set<std::string>& groups) {
   s.fcc = b.choice("lattice", {"fcc", "random"}, "fcc") == "fcc";
   if (s.fcc) {
     s.constant = b.number("constant");
-    b.positive("constant", s.constant);
+    b.check(s.constant > 0 && s.constant <= kMaxLatticeConstant, "constant",
+            fmt::format("must lie in (0, {}] Angstrom", kMaxLatticeConstant));
     const auto cells = b.numbers("cells");
     if (cells.size() == 3) {
       for (int d = 0; d < 3; ++d) {
@@ -179,12 +186,15 @@ BlockSpec read_block(io::Section& b, std::set<std::string>& groups) {
       b.check(false, "cells", "expected [nx, ny, nz]");
     }
   } else {
-    s.count = static_cast<long>(b.integer("count"));
-    b.check(s.count >= 1 && s.count <= 100000000, "count", "must be from 1 to 1e8");
+    s.count = b.integer("count", 1, 100000000);
     read_vec3(b, "size", s.size, true);
-    for (int d = 0; d < 3; ++d) b.check(s.size[d] > 0, "size", "every edge must be positive");
+    for (int d = 0; d < 3; ++d)
+      b.check(s.size[d] > 0 && s.size[d] <= kMaxLength, "size",
+              fmt::format("every edge must lie in (0, {:g}] Angstrom", kMaxLength));
   }
   read_vec3(b, "origin", s.origin, false);
+  for (int d = 0; d < 3; ++d)
+    b.check(std::abs(s.origin[d]) <= kMaxLength, "origin", fmt::format("must lie within {:g} Angstrom of 0", kMaxLength));
   s.mass = b.number("mass");
   b.positive("mass", s.mass);
   read_vec3(b, "velocity", s.velocity, false);
@@ -228,7 +238,9 @@ void read_domain(io::Section& root, const particles::Vec3& extent, bool all_fcc,
   particles::Vec3 size = extent;
   if (box.has("size")) read_vec3(box, "size", size, true);
   else box.check(all_fcc, "size", "is needed when a block is a random fill");
-  for (int d = 0; d < 3; ++d) box.check(size[d] > 0, "size", "every edge must be positive");
+  for (int d = 0; d < 3; ++d)
+    box.check(size[d] > 0 && size[d] <= 2 * kMaxLength, "size",
+              fmt::format("every edge must lie in (0, {:g}] Angstrom", 2 * kMaxLength));
   c.domain.box.lx = size[0], c.domain.box.ly = size[1], c.domain.box.lz = size[2];
   const auto bnd = box.strings("boundary", {"p", "p", "p"});
   if (bnd.size() == 3) {
@@ -263,8 +275,7 @@ void read_dpd_params(io::Section& dp, double rc, DpdConfig& c) {
     dp.positive("heat_capacity_kB", cv);
     p.heat_capacity = cv * units::boltzmann_eV_per_K;
   }
-  const auto seed = dp.integer("seed", 1);
-  dp.check(seed >= 0, "seed", "must be >= 0");
+  const auto seed = dp.integer("seed", 1, 0, kMaxSteps);
   p.seed = static_cast<std::uint64_t>(seed);
 }
 
@@ -279,8 +290,7 @@ void read_run(io::Section& root, DpdConfig& c) {
     eq.temperature("temperature", c.berendsen.temperature);
     c.berendsen.tau = eq.number("tau");
     eq.positive("tau", c.berendsen.tau);
-    c.equilibrate_steps = eq.integer("steps");
-    eq.check(c.equilibrate_steps >= 0, "steps", "must be >= 0");
+    c.equilibrate_steps = eq.integer("steps", 0, kMaxSteps);
   }
 
   auto run = root.table("run");
@@ -289,12 +299,11 @@ void read_run(io::Section& root, DpdConfig& c) {
   run.check(c.dt <= 1.0, "dt", "is above 1 ps: DPD time steps in metal units are 0.001-0.1 ps");
   if (c.equilibrate)
     eq.check(c.berendsen.tau >= c.dt, "tau", fmt::format("must be at least the time step run.dt = {} ps", c.dt));
-  c.steps = run.integer("steps");
-  run.check(c.steps >= 0, "steps", "must be >= 0");
-  c.thermo = run.integer("thermo", 100);
-  run.check(c.thermo >= 1, "thermo", "must be >= 1");
-  c.dump_every = run.integer("dump_every", 0);
-  run.check(c.dump_every >= 0 && (c.dump_every == 0 || (c.thermo >= 1 && c.dump_every % c.thermo == 0)), "dump_every",
+  c.steps = run.integer("steps", 0, kMaxSteps);
+  // The system advances thermo steps at a time in an int.
+  c.thermo = run.integer("thermo", 100, 1, std::numeric_limits<int>::max());
+  c.dump_every = run.integer("dump_every", 0, 0, kMaxSteps);
+  run.check(c.dump_every == 0 || c.dump_every % c.thermo == 0, "dump_every",
             "must be 0 (no dump) or a multiple of thermo");
   c.skin = run.number("skin", 1.0);
   // A skin beyond the cutoff only multiplies the listed pairs ((rc + skin)^3 / rc^3: 1000

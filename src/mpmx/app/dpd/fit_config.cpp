@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -26,7 +27,8 @@ FitConfig read_fit_config(io::Deck& deck) {
   io::Section pot = md.table("potential");
   c.md_potential = md::read_potential(pot, deck_dir);
   c.lattice_constant = md.number("lattice_constant");
-  md.positive("lattice_constant", c.lattice_constant);
+  md.check(c.lattice_constant >= 0.5 && c.lattice_constant <= 100, "lattice_constant",
+           "must lie in [0.5, 100] Angstrom (an atomic crystal's)");
   c.md.cells = md.integer_int("cells", 5, 2, 40);  // fcc cells per edge
   c.md.temperature = md.number("temperature");
   md.positive("temperature", c.md.temperature);
@@ -35,8 +37,7 @@ FitConfig read_fit_config(io::Deck& deck) {
   md.check(c.md.dt > 0 && c.md.dt <= 0.01, "dt", "must lie in (0, 0.01] ps");
   c.md.equilibrate_steps = md.integer_int("equilibrate_steps", 3000, 0, 100000000);
   c.md.sample_steps = md.integer_int("sample_steps", 3000, 100, 100000000);
-  const auto seed = md.integer("seed", 1);
-  md.check(seed >= 0, "seed", "must be >= 0");
+  const auto seed = md.integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max());
   c.md.seed = static_cast<std::uint64_t>(seed);
 
   auto dn = root.table("densities");
@@ -80,8 +81,7 @@ FitConfig read_fit_config(io::Deck& deck) {
   dp.check(d.berendsen_tau >= d.dt, "berendsen_tau", "must be at least dpd.dt");
   d.equilibrate_steps = dp.integer_int("equilibrate_steps", 1000, 0, 100000000);
   d.sample_steps = dp.integer_int("sample_steps", 2000, 100, 100000000);
-  const auto dseed = dp.integer("seed", 1);
-  dp.check(dseed >= 0, "seed", "must be >= 0");
+  const auto dseed = dp.integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max());
   d.seed = static_cast<std::uint64_t>(dseed);
 
   // Optional elastic targets: the MD crystal's C11 and C12 at the temperature.

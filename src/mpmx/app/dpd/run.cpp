@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/app/dpd/dump.hpp"
+#include "mpmx/app/dpd/preflight.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
 #include "mpmx/dpd/cna.hpp"
@@ -28,7 +29,7 @@ System build_system(const DpdConfig& c, int threads) {
   for (std::size_t b = 0; b < c.blocks.size(); ++b) {
     const BlockSpec& s = c.blocks[b];
     Particles p = s.fcc ? fcc_block(s.cells, s.constant, s.origin, s.mass, 0, next_id)
-                        : random_block(s.count, s.size, s.origin, s.mass, 0, next_id, c.params.seed + 7919 * b);
+                        : random_block(s.count, s.size, s.origin, s.mass, 0, next_id, block_seed(c, b));
     next_id += static_cast<std::int64_t>(p.size());
     if (!s.group.empty()) {
       groups.push_back({s.group, s.velocity});

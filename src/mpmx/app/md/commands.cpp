@@ -94,9 +94,11 @@ void run_jet_lammps(const md::MdConfig& c, const std::string& out, const std::st
 // `md --check`, and `mpmx check` of an md deck: every validation the run makes (deck,
 // potential file and its elements, memory always, work over a day unless `force`) and
 // the estimate at the rate of a 500-atom box of the deck's potential timed on this core.
-void check_md(const std::string& path, bool force) {
+void check_md(const std::string& path, bool force, bool lammps = false) {
   auto deck = io::Deck::from_file(path);
   md::MdConfig config = md::read_md_config(deck);
+  if (lammps && !config.jet && !config.bar)  // as the run refuses it
+    throw InputError(fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", path));
   config.options.threaded = true;
   const md::Potential potential(config.potential);
   const md::MdBudget budget = md::estimate_md(config, potential.cutoff());
@@ -120,7 +122,7 @@ void check_md(const std::string& path, bool force) {
 }  // namespace
 
 void add_md_commands(CLI::App& app) {
-  register_deck_check(DeckKind::md, check_md);
+  register_deck_check(DeckKind::md, [](const std::string& path, bool force) { check_md(path, force); });
   auto* md = app.add_subcommand("md", "Run an MD-only deck (fcc crystal, EAM/LJ/Sutton-Chen, NVE)");
   struct Args {
     std::string deck, out;
@@ -152,7 +154,8 @@ void add_md_commands(CLI::App& app) {
       ->check(whole_number(1, 1 << 20))
       ->needs(lammps);
   md->callback([args] {
-    if (args->check) return check_md(args->deck, args->force || args->lammps_write_only);
+    if (args->check)
+      return check_md(args->deck, args->force || args->lammps_write_only, args->lammps || args->lammps_write_only);
     auto deck = io::Deck::from_file(args->deck);
     md::MdConfig config = md::read_md_config(deck);  // parses the potential file too
     // mpmx md advances one large system: its threaded form (the same bits for any count).

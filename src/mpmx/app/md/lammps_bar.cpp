@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/core/units.hpp"
 
 namespace mpmx::app::md {
@@ -192,7 +193,7 @@ std::vector<BarStressSample> read_lammps_bar_stress(const std::string& path, dou
   std::string line;
   long ln = 0;
   auto fail = [&](const std::string& what) {
-    throw InputError(fmt::format("{}:{}: {} (line '{}')", path, ln, what, line));
+    throw InputError(fmt::format("{}:{}: {} (line {})", path, ln, what, quote_excerpt(line)));
   };
   while (std::getline(in, line)) {
     ++ln;

@@ -1,5 +1,6 @@
 #include "mpmx/app/mpm/budget.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -7,7 +8,8 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/md/budget.hpp"
-#include "mpmx/app/mpm/setup.hpp"
+#include "mpmx/app/mpm/bodies.hpp"
+#include "mpmx/app/mpm/convergence.hpp"
 
 namespace mpmx::app {
 
@@ -32,9 +34,8 @@ double point_bytes(int dim, double subpoints) {
 }
 double node_bytes(int dim) { return kOverhead * 8.0 * (4 + 6 * dim); }
 
-}  // namespace
-
-MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
+// One grid's figures; `cost` the law's per point (timed once for every level of a study).
+MpmBudget estimate_level(const MpmConfig& c, int ranks, const material::PointCost& cost) {
   MpmBudget b;
   b.deck = c.deck_path;
   b.ranks = ranks > 1 ? ranks : 1;
@@ -61,7 +62,6 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
   const double rate = dim == 1 ? kPointSteps1dPerSecond : kPointStepsPerSecond;
   b.seconds = b.points * b.subpoints * b.steps / rate;
   // A law with a model inside every point (md_closure's boxes): its atoms, memory and work.
-  const material::PointCost cost = c.material.spec ? c.material.spec->point_cost(c.dt) : material::PointCost{};
   if (cost.atoms > 0) {
     b.md_atoms_per_point = cost.atoms;
     b.md_atoms = b.points * cost.atoms;
@@ -73,6 +73,31 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
     b.md_rate_measured = cost.atom_steps_per_second > 0;
     b.seconds += b.md_atom_steps / b.md_rate / b.ranks;
   }
+  return b;
+}
+
+}  // namespace
+
+MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
+  const material::PointCost cost = c.material.spec ? c.material.spec->point_cost(c.dt) : material::PointCost{};
+  if (c.convergence_levels <= 1) return estimate_level(c, ranks, cost);
+  // A study runs its levels one after another: its memory is the finest grid's, its work
+  // that of every level together (each has 2^D times the points of the one before and
+  // twice the steps).
+  const int last = c.convergence_levels - 1;
+  MpmBudget b;
+  double seconds = 0, atom_steps = 0;
+  for (int k = 0; k <= last; ++k) {
+    material::PointCost ck = cost;
+    ck.steps_per_step = std::max(1.0, cost.steps_per_step / (1 << k));  // time.dt / 2^k over material.md.dt
+    b = estimate_level(refined(c, k), ranks, ck);
+    seconds += b.seconds, atom_steps += b.md_atom_steps;
+  }
+  b.seconds = seconds, b.md_atom_steps = atom_steps;
+  b.levels = c.convergence_levels;
+  b.size_key = fmt::format("convergence.levels = {} (its finest grid, {} times grid.cells along each axis; {})",
+                           c.convergence_levels, 1 << last, b.size_key);
+  b.work_key = "convergence.levels, time.end / time.dt";
   return b;
 }
 
@@ -92,9 +117,10 @@ void check_mpm_budget(const MpmBudget& b, std::uint64_t memory_bytes, bool force
                        : std::string()));
   if (!force && !(b.seconds <= kWorkLimitSeconds))
     throw InputError(fmt::format(
-        "time.end / time.dt: {:.4g} points x {:.4g} steps{}, about {:.3g} days of work: more than the day a run "
-        "takes without --force",
-        b.points * b.subpoints, b.steps, b.md_atoms > 0 ? fmt::format(" with {:.4g} MD atoms", b.md_atoms) : "",
+        "{}: {:.4g} points x {:.4g} steps{}{}, about {:.3g} days of work: more than the day a run takes without "
+        "--force",
+        b.work_key, b.points * b.subpoints, b.steps,
+        b.levels > 1 ? fmt::format(" on the finest of {} grids (all of them together)", b.levels) : std::string(), b.md_atoms > 0 ? fmt::format(" with {:.4g} MD atoms", b.md_atoms) : "",
         b.seconds / 86400.0));
 }
 

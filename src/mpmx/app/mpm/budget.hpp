@@ -30,9 +30,11 @@ struct MpmBudget {
   int ranks = 1;           // the boxes spread over so many ranks: bytes and seconds are one rank's
   double bytes = 0;        // estimated peak memory
   double seconds = 0;      // estimated wall time on one core
-  double steps = 0;
+  double steps = 0;         // one grid's (a study: its finest)
   std::string size_key;    // the key the largest memory share comes from
   std::string deck;        // the deck's path, for the refusal's message
+  std::string work_key = "time.end / time.dt";  // the keys the work comes from
+  int levels = 1;          // convergence.levels: memory the finest grid's, work (seconds, md_atom_steps) all grids'
 };
 
 // `ranks`: the MPI ranks the md_closure boxes spread over (each holds and advances

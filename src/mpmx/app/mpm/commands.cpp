@@ -1,6 +1,5 @@
 // `mpmx run DECK --out DIR` and `mpmx check DECK`.
 #include <cmath>
-#include <filesystem>
 #include <vector>
 
 #include <fmt/format.h>
@@ -12,10 +11,8 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/core/ranks.hpp"
-#include "mpmx/app/mpm/comparison.hpp"
 #include "mpmx/app/mpm/deck.hpp"
-#include "mpmx/md/budget.hpp"
-#include "mpmx/app/mpm/budget.hpp"
+#include "mpmx/app/mpm/preflight.hpp"
 #include "mpmx/app/mpm/run.hpp"
 
 namespace mpmx::app {
@@ -33,7 +30,9 @@ void add_mpm_commands(CLI::App& app) {
   auto args = std::make_shared<Args>();
 
   CLI::App* run = app.add_subcommand("run", "run a continuum deck");
-  run->add_option("deck", args->deck, "TOML deck")->required()->check(CLI::ExistingFile);
+  // The deck reader says what is wrong with the path (CLI11's ExistingFile says "does not
+  // exist" of a path too long to look up).
+  run->add_option("deck", args->deck, "TOML deck")->required();
   run->add_option("--out,-o", args->out, "output directory (default runs/<deck name>)");
   run->add_flag("--quiet,-q", args->quiet, "no progress line");
   run->add_flag("--no-plot", args->no_plot, "do not draw figures");
@@ -61,7 +60,7 @@ void add_mpm_commands(CLI::App& app) {
     MpmConfig cfg;
     ranks::together([&] {
       cfg = read_mpm_deck(args->deck);
-      check_mpm_budget(estimate_mpm(cfg, ranks::size()), physical_memory_bytes(), args->force);
+      preflight_mpm_run(cfg, ranks::size(), physical_memory_bytes(), args->force);
     });
     const std::string out = out_dir_of(args->out, args->deck);
     RunOptions o;
@@ -99,7 +98,7 @@ void add_mpm_commands(CLI::App& app) {
 
   CLI::App* check = app.add_subcommand(
       "check", "validate a deck of any kind (continuum, md, dpd, fit-dpd) and print its estimate, running nothing");
-  check->add_option("deck", args->deck, "TOML deck")->required()->check(CLI::ExistingFile);
+  check->add_option("deck", args->deck, "TOML deck")->required();
   check->add_flag("--force", args->force, "do not mention a work estimate over about a day (memory is always checked)");
   check->add_option("--ranks", args->ranks,
                     "estimate for a run over so many MPI ranks (md_closure boxes spread over them; default 1)")
@@ -107,20 +106,10 @@ void add_mpm_commands(CLI::App& app) {
   check->callback([args] {
     if (check_deck_of_another_kind(args->deck, args->force)) return;  // md, dpd, fit-dpd: their own check
     const auto cfg = read_mpm_deck(args->deck);
-    const auto budget = estimate_mpm(cfg, args->ranks);
     // A check refuses what cannot run here (memory); work over a day is said, not refused:
     // the deck may be meant for a cluster, and `run` asks for --force itself.
-    check_mpm_budget(budget, physical_memory_bytes(), true);
-    // The reference as the run reads it, where it is there: a damaged or short direct-MD
-    // history is refused here, not after the run has built its boxes. One not yet run is
-    // only named (a study checks its decks before it runs the direct MD they need).
-    std::error_code ec;
-    const bool reference_missing = !cfg.reference.file.empty() && !std::filesystem::exists(cfg.reference.file, ec);
-    if (!reference_missing) {
-      if (cfg.dim == 1) (void)make_comparison<1>(cfg);
-      else if (cfg.dim == 2) (void)make_comparison<2>(cfg);
-      else (void)make_comparison<3>(cfg);
-    }
+    const MpmPreflight pre = preflight_mpm(cfg, args->ranks, physical_memory_bytes(), true);
+    const MpmBudget& budget = pre.budget;
     if (cfg.dim == 1) {
       fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", args->deck, cfg.id, cfg.cells,
                  cfg.per_cell, cfg.steps(), mpm::scheme_name(cfg.scheme.scheme));
@@ -131,8 +120,11 @@ void add_mpm_commands(CLI::App& app) {
                  args->deck, cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), cfg.bodies.size(),
                  cfg.steps(), mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
     }
-    fmt::print("  estimate: about {} of memory, {:.3g} hours of work on one core{}{}\n", format_bytes(budget.bytes),
+    fmt::print("  estimate: about {} of memory, {:.3g} hours of work on one core{}{}{}\n", format_bytes(budget.bytes),
                budget.seconds / 3600.0,
+               budget.levels > 1 ? fmt::format(" (a study of {} grids: the finest grid's memory, the work of all)",
+                                               budget.levels)
+                                 : std::string(),
                budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string(),
                budget.ranks > 1 ? fmt::format(" (each of {} ranks)", budget.ranks) : std::string());
     if (budget.md_atom_steps > 0)
@@ -143,9 +135,7 @@ void add_mpm_commands(CLI::App& app) {
                  budget.points, budget.md_atoms_per_point, budget.md_atom_steps,
                  budget.md_atom_steps / budget.md_rate / 3600.0, budget.md_rate,
                  budget.md_rate_measured ? "one of its boxes timed on this core just now" : "a typical figure");
-    if (reference_missing)
-      fmt::print("  reference.file {} is not there yet: `mpmx run` needs it (run its direct-MD deck first)\n",
-                 cfg.reference.file);
+    if (!pre.pending.empty()) fmt::print("  {}\n", pre.pending);
     if (!(budget.seconds <= kWorkLimitSeconds) && !args->force)
       fmt::print("  more than a day of work{}: `mpmx run` needs --force; over N MPI ranks it is about 1/N "
                  "(check --ranks N)\n",

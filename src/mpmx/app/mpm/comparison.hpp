@@ -39,10 +39,11 @@ class ErrorBook {
 
   // One field's norms at time t.
   void add(const std::string& field, const reference::ErrorNorms& n, double peak, double t);
-  // The relative norms of u against uref (weights w) and the peak error over the
-  // disturbance from `baseline`, at time t (nothing when u is empty).
+  // The norms of u against uref (weights w) and the peak error, relative to the larger of
+  // the disturbance from `baseline` now and `scale` (over the run), at time t (nothing when
+  // u is empty).
   void add_samples(const std::string& field, const std::vector<double>& u, const std::vector<double>& uref,
-                   const std::vector<double>& w, double baseline, double t);
+                   const std::vector<double>& w, double baseline, double t, const reference::ErrorScale& scale = {});
   // Eq. 7.12 of one compared time, in run.json's errors_by_time.stress_vs_direct_md.
   void add_eq712(const reference::Eq712& now, double t);
   io::RunRecord& record() { return *rec_; }
@@ -88,11 +89,14 @@ class FieldComparison final : public Comparison<Dim> {
  private:
   void compare_1d(const mpm::State<Dim>& s, ErrorBook& book);
   void compare_along_normal(const mpm::State<Dim>& s, ErrorBook& book);
+  // The field's disturbance over the run's compared times (reference/norms.hpp).
+  const reference::ErrorScale& scale(const std::string& field);
   const MpmConfig& c_;
   std::unique_ptr<Reference> ref_;
   const Profile& along_;
   bool pool_eq712_;
   std::vector<double> u_, uref_, w_;
+  std::map<std::string, reference::ErrorScale> scale_;
 };
 
 }  // namespace mpmx::app

@@ -40,7 +40,7 @@ struct Body {
   enum class Shape { box, circle, sphere, polygon };
   Shape shape = Shape::box;
   bool remove = false;
-  std::array<double, 3> lower{}, upper{};   // box
+  std::array<double, 3> lower{}, upper{};   // box; a polygon's bounding box
   std::array<double, 3> center{};           // circle, sphere
   double radius = 0.0;
   std::vector<std::array<double, 2>> vertices;  // polygon (2-D, x-y plane)

@@ -11,6 +11,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
+#include "mpmx/app/mpm/bodies.hpp"
 #include "mpmx/app/mpm/materials.hpp"
 #include "mpmx/app/mpm/references.hpp"
 #include "mpmx/io/deck.hpp"
@@ -125,7 +126,8 @@ std::array<double, 3> read_vector(Section& s, std::string_view key, int dim, std
   return r;
 }
 
-Body read_body(Section s, int dim, const material::Context& ctx) {
+// `number`: the body's place among the deck's [[body]] tables, from 1 (messages).
+Body read_body(Section s, int dim, const material::Context& ctx, std::size_t number) {
   Body b;
   const std::vector<std::string> shapes =
       dim == 2 ? std::vector<std::string>{"box", "circle", "polygon"} : std::vector<std::string>{"box", "sphere"};
@@ -140,13 +142,19 @@ Body read_body(Section s, int dim, const material::Context& ctx) {
       s.check(b.upper[d] > b.lower[d], "upper", "must exceed lower on every axis");
   } else if (b.shape == Body::Shape::polygon) {
     const auto v = s.numbers("vertices");
-    s.check(v.size() >= 6 && v.size() % 2 == 0, "vertices", "needs x, y pairs of at least three corners: [x0, y0, x1, y1, ...]");
-    for (std::size_t k = 0; k + 1 < v.size(); k += 2) b.vertices.push_back({v[k], v[k + 1]});
+    const bool pairs = v.size() >= 6 && v.size() % 2 == 0 && v.size() <= 2 * kMaxPolygonCorners;
+    s.check(pairs, "vertices",
+            fmt::format("needs x, y pairs of 3 to {} corners: [x0, y0, x1, y1, ...]", kMaxPolygonCorners));
+    for (std::size_t k = 0; pairs && k + 1 < v.size(); k += 2) b.vertices.push_back({v[k], v[k + 1]});
+    polygon_bounds(b.vertices, b.lower, b.upper);
   } else {
     b.center = read_vector(s, "center", dim, {}, true);
     b.radius = s.number("radius");
     s.positive("radius", b.radius);
   }
+  if (const std::string why = geometry_problem(b, dim); !why.empty())
+    s.check(false, b.shape == Body::Shape::polygon ? "vertices" : b.shape == Body::Shape::box ? "upper" : "radius",
+            fmt::format("body {}: {}", number, why));
   if (!b.remove) b.velocity = read_vector(s, "velocity", dim, {}, false);
   else if (s.has("velocity")) s.check(false, "velocity", "a region that removes points has no velocity");
   if (s.has("angular_velocity")) {
@@ -180,13 +188,17 @@ void read_grid(Section& root, MpmConfig& c) {
     c.lower = g.number("lower", 0.0);
     c.upper = g.number("upper");
     g.check(c.upper > c.lower, "upper", fmt::format("must exceed grid.lower = {}", c.lower));
+    g.check(std::isfinite(c.upper - c.lower), "upper", "grid.upper - grid.lower overflows: the grid's length must be finite");
     c.cells = g.integer_int("cells", 1, 10'000'000);
     c.lower_all[0] = c.lower, c.upper_all[0] = c.upper, c.cells_all[0] = c.cells;
   } else {
     c.lower_all = read_vector(g, "lower", dim, {}, true);
     c.upper_all = read_vector(g, "upper", dim, {1.0, 1.0, 1.0}, true);
-    for (int d = 0; d < dim; ++d)
+    for (int d = 0; d < dim; ++d) {
       g.check(c.upper_all[d] > c.lower_all[d], "upper", "must exceed grid.lower on every axis");
+      g.check(std::isfinite(c.upper_all[d] - c.lower_all[d]), "upper",
+              "upper - lower overflows: the grid's edges must be finite");
+    }
     const auto n = g.integers("cells", 1, 100'000);
     g.check(static_cast<int>(n.size()) == dim, "cells", fmt::format("needs {} integers (grid.dim = {})", dim, dim));
     for (int d = 0; d < dim && d < static_cast<int>(n.size()); ++d) c.cells_all[d] = static_cast<int>(n[d]);
@@ -215,7 +227,7 @@ void read_bodies(Section& root, MpmConfig& c, const std::string& deck_dir) {
   const int dim = c.dim;
   if (dim > 1)
     for (auto& b : root.tables("body"))
-      c.bodies.push_back(read_body(b, dim, material_context(dim, deck_dir, c.units)));
+      c.bodies.push_back(read_body(b, dim, material_context(dim, deck_dir, c.units), c.bodies.size() + 1));
   else if (root.has("body"))
     root.check(false, "body", "1-D decks fill the grid; [[body]] regions are for 2-D and 3-D");
 }
@@ -447,19 +459,21 @@ void check_time_step(Section& t, MpmConfig& c, double cfl_limit) {
     double cs_max = mat.spec->wave_speed(dim, mat.density, pmax);
     for (const auto& body : c.bodies)
       if (body.material) cs_max = std::max(cs_max, body.material->wave_speed(dim, body.material->density(), pmax));
+    // A body's fastest point: its velocity plus its spin times its radius (|omega| r_max).
     double vmax = 0.0;
     for (const auto& body : c.bodies) {
       double v2 = 0.0;
       for (int d = 0; d < dim; ++d) v2 += body.velocity[d] * body.velocity[d];
-      vmax = std::max(vmax, std::sqrt(v2));
+      vmax = std::max(vmax, std::sqrt(v2) + std::abs(body.angular_velocity) * body.radius);
     }
     cs_max += vmax;
     const double limit = cfl_limit * dx_min / cs_max;
     if (c.cfl_dt) c.dt = c.cfl * dx_min / cs_max;  // the first step's; later ones follow the state
     if (std::isfinite(limit) && !c.cfl_dt)
       t.check(c.dt <= limit, "dt",
-              fmt::format("exceeds the CFL limit cfl_limit * dx / c = {} * {} / {} = {}", cfl_limit,
-                          dx_min, cs_max, limit));
+              fmt::format("exceeds the CFL limit cfl_limit * dx / (c + v) = {} * {} / {} = {} (c the wave speed, v "
+                          "the fastest point's speed: a body's velocity plus |angular_velocity| x radius)",
+                          cfl_limit, dx_min, cs_max, limit));
     if (!c.cfl_dt && std::abs(c.dt * std::llround(c.end / c.dt) - c.end) > 1e-9 * c.end)
       t.check(false, "end", fmt::format("is not a whole number of steps of dt = {}", c.dt));
     if (const std::string why = mat.spec ? mat.spec->time_step_problem(c.dt) : ""; !why.empty())

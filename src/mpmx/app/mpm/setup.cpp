@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "mpmx/app/mpm/bodies.hpp"
 #include "mpmx/app/mpm/materials.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/material/composite.hpp"
@@ -31,73 +32,6 @@ reference::AxisAligned manufactured_solution(const MpmConfig& c, int dim) {
 }
 
 }  // namespace
-
-bool Body::contains(const std::array<double, 3>& x, int dim) const {
-  switch (shape) {
-    case Shape::box:
-      for (int d = 0; d < dim; ++d)
-        if (x[d] < lower[d] || x[d] > upper[d]) return false;
-      return true;
-    case Shape::circle:
-    case Shape::sphere: {
-      double r2 = 0.0;
-      for (int d = 0; d < dim; ++d) r2 += (x[d] - center[d]) * (x[d] - center[d]);
-      return r2 <= radius * radius;
-    }
-    case Shape::polygon: {  // even-odd rule in the x-y plane
-      bool in = false;
-      const std::size_t n = vertices.size();
-      for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-        const auto& a = vertices[i];
-        const auto& b = vertices[j];
-        if ((a[1] > x[1]) != (b[1] > x[1]) && x[0] < (b[0] - a[0]) * (x[1] - a[1]) / (b[1] - a[1]) + a[0]) in = !in;
-      }
-      return in;
-    }
-  }
-  return false;
-}
-
-// Points per axis over the whole grid; a point is kept when the deck has no bodies or
-// its centre lies in a body and in no removing region. keep(x, body) for each, in grid
-// order (body -1: no bodies).
-template <typename Keep>
-void place_points(const MpmConfig& c, Keep&& keep) {
-  const int dim = c.dim;
-  std::array<double, 3> l{};
-  std::array<std::int64_t, 3> count{1, 1, 1};
-  std::int64_t total = 1;
-  for (int d = 0; d < dim; ++d) {
-    l[d] = (c.upper_all[d] - c.lower_all[d]) / c.cells_all[d] / c.per_cell_all[d];
-    count[d] = static_cast<std::int64_t>(c.cells_all[d]) * c.per_cell_all[d];
-    total *= count[d];
-  }
-  for (std::int64_t k = 0; k < total; ++k) {
-    std::array<double, 3> x{};
-    std::int64_t r = k;
-    for (int d = 0; d < dim; ++d) {
-      x[d] = c.lower_all[d] + (static_cast<double>(r % count[d]) + 0.5) * l[d];
-      r /= count[d];
-    }
-    int body = -1;
-    for (std::size_t b = 0; b < c.bodies.size(); ++b) {
-      if (!c.bodies[b].contains(x, dim)) continue;
-      if (c.bodies[b].remove) {
-        body = -2;
-        break;
-      }
-      if (body == -1) body = static_cast<int>(b);
-    }
-    if (!c.bodies.empty() && body < 0) continue;
-    keep(x, body);
-  }
-}
-
-std::int64_t count_points(const MpmConfig& c) {
-  std::int64_t n = 0;
-  place_points(c, [&](const std::array<double, 3>&, int) { ++n; });
-  return n;
-}
 
 template <int Dim>
 State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads) {

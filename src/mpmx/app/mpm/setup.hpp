@@ -1,5 +1,4 @@
 #pragma once
-#include <cstdint>
 // Builds the initial state of a run from its configuration: grid, evenly placed
 // particles (per_cell per cell and axis, each owning an equal part of its cell; in 2-D
 // and 3-D those whose centres lie in the deck's bodies), material, initial fields and
@@ -11,10 +10,6 @@ namespace mpmx::app {
 
 // initialize_material = false leaves per-point material state to a checkpoint;
 // `threads` is the MD closure's (0: OpenMP's default).
-// The material points a deck places (its bodies on the grid's sub-cell lattice), counted
-// without building them: deck checks and estimates.
-std::int64_t count_points(const MpmConfig& c);
-
 template <int Dim>
 mpm::State<Dim> make_state(const MpmConfig& c, bool initialize_material = true, int threads = 0);
 // A 1-D deck's state.

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 
 namespace mpmx::md {
 
@@ -21,6 +22,7 @@ namespace {
 // per table (LAMMPS's files have 500 to 10,000; 10^7 is 80 MB a table) and elements.
 constexpr std::int64_t kMaxGridPoints = 10'000'000;
 constexpr std::int64_t kMaxElements = 100;
+constexpr std::size_t kMaxElementName = 16;
 
 // Reads a potential file line by line and value by value, keeping the line number
 // for messages.
@@ -88,9 +90,10 @@ class Cursor {
     errno = 0;
     const double v = std::strtod(w.c_str(), &end);
     if (end == w.c_str() || *end != '\0')
-      fail(line, fmt::format("expected a number ({}), found '{}'", what, w));
+      fail(line, fmt::format("expected a number ({}), found {}", what, quote_excerpt(w)));
     if (!std::isfinite(v))
-      fail(line, fmt::format("expected a finite number ({}), found '{}' (nan and inf are not accepted)", what, w));
+      fail(line, fmt::format("expected a finite number ({}), found {} (nan and inf are not accepted)", what,
+                             quote_excerpt(w)));
     return v;
   }
   // A whole number from lo to hi `unit`: out of range, the message names it, the value
@@ -101,9 +104,10 @@ class Cursor {
     errno = 0;
     const long long v = std::strtoll(w.c_str(), &end, 10);
     if (end == w.c_str() || *end != '\0')
-      fail(line, fmt::format("expected an integer ({}), found '{}'", what, w));
+      fail(line, fmt::format("expected an integer ({}), found {}", what, quote_excerpt(w)));
     if (errno == ERANGE || v < lo || v > hi)
-      fail(line, fmt::format("{} = {}: out of range: expected from {} to {} {}", what, w, lo, hi, unit));
+      fail(line, fmt::format("{} = {}: out of range: expected from {} to {} {}", what,
+                             w.size() <= 40 ? w : quote_excerpt(w), lo, hi, unit));  // all digits: printable
     return v;
   }
   std::vector<std::string> words(const std::string& text) const {
@@ -251,6 +255,10 @@ EamTables read_setfl_or_fs(const std::string& path, bool fs) {
     if (static_cast<std::int64_t>(w.size()) - 1 != n)
       c.fail(ln, fmt::format("expected {} element names after N, found {}", n, w.size() - 1));
     t.elements.assign(w.begin() + 1, w.end());
+    for (const auto& e : t.elements)  // names go into messages and the deck's elements are matched to them
+      if (e.size() > kMaxElementName || quote_excerpt(e, e.size()) != "'" + e + "'")
+        c.fail(ln, fmt::format("element name {} is not a name: at most {} printable characters",
+                               quote_excerpt(e), kMaxElementName));
   }
   read_grid(c, t);
   t.rhomax = (t.nrho - 1) * t.drho;
@@ -337,8 +345,14 @@ std::string resolve_potential_file(const std::string& name, const std::string& d
   for (const auto& t : tried)
     if (std::error_code ec; fs::is_regular_file(t, ec)) return t.string();
   std::vector<std::string> names;
-  for (const auto& t : tried) names.push_back(t.string());
-  throw InputError(fmt::format("potential file '{}' not found (tried: {})", name, fmt::join(names, ", ")));
+  for (const auto& t : tried) {
+    names.push_back(short_path(t.string()));
+    // Found, but not a file: say what it is rather than "not found".
+    if (std::error_code ec; fs::exists(t, ec))
+      throw InputError(fmt::format("potential file '{}': {} {}", short_path(name), names.back(),
+                                   file_problem(t, "potential file")));
+  }
+  throw InputError(fmt::format("potential file '{}' not found (tried: {})", short_path(name), fmt::join(names, ", ")));
 }
 
 }  // namespace mpmx::md
