@@ -1,10 +1,12 @@
 // The DPD deck reader and validator (potential by style or file, blocks, rigid groups,
-// the DPD/MPM grid and continuum, the analysis tables, the memory estimate) and the
+// the DPD/MPM grid and continuum, the analysis tables, the memory estimate), the
+// pre-flight `mpmx dpd --check` and the run make (the regions over the particles), and the
 // Born constants a concurrent deck's continuum would take.
 #include <cstdint>
 
 #include "fuzz_util.hpp"
 #include "mpmx/app/dpd/config.hpp"
+#include "mpmx/app/dpd/preflight.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/dpd/elastic.hpp"
 #include "mpmx/io/deck.hpp"
@@ -17,6 +19,7 @@ inline int dpd_deck(const std::uint8_t* data, std::size_t size) {
   try {
     auto deck = io::Deck::from_file(path);
     const app::dpd::DpdConfig c = app::dpd::read_dpd_config(deck);
+    (void)app::dpd::preflight_dpd(c, false);
     if (c.continuum.on && c.continuum.from_potential)
       (void)dpd::fcc_born_constants(c.potential, c.continuum.lattice_constant);
   } catch (const InputError&) {

@@ -13,9 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "bodies_fuzz.cpp"
 #include "checkpoint_fuzz.cpp"
 #include "dpd_deck_fuzz.cpp"
 #include "eam_fuzz.cpp"
+#include "fit_deck_fuzz.cpp"
 #include "lammps_table_fuzz.cpp"
 #include "md_deck_fuzz.cpp"
 #include "mpm_deck_fuzz.cpp"
@@ -50,6 +52,8 @@ TEST(FuzzReplay, MdDeck) { EXPECT_GT(replay("md_deck", mpmx::fuzz::md_deck), 5u)
 TEST(FuzzReplay, Eam) { EXPECT_GT(replay("eam", mpmx::fuzz::eam), 3u); }
 TEST(FuzzReplay, LammpsTable) { EXPECT_GT(replay("lammps_table", mpmx::fuzz::lammps_table), 1u); }
 TEST(FuzzReplay, DpdDeck) { EXPECT_GT(replay("dpd_deck", mpmx::fuzz::dpd_deck), 5u); }
+TEST(FuzzReplay, FitDeck) { EXPECT_GT(replay("fit_deck", mpmx::fuzz::fit_deck), 3u); }
+TEST(FuzzReplay, Bodies) { EXPECT_GT(replay("bodies", mpmx::fuzz::bodies), 3u); }
 TEST(FuzzReplay, Checkpoint) { EXPECT_GT(replay("checkpoint", mpmx::fuzz::checkpoint), 7u); }
 
 }  // namespace

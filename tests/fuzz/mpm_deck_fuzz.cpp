@@ -1,11 +1,12 @@
-// The continuum deck reader and validator, and the memory and work estimate `mpmx check`
-// makes: any text is either a valid deck or an InputError, never a crash or a hang.
+// The continuum deck reader and validator, and the pre-flight `mpmx check` and `mpmx run`
+// make (the bodies' placement, the memory and work estimate, the reference): any text is
+// either a valid deck or an InputError, never a crash or a hang.
 #include <cstdint>
 
 #include "fuzz_util.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/app/mpm/deck.hpp"
-#include "mpmx/app/mpm/budget.hpp"
+#include "mpmx/app/mpm/preflight.hpp"
 
 namespace mpmx::fuzz {
 
@@ -15,7 +16,8 @@ inline int mpm_deck(const std::uint8_t* data, std::size_t size) {
   const std::string path = fuzz::as_file("deck.toml", fuzz::view(data, size));
   try {
     const auto c = app::read_mpm_deck(path);
-    app::check_mpm_budget(app::estimate_mpm(c), std::uint64_t{1} << 34, false);
+    // 1 GiB: the points a deck may place stay few enough to count in a moment.
+    app::preflight_mpm_run(c, 1, std::uint64_t{1} << 30, false);
   } catch (const InputError&) {
   }
   return 0;

@@ -22,9 +22,15 @@ StagedDir::StagedDir(std::string out, bool keep) : out_(std::move(out)), staging
   if (!keep) fs::remove_all(staging_, ec);
   // Made now, before the run's work: a folder that cannot be (read-only, a name too long)
   // is bad input, said in words; a run that never writes removes it again.
-  if (fs::create_directories(staging_, ec); ec || !fs::is_directory(staging_, ec))
-    throw InputError(fmt::format("--out {}: cannot make the output folder: {}", short_path(out_),
-                                 path_problem(staging_, ec)));
+  if (fs::create_directories(staging_, ec); ec || !fs::is_directory(staging_, ec)) {
+    const auto e = static_cast<std::errc>(ec.value());
+    const std::string why =
+        e == std::errc::no_such_file_or_directory ? "a folder on its path cannot be made there"
+        : e == std::errc::permission_denied || e == std::errc::operation_not_permitted
+            ? "permission denied: the folder it goes in cannot be written"
+            : path_problem(staging_, ec);
+    throw InputError(fmt::format("--out {}: cannot make the output folder: {}", short_path(out_), why));
+  }
 }
 
 void StagedDir::publish() {
