@@ -275,3 +275,22 @@ TEST(MpiRanks, DeckOneRankCannotReadStopsEveryRank) {
   EXPECT_EQ(log.find("[rank 1 of 2]"), log.rfind("[rank 1 of 2]")) << log;  // printed once
   EXPECT_FALSE(std::filesystem::exists(out));
 }
+
+// Ranks given different valid decks (once MPI_ERR_TRUNCATE, exit 15, with OUT/.staging
+// left) are refused together before any work: exit 2, one message, nothing written.
+TEST(MpiRanks, DifferentDecksOnTheRanksAreRefused) {
+  const std::string a = deck_file("mpi_deck_a", 2), b = deck_file("mpi_deck_b", 3);
+  const std::string dir = test::scratch_dir("mpi_two_decks_out");
+  const std::string out = dir + "/out";
+  const std::string cmd = fmt::format(
+      "timeout 120 {} '{}' run '{}' --out '{}' --quiet --no-plot : -np 1 '{}' run '{}' --out '{}' --quiet --no-plot "
+      "> '{}.log' 2>&1",
+      mpirun(1), MPMX_BINARY, a, out, MPMX_BINARY, b, out, out);
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  const std::string log = test::read_file(out + ".log");
+  EXPECT_EQ(WEXITSTATUS(status), 2) << log;
+  EXPECT_NE(log.find("differs from another rank's"), std::string::npos) << log;
+  EXPECT_EQ(log.find("differs from"), log.rfind("differs from")) << log;  // printed once
+  EXPECT_FALSE(std::filesystem::exists(out));
+}

@@ -114,6 +114,10 @@ std::optional<Failure> first_failure(const std::optional<Failure>& mine) {
   f.kind = static_cast<Failure::Kind>(head[0]);
   f.message.resize(static_cast<std::size_t>(head[1]));
   check(MPI_Bcast(f.message.data(), head[1], MPI_CHAR, first, MPI_COMM_WORLD), "Bcast");
+  // Bad input of a rank other than the first is said with its rank (a deck only rank 1
+  // cannot read, say); the same text on every rank. A run's failures name their point.
+  if (first != 0 && f.kind == Failure::input && f.message.rfind("[rank ", 0) != 0)
+    f.message = fmt::format("[rank {} of {}] {}", first, g_size, f.message);
   return f;
 #else
   return mine;

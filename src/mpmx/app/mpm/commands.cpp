@@ -1,5 +1,7 @@
 // `mpmx run DECK --out DIR` and `mpmx check DECK`.
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <vector>
 
 #include <fmt/format.h>
@@ -10,12 +12,36 @@
 #include "mpmx/app/commands.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
+#include "mpmx/io/checked_file.hpp"
 #include "mpmx/core/ranks.hpp"
 #include "mpmx/app/mpm/deck.hpp"
 #include "mpmx/app/mpm/preflight.hpp"
 #include "mpmx/app/mpm/run.hpp"
 
 namespace mpmx::app {
+
+namespace {
+
+// Under mpirun every rank runs the same deck into the same folder: ranks given different
+// decks would disagree on the points later (an MPI message of the wrong size). Each rank
+// compares the hash of its deck's text and its --out with the others'; the lowest rank
+// that differs from the largest names itself, on every rank (exit 2, nothing written).
+void same_deck_on_every_rank(const std::string& deck, const std::string& out) {
+  if (ranks::size() <= 1) return;
+  ranks::together([&] {
+    std::ifstream in(deck, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    const double mine = static_cast<double>(io::text_hash(text.str() + '\0' + out) >> 11);  // exact in a double
+    const auto most = ranks::max({mine, -mine});
+    if (most[0] != -most[1] && mine != most[0])
+      throw InputError(fmt::format("its deck ({}) or --out ({}) differs from another rank's: under mpirun every "
+                                   "rank runs the same deck into the same folder",
+                                   deck, out));
+  });
+}
+
+}  // namespace
 
 using namespace mpm;
 
@@ -63,6 +89,7 @@ void add_mpm_commands(CLI::App& app) {
       preflight_mpm_run(cfg, ranks::size(), physical_memory_bytes(), args->force);
     });
     const std::string out = out_dir_of(args->out, args->deck);
+    same_deck_on_every_rank(args->deck, out);
     RunOptions o;
     o.out_dir = out;
     o.quiet = args->quiet;
