@@ -19,18 +19,21 @@ void Manufactured<Dim>::start(Particles<Dim>& p) const {
 }
 
 template <int Dim>
-void Manufactured<Dim>::add_body_force(const Particles<Dim>& p, const Stencil<Dim>& st, double t,
-                                       Grid<Dim>& g) const {
+double Manufactured<Dim>::add_body_force(const Particles<Dim>& p, const Stencil<Dim>& st, double t,
+                                         Grid<Dim>& g) const {
   const int w = st.width;
+  double power = 0.0;
   for (std::size_t q = 0; q < p.size(); ++q) {
     double X[Dim], mb[Dim];
     for (int a = 0; a < Dim; ++a) X[a] = X_[a][q];
     for (int a = 0; a < Dim; ++a) mb[a] = p.mass[q] * reference::body_force(m_, X, a, t);
+    for (int a = 0; a < Dim; ++a) power += mb[a] * p.v[a][q];
     for (int k = 0; k < w; ++k) {
       const std::size_t e = q * w + k;
       for (int a = 0; a < Dim; ++a) g.force[a][st.node[e]] += mb[a] * st.S[e];
     }
   }
+  return power;
 }
 
 template <int Dim>

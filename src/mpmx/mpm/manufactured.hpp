@@ -22,8 +22,9 @@ class Manufactured {
 
   // The exact velocity at t = 0.
   void start(Particles<Dim>& p) const;
-  // Adds sum_p m_p b(X_p, t) S_ip to the nodal forces.
-  void add_body_force(const Particles<Dim>& p, const Stencil<Dim>& st, double t, Grid<Dim>& g) const;
+  // Adds sum_p m_p b(X_p, t) S_ip to the nodal forces; returns the force's power on the
+  // points, sum_p m_p b . v_p (the energy account's body work, with the step's dt).
+  double add_body_force(const Particles<Dim>& p, const Stencil<Dim>& st, double t, Grid<Dim>& g) const;
   // |x_p - X_p - u(X_p, t)| over the points, volume-weighted, relative to the amplitude.
   reference::ErrorNorms displacement_error(const Particles<Dim>& p, double t) const;
 

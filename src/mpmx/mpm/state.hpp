@@ -21,6 +21,7 @@ namespace mpmx::mpm {
 struct Tallies {
   std::array<double, 3> boundary_impulse{};  // momentum the boundary nodes added
   double boundary_work = 0.0;      // energy the boundary nodes added
+  double body_work = 0.0;          // energy a manufactured solution's body force added (its power on v^n)
   double stress_work = 0.0;        // sum V sigma:grad v dt (eq. 4.11)
   double max_force_sum = 0.0;      // max over steps of |sum_i f_i| / sum_i |f_i|  (eq. 4.7)
   double node_mass = 0.0;          // sum of nodal masses at the last step (eq. 3.11)

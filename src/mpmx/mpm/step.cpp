@@ -45,7 +45,7 @@ void step_stencil(State<Dim>& s, double dt) {
   (*s.shape)(g, p, s.stencil);  // nearest nodes afresh, S_ip, G_ip
   clock.lap(Phase::stencil);
   p2g(p, s.stencil, s.small_strain, g, s.threads);  // m_i, v_i^n (eq. 3.16), f_i
-  if (s.manufactured) s.manufactured->add_body_force(p, s.stencil, s.time, g);
+  if (s.manufactured) s.tallies.body_work += dt * s.manufactured->add_body_force(p, s.stencil, s.time, g);
   clock.lap(Phase::p2g);
   const bool distribute = s.mass_distribution.on;
   if (distribute) distribute_small_mass_forces(g, s.mass_distribution.threshold, s.mass_distribution.maps, s.threads);  // eqs. 7.4-7.6

@@ -27,7 +27,7 @@ void each_array(Particles<Dim>& p, F&& f) {
 }  // namespace
 
 io::CheckedKind run_checkpoint_kind(const std::string& deck_text, std::size_t points) {
-  return {"mpm_run", 2, io::text_hash(deck_text), points};  // 2: a 2-D run keeps sigma_zz
+  return {"mpm_run", 2, io::text_hash(deck_text), points};  // 2: sigma_zz in 2-D, the body force's work
 }
 
 template <int Dim>
@@ -37,7 +37,7 @@ void save_state(CheckpointOut& out, const State<Dim>& s) {
   out.number(s.time);
   const Tallies& t = s.tallies;
   for (double v : {t.boundary_impulse[0], t.boundary_impulse[1], t.boundary_impulse[2], t.boundary_work,
-                   t.stress_work, t.max_force_sum, t.node_mass})
+                   t.body_work, t.stress_work, t.max_force_sum, t.node_mass})
     out.number(v);
   auto& p = const_cast<Particles<Dim>&>(s.particles);
   each_array(p, [&](std::vector<double>& v) { out.numbers(v); });
@@ -60,7 +60,7 @@ void load_state(CheckpointIn& in, State<Dim>& s) {
   if (!(std::isfinite(s.time) && s.time >= 0.0)) throw in.refuse(at_time, fmt::format("a time of {}", s.time));
   Tallies& t = s.tallies;
   for (double* v : {&t.boundary_impulse[0], &t.boundary_impulse[1], &t.boundary_impulse[2], &t.boundary_work,
-                    &t.stress_work, &t.max_force_sum, &t.node_mass})
+                    &t.body_work, &t.stress_work, &t.max_force_sum, &t.node_mass})
     *v = in.number();
   const std::size_t n = s.particles.size();
   each_array(s.particles, [&](std::vector<double>& v) {

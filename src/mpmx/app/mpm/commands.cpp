@@ -119,7 +119,7 @@ void add_mpm_commands(CLI::App& app) {
     if (std::isfinite(r.stress_vs_direct_md))
       fmt::print("  stress vs direct MD (eq. 7.12): {:.2f}%\n", 100.0 * r.stress_vs_direct_md);
      if (std::isfinite(r.energy_growth))
-      fmt::print("  energy: total (kinetic + stored, less the boundary's work) {:+.3f}% of its scale{}\n",
+      fmt::print("  energy: total (kinetic + stored, less the work put in) {:+.3f}% of its scale{}\n",
                  100.0 * r.energy_growth, r.energy_grew ? " (past time.energy_growth: status energy_growth)" : "");
   });
 

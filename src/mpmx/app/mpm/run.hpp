@@ -45,6 +45,7 @@ struct RunResultOf {
   double momentum_scale = 0.0;                // max sum m|v| seen at the ends
   double max_force_sum = 0.0;                 // max_steps |sum f| / sum |f|
   double kinetic_initial = 0.0, kinetic_final = 0.0, stress_work = 0.0, boundary_work = 0.0;
+  double body_work = 0.0;                     // a manufactured solution's body force's
   double stored_initial = 0.0, stored_final = 0.0;  // the materials' stored energy
   double max_kinetic = 0.0;
   double stress_vs_direct_md = std::nan("");  // eq. 7.12 over the compared times (direct_md)
@@ -54,7 +55,7 @@ struct RunResultOf {
   double rank_imbalance = 1.0;                // the slowest rank's MD time over the mean
   int rebalances = 0;                         // checkpoints at which boxes moved between ranks
   bool interrupted = false;                   // stopped by Ctrl-C (or stop_after): checkpoint written
-  // The total energy's growth (kinetic + stored less the boundary's work, over the
+  // The total energy's growth (kinetic + stored less the work put in, over the
   // initial scale) at the end or where the run stopped; NaN where the law keeps no
   // energy account. Past time.energy_growth the run's status is "energy_growth".
   double energy_growth = std::nan("");

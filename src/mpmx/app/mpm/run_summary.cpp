@@ -49,6 +49,7 @@ void record_conservation(const RunResultOf<Dim>& r, io::RunRecord& rec) {
   rec.set("conservation.energy.error", r.energy_error());
   rec.set("conservation.energy.relative_error", r.max_kinetic > 0 ? r.energy_error() / r.max_kinetic : 0.0);
   if (std::isfinite(r.energy_growth)) rec.set("conservation.energy.growth", r.energy_growth);
+  if (r.body_work != 0.0) rec.set("conservation.energy.body_work", r.body_work);
 }
 
 // A law with a model inside every point (md_closure's boxes): their work and figures.
