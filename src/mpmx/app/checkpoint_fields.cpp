@@ -47,20 +47,16 @@ InputError CheckpointIn::refuse(long long at, const std::string& why) const {
 void CheckpointIn::check(long long at, const char* what) {
   if (!in_) throw refuse(at, fmt::format("the file ends inside {}: truncated", what));
 }
-double CheckpointIn::number() {
+template <class T>
+T CheckpointIn::scalar(const char* what) {
   const long long at = offset();
-  double v = 0;
+  T v{};
   in_.read(reinterpret_cast<char*>(&v), sizeof v);
-  check(at, "a number");
+  check(at, what);
   return v;
 }
-std::int64_t CheckpointIn::integer() {
-  const long long at = offset();
-  std::int64_t v = 0;
-  in_.read(reinterpret_cast<char*>(&v), sizeof v);
-  check(at, "an integer");
-  return v;
-}
+double CheckpointIn::number() { return scalar<double>("a number"); }
+std::int64_t CheckpointIn::integer() { return scalar<std::int64_t>("an integer"); }
 std::string CheckpointIn::text() {
   const long long at = offset();
   std::uint64_t n = 0;

@@ -61,6 +61,8 @@ class CheckpointIn {
  private:
   void check(long long at, const char* what);
   template <class T>
+  T scalar(const char* what);
+  template <class T>
   std::vector<T> list(const char* what);
   std::istream& in_;
   std::string name_;
