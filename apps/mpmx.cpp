@@ -73,7 +73,8 @@ std::string agreed_parse_failure(const std::string& message) {
   if (ranks::size() == 1) return message;
   using F = ranks::Failure;
   const auto agreed = ranks::first_failure(
-      F{F::input, ranks::root() ? message : fmt::format("[rank {} of {}] {}", ranks::rank(), ranks::size(), message)});
+      F{F::input, ranks::root() ? message : fmt::format("[rank {} of {}] {}", ranks::rank(), ranks::size(), message)},
+      ranks::Wait::input);
   ranks::mark_agreed();
   return agreed->message;
 }
@@ -89,8 +90,8 @@ int run(int argc, char** argv) {
   });
   app.require_subcommand(1);
   app.footer("Exit status: 0 done, 1 internal error, 2 bad input, 3 run stopped by the physics (partial "
-             "result written), 130 interrupted by Ctrl-C or SIGTERM (run, md, dpd: a checkpoint written, --resume "
-             "continues; fit-dpd: not resumable).");
+             "result written), 130 interrupted by Ctrl-C or SIGTERM (a checkpoint written: --resume continues; fit-dpd "
+             "from its last finished stage).");
   mpmx::app::add_mpm_commands(app);
   mpmx::app::add_md_commands(app);
   mpmx::app::add_dpd_commands(app);
@@ -151,7 +152,11 @@ int run(int argc, char** argv) {
                                               mpmx::short_path(e.path1().string()),
                                               mpmx::path_problem(e.path1(), e.code())));
   } catch (const std::exception& e) {
-    return finish(code::internal, fmt::format("mpmx: {}\n", e.what()));
+    // Every input and physics failure has its own type above: what lands here is a fault
+    // of mpmx itself, said as one (with the library's words as the detail).
+    return finish(code::internal, fmt::format("mpmx: internal error while running `{}`: {}. This is a fault in "
+                                              "mpmx, not in the input: please report it with the deck.\n",
+                                              command_line(argc, argv), e.what()));
   }
   return code::done;
 }

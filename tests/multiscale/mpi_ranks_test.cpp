@@ -294,3 +294,25 @@ TEST(MpiRanks, DifferentDecksOnTheRanksAreRefused) {
   EXPECT_EQ(log.find("differs from"), log.rfind("differs from")) << log;  // printed once
   EXPECT_FALSE(std::filesystem::exists(out));
 }
+
+// Issue 31: a rank that never reaches the deck's agreement (here its deck is a named pipe
+// nobody writes, as a file on a hung network disk would be) no longer keeps the others
+// spinning for ever: they wait MPMX_AGREE_SECONDS, then end the job with exit 2 and a
+// sentence, and nothing is written.
+TEST(MpiRanks, ARankThatNeverAnswersEndsTheJobAfterTheBound) {
+  const std::string deck = deck_file("mpi_stuck", 2);
+  const std::string dir = test::scratch_dir("mpi_stuck_out");
+  const std::string out = dir + "/out", pipe = dir + "/deck_on_a_hung_disk.toml";
+  ASSERT_EQ(std::system(fmt::format("mkfifo '{}'", pipe).c_str()), 0);
+  const std::string cmd = fmt::format(
+      "MPMX_AGREE_SECONDS=3 timeout 120 {} -x MPMX_AGREE_SECONDS '{}' run '{}' --out '{}' --quiet --no-plot : "
+      "-np 1 '{}' run '{}' --out '{}' --quiet --no-plot > '{}.log' 2>&1",
+      mpirun(1), MPMX_BINARY, deck, out, MPMX_BINARY, pipe, out, out);
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  const std::string log = test::read_file(out + ".log");
+  EXPECT_EQ(WEXITSTATUS(status), 2) << log;  // 124: the timeout, a hang
+  EXPECT_NE(log.find("[rank 0 of 2] mpmx: the other ranks did not reach"), std::string::npos) << log;
+  EXPECT_NE(log.find("within 3 s"), std::string::npos) << log;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}

@@ -1,11 +1,15 @@
 #include "mpmx/core/ranks.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <limits>
 #include <new>
 #include <stdexcept>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -33,6 +37,31 @@ bool launched() {
 
 void check(int rc, const char* what) {
   if (rc != MPI_SUCCESS) throw std::runtime_error(fmt::format("MPI: {} failed (error {})", what, rc));
+}
+
+// Waits for r. With a bound (seconds), by testing it every millisecond: a rank waiting
+// for a late one sleeps in between rather than spinning in MPI's progress loop, and past
+// the bound the job ends (exit 2) with a sentence from this rank. Without one (the
+// agreements between a run's steps, where every rank has just met in a collective), MPI's
+// own wait.
+void wait_for(MPI_Request& r, double bound) {
+  if (bound <= 0) return check(MPI_Wait(&r, MPI_STATUS_IGNORE), "Wait");
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  for (int done = 0;;) {
+    check(MPI_Test(&r, &done, MPI_STATUS_IGNORE), "Test");
+    if (done) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (std::chrono::duration<double>(clock::now() - start).count() > bound) {
+      fmt::print(stderr,
+                 "[rank {} of {}] mpmx: the other ranks did not reach the reading of the command line and deck "
+                 "within {:g} s (MPMX_AGREE_SECONDS): a rank is stuck or was started on another command line; "
+                 "the job is stopped\n",
+                 g_rank, g_size, bound);
+      std::fflush(stderr);
+      MPI_Abort(MPI_COMM_WORLD, 2);
+    }
+  }
 }
 
 int checked_count(std::size_t n) {
@@ -102,11 +131,25 @@ void raise(const Failure& f) {
   throw std::runtime_error(f.message);
 }
 
-std::optional<Failure> first_failure(const std::optional<Failure>& mine) {
+double input_wait_seconds() {
+  const char* text = std::getenv("MPMX_AGREE_SECONDS");
+  if (!text || !*text) return 300.0;
+  char* end = nullptr;
+  const double s = std::strtod(text, &end);
+  if (*end != '\0' || !std::isfinite(s) || s <= 0 || s > 1e6)
+    throw InputError(fmt::format("MPMX_AGREE_SECONDS = '{}': expected seconds, a number above 0 and at most 1e6",
+                                 std::string(text).substr(0, 40)));
+  return s;
+}
+
+std::optional<Failure> first_failure(const std::optional<Failure>& mine, [[maybe_unused]] Wait wait) {
   if (g_size == 1) return mine;
 #ifdef MPMX_HAVE_MPI
+  const double bound = wait == Wait::input ? input_wait_seconds() : 0.0;  // 0: none
   int first = mine ? g_rank : g_size;
-  check(MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD), "Allreduce");
+  MPI_Request request;
+  check(MPI_Iallreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD, &request), "Iallreduce");
+  wait_for(request, bound);
   if (first == g_size) return std::nullopt;
   Failure f = first == g_rank ? *mine : Failure{};
   int head[2] = {static_cast<int>(f.kind), checked_count(f.message.size())};
@@ -124,7 +167,7 @@ std::optional<Failure> first_failure(const std::optional<Failure>& mine) {
 #endif
 }
 
-void together(const std::function<void()>& f) {
+void together(const std::function<void()>& f, Wait wait) {
   std::optional<Failure> mine;
   try {
     f();
@@ -133,7 +176,7 @@ void together(const std::function<void()>& f) {
   } catch (const std::exception&) {
     mine = current_failure();
   }
-  if (const auto agreed = first_failure(mine)) {
+  if (const auto agreed = first_failure(mine, wait)) {
     mark_agreed();
     raise(*agreed);
   }

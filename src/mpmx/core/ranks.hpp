@@ -41,11 +41,19 @@ Failure current_failure();
 // Throws the error a Failure describes (InputError, RunError, std::runtime_error).
 [[noreturn]] void raise(const Failure& f);
 
+// How long a rank waits for the others in an agreement. `unbounded`: the steps of a run,
+// where ranks arrive as their work allows. `input`: the agreements on the command line
+// and the deck, which every rank reaches within moments of the others; a rank that does
+// not (stuck, or started on another command line) ends the job, exit 2, after
+// MPMX_AGREE_SECONDS (default 300) instead of leaving the rest waiting for ever.
+enum class Wait { unbounded, input };
+double input_wait_seconds();  // MPMX_AGREE_SECONDS, checked
+
 // Collective: the failure of the lowest failing rank, the same on every rank.
-std::optional<Failure> first_failure(const std::optional<Failure>& mine);
+std::optional<Failure> first_failure(const std::optional<Failure>& mine, Wait wait = Wait::unbounded);
 // Collective: runs f on every rank; if it threw on any, every rank throws the lowest
 // failing rank's error (marked agreed).
-void together(const std::function<void()>& f);
+void together(const std::function<void()>& f, Wait wait = Wait::unbounded);
 // Whether the error being handled was agreed by every rank (exit cleanly), or is this
 // rank's alone (the others cannot be told: the job must be aborted).
 bool failure_agreed();

@@ -38,7 +38,7 @@ void same_deck_on_every_rank(const std::string& deck, const std::string& out) {
       throw InputError(fmt::format("its deck ({}) or --out ({}) differs from another rank's: under mpirun every "
                                    "rank runs the same deck into the same folder",
                                    deck, out));
-  });
+  }, ranks::Wait::input);
 }
 
 }  // namespace
@@ -87,7 +87,7 @@ void add_mpm_commands(CLI::App& app) {
     ranks::together([&] {
       cfg = read_mpm_deck(args->deck);
       preflight_mpm_run(cfg, ranks::size(), physical_memory_bytes(), args->force);
-    });
+    }, ranks::Wait::input);
     const std::string out = out_dir_of(args->out, args->deck);
     same_deck_on_every_rank(args->deck, out);
     RunOptions o;
@@ -154,6 +154,9 @@ void add_mpm_commands(CLI::App& app) {
                                  : std::string(),
                budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string(),
                budget.ranks > 1 ? fmt::format(" (each of {} ranks)", budget.ranks) : std::string());
+    fmt::print("  the continuum at {:.3g} point-steps/s per core ({})\n", budget.point_rate,
+               budget.point_rate_measured ? "its scheme and law timed on this core just now"
+                                          : "a typical figure: the deck is short by it");
     if (budget.md_atom_steps > 0)
       fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.3g} atom-steps/s per core "
                  "({}), with one box per point: the most it can cost (boxes shared by history run fewer, as "
