@@ -16,6 +16,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/binary.hpp"
+#include "mpmx/core/interrupt.hpp"
 #include "mpmx/particles/lattice.hpp"
 
 namespace mpmx::multiscale {
@@ -135,6 +136,7 @@ void MdClosure<Dim>::initialize(const Points<Dim>& p) {
   try {
     batch_.for_each(todo.size(), [&](std::size_t k) {
       const std::size_t g = todo[k], q = groups_.members(g).front();
+      if (InterruptGuard::interrupted()) return;  // Ctrl-C: the boxes left are not built
       try {
         md::System box(md::fcc(cfg_.cells, cfg_.cells, cfg_.cells, a0, p.strain[0][q]), pot_, box_options());
         if (cfg_.temperature > 0) box.thermalize(cfg_.temperature, cfg_.seed, q);
@@ -154,6 +156,14 @@ void MdClosure<Dim>::initialize(const Points<Dim>& p) {
   if (failed) {
     boxes_.clear();
     boxes_.resize(G);
+  }
+  // Stopped while building (every rank learns it; mpirun signals them all): there is no
+  // state to keep yet, so the run ends here, its folder as it was.
+  if (ranks::max({InterruptGuard::interrupted() ? 1.0 : 0.0})[0] > 0) {
+    ranks::mark_agreed();
+    throw Interrupted(fmt::format("while the MD boxes were being built ({:.0f} s in): nothing was written and "
+                                  "there is nothing to resume; start the run again",
+                                  seconds_since(t0)));
   }
   stress_.assign(G, md::Mat3{});
   for (std::size_t g = 0; g < G; ++g)

@@ -58,4 +58,27 @@ TEST(Interrupt, SigtermToOneProcessLeavesACheckpointThatResumesExactly) {
   interrupt_and_resume("interrupt_term", "TERM");
 }
 
+// Ctrl-C while md_closure builds its boxes (before any step, so no state to keep): the
+// run says so and exits 130 at once, leaving its folder as it was (here: empty). It used
+// to die of the signal with no word and OUT/.staging left behind.
+TEST(Interrupt, CtrlCWhileTheBoxesAreBuiltEndsCleanly) {
+  auto c = test::tiny_bar(16, 3, 10, 300.0);
+  c.deck["material"]["md"].as_table()->insert_or_assign("relax_steps", 50000);  // about 20 s of building
+  const std::string deck = test::scratch_dir("interrupt_build") + "/tiny.toml";
+  std::ofstream(deck) << c.deck;
+  const std::string cut = test::scratch_dir("interrupt_build_cut");
+  const std::string script = test::scratch_dir("interrupt_build_script") + "/interrupt.sh";
+  std::ofstream(script) << fmt::format(
+      "'{}' run '{}' --quiet --no-plot --threads 2 --out '{}' > /dev/null 2> '{}.stderr' &\npid=$!\n"
+      "for i in $(seq 300); do [ -d '{}/.staging' ] && break; sleep 0.1; done\nsleep 1\nkill -INT $pid\nwait $pid\n",
+      MPMX_BINARY, deck, cut, cut, cut);
+  const int status = std::system(("bash '" + script + "'").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  const std::string err = test::read_file(cut + ".stderr");
+  ASSERT_EQ(WEXITSTATUS(status), 130) << err;
+  EXPECT_NE(err.find("interrupted: while the MD boxes were being built"), std::string::npos) << err;
+  EXPECT_NE(err.find("nothing to resume"), std::string::npos) << err;
+  EXPECT_TRUE(std::filesystem::is_empty(cut));  // no .staging, no run.json, no checkpoint
+}
+
 }  // namespace

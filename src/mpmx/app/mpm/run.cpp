@@ -70,7 +70,13 @@ class ContinuumRun {
     if (!o.resume && !o.quiet && ranks::root() && c.material.spec)
       if (const std::string note = c.material.spec->build_note(); !note.empty())
         fmt::print(stderr, "{}: {}\n", c.id, note);
-    r.state = make_state<Dim>(c, !o.resume, o.threads);
+    {
+      // Ctrl-C while the MD boxes are built ends the run cleanly (md_closure stops there).
+      InterruptGuard building(folder_.checkpoints);
+      r.state = make_state<Dim>(c, !o.resume, o.threads);
+      if (InterruptGuard::interrupted())
+        throw Interrupted("while the run was being set up: nothing was written; start the run again");
+    }
     const material::Subscale* sub = s_.material->subscale();
     r.threads = sub ? sub->threads() : 1;
     rec_.set("version", MPMX_VERSION);
