@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/app/dpd/particle_rate.hpp"
 #include "mpmx/core/error.hpp"
 
 namespace mpmx::app::dpd {
@@ -19,16 +20,18 @@ DpdBudget estimate_dpd(const DpdConfig& c) {
   const double steps = static_cast<double>(c.equilibrate ? c.equilibrate_steps : 0) + static_cast<double>(c.steps);
   b.particle_steps = b.particles * steps;
   b.work_key = c.equilibrate && c.equilibrate_steps > 0 ? "equilibrate.steps + run.steps" : "run.steps";
+  if (b.seconds() > kDpdTimeRateAboveSeconds)
+    if (const double rate = measure_particle_steps_per_second(c); rate > 0) b.rate = rate, b.rate_measured = true;
   return b;
 }
 
 void check_dpd_work(const DpdBudget& b, bool force) {
-  if (force || !(b.particle_steps > kDpdWorkLimit)) return;
+  if (force || !(b.seconds() > kDpdWorkLimitSeconds)) return;
   throw InputError(fmt::format(
-      "{}: {:.4g} particles x {:.4g} steps = {:.4g} particle-steps, about {:.3g} days at {:.2g} particle-steps/s: "
-      "more than the {:.3g} particle-steps (a day) a run takes without --force",
-      b.work_key, b.particles, b.particle_steps / b.particles, b.particle_steps, b.seconds() / 86400.0,
-      kDpdParticleStepsPerSecond, kDpdWorkLimit));
+      "{}: {:.4g} particles x {:.4g} steps = {:.4g} particle-steps, about {:.3g} days at {:.2g} particle-steps/s "
+      "({}): more than the day a run takes without --force",
+      b.work_key, b.particles, b.particle_steps / b.particles, b.particle_steps, b.seconds() / 86400.0, b.rate,
+      b.rate_measured ? "timed on this core" : "a typical figure"));
 }
 
 }  // namespace mpmx::app::dpd

@@ -10,20 +10,25 @@
 namespace mpmx::app::dpd {
 
 // Particle-steps a second on one core at the seed's density and 12 Angstrom cutoff
-// (D1: 12,800 particles, 6,000 steps in about 2 minutes), for the estimate only.
+// (D1: 12,800 particles, 6,000 steps in about 2 minutes): the typical figure, for decks
+// of under a minute by it; a longer one is estimated at the rate its own system is timed
+// at here (particle_rate.hpp).
 inline constexpr double kDpdParticleStepsPerSecond = 5e5;
-inline constexpr double kDpdWorkLimit = 86400.0 * kDpdParticleStepsPerSecond;
+inline constexpr double kDpdTimeRateAboveSeconds = 60.0;
+inline constexpr double kDpdWorkLimitSeconds = 86400.0;
 
 struct DpdBudget {
   double particles = 0;       // in the blocks
   double particle_steps = 0;  // particles x (equilibrate.steps + run.steps)
   std::string work_key;       // "run.steps" or "equilibrate.steps + run.steps"
-  double seconds() const { return particle_steps / kDpdParticleStepsPerSecond; }
+  double rate = kDpdParticleStepsPerSecond;  // particle-steps a second of one core
+  bool rate_measured = false;                // that rate timed here for this deck
+  double seconds() const { return particle_steps / rate; }
 };
 
 double block_particles(const DpdConfig& c);
 DpdBudget estimate_dpd(const DpdConfig& c);
-// Throws InputError when the work exceeds kDpdWorkLimit, unless `force`.
+// Throws InputError when the work exceeds a day, unless `force`.
 void check_dpd_work(const DpdBudget& b, bool force);
 
 }  // namespace mpmx::app::dpd

@@ -10,6 +10,7 @@
 #include "mpmx/md/budget.hpp"
 #include "mpmx/app/mpm/bodies.hpp"
 #include "mpmx/app/mpm/convergence.hpp"
+#include "mpmx/app/mpm/point_rate.hpp"
 
 namespace mpmx::app {
 
@@ -34,8 +35,9 @@ double point_bytes(int dim, double subpoints) {
 }
 double node_bytes(int dim) { return kOverhead * 8.0 * (4 + 6 * dim); }
 
-// One grid's figures; `cost` the law's per point (timed once for every level of a study).
-MpmBudget estimate_level(const MpmConfig& c, int ranks, const material::PointCost& cost) {
+// One grid's figures; `cost` the law's per point (timed once for every level of a study),
+// `rate` the continuum's point-steps a second (0: the typical figure).
+MpmBudget estimate_level(const MpmConfig& c, int ranks, const material::PointCost& cost, double rate) {
   MpmBudget b;
   b.deck = c.deck_path;
   b.ranks = ranks > 1 ? ranks : 1;
@@ -59,8 +61,9 @@ MpmBudget estimate_level(const MpmConfig& c, int ranks, const material::PointCos
   b.bytes = kBytesFixed + pb + nb;
   b.size_key = pb >= nb ? (b.subpoints > 1 ? "particles.per_cell and scheme.subpoints" : "particles.per_cell and grid.cells")
                         : "grid.cells";
-  const double rate = dim == 1 ? kPointSteps1dPerSecond : kPointStepsPerSecond;
-  b.seconds = b.points * b.subpoints * b.steps / rate;
+  b.point_rate_measured = rate > 0;
+  b.point_rate = rate > 0 ? rate : (dim == 1 ? kPointSteps1dPerSecond : kPointStepsPerSecond);
+  b.seconds = b.points * b.subpoints * b.steps / b.point_rate;
   // A law with a model inside every point (md_closure's boxes): its atoms, memory and work.
   if (cost.atoms > 0) {
     b.md_atoms_per_point = cost.atoms;
@@ -76,11 +79,9 @@ MpmBudget estimate_level(const MpmConfig& c, int ranks, const material::PointCos
   return b;
 }
 
-}  // namespace
-
-MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
-  const material::PointCost cost = c.material.spec ? c.material.spec->point_cost(c.dt) : material::PointCost{};
-  if (c.convergence_levels <= 1) return estimate_level(c, ranks, cost);
+// Every grid of the deck: one, or a convergence study's levels.
+MpmBudget estimate_levels(const MpmConfig& c, int ranks, const material::PointCost& cost, double rate) {
+  if (c.convergence_levels <= 1) return estimate_level(c, ranks, cost, rate);
   // A study runs its levels one after another: its memory is the finest grid's, its work
   // that of every level together (each has 2^D times the points of the one before and
   // twice the steps).
@@ -90,7 +91,7 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
   for (int k = 0; k <= last; ++k) {
     material::PointCost ck = cost;
     ck.steps_per_step = std::max(1.0, cost.steps_per_step / (1 << k));  // time.dt / 2^k over material.md.dt
-    b = estimate_level(refined(c, k), ranks, ck);
+    b = estimate_level(refined(c, k), ranks, ck, rate);
     seconds += b.seconds, atom_steps += b.md_atom_steps;
   }
   b.seconds = seconds, b.md_atom_steps = atom_steps;
@@ -98,6 +99,18 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
   b.size_key = fmt::format("convergence.levels = {} (its finest grid, {} times grid.cells along each axis; {})",
                            c.convergence_levels, 1 << last, b.size_key);
   b.work_key = "convergence.levels, time.end / time.dt";
+  return b;
+}
+
+}  // namespace
+
+MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
+  const material::PointCost cost = c.material.spec ? c.material.spec->point_cost(c.dt) : material::PointCost{};
+  MpmBudget b = estimate_levels(c, ranks, cost, 0.0);
+  // The continuum's own work long enough to matter: timed for this deck on this machine.
+  const double continuum = b.seconds - b.md_atom_steps / std::max(b.md_rate, 1.0) / b.ranks;
+  if (continuum > kTimeRateAboveSeconds)
+    if (const double rate = measure_point_steps_per_second(c); rate > 0) b = estimate_levels(c, ranks, cost, rate);
   return b;
 }
 

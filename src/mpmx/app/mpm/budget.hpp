@@ -12,9 +12,11 @@ namespace mpmx::app {
 
 // Point-steps per second on one core, on the cautious side of docs/performance.md:
 // 1-D runs 5e7-1.9e8 (fused kernels), 2-D and 3-D 0.9e6-6.6e6; a sub-point costs about
-// as much as a point.
+// as much as a point. The typical figures, for decks of under a minute by them; a longer
+// one is estimated at the rate its own scheme and law are timed at here (point_rate.hpp).
 inline constexpr double kPointSteps1dPerSecond = 2e7;
 inline constexpr double kPointStepsPerSecond = 5e5;
+inline constexpr double kTimeRateAboveSeconds = 60.0;
 // A day of work: the most a run takes without --force.
 inline constexpr double kWorkLimitSeconds = 86400.0;
 
@@ -30,6 +32,8 @@ struct MpmBudget {
   int ranks = 1;           // the boxes spread over so many ranks: bytes and seconds are one rank's
   double bytes = 0;        // estimated peak memory
   double seconds = 0;      // estimated wall time on one core
+  double point_rate = 0;   // the continuum's point-steps a second of one core the work is scaled by
+  bool point_rate_measured = false;  // that rate timed on this machine for this deck, not the typical figure
   double steps = 0;         // one grid's (a study: its finest)
   std::string size_key;    // the key the largest memory share comes from
   std::string deck;        // the deck's path, for the refusal's message
