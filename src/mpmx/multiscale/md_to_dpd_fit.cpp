@@ -66,7 +66,16 @@ FitResult fit_morse(const std::vector<IsothermPoint>& md, const FitOptions& o) {
     return std::array<double, 2>{b.c11 * units::eV_per_A3_in_GPa, b.c12 * units::eV_per_A3_in_GPa};
   };
   std::vector<double> th = {std::log(o.start.d0), std::log(o.start.alpha), std::log(o.start.r0)};
-  for (int it = 0; it <= o.iterations; ++it) {
+  int first = 0;
+  if (const auto& from = o.resume_from) {
+    if (from->theta.size() != 3 || from->thermal.size() != n || from->next < 1 || from->next > o.iterations)
+      throw InputError(fmt::format("fit-dpd: a stopped fit's state does not fit this deck (round {} of {}, {} "
+                                   "densities for {})",
+                                   from->next, o.iterations, from->thermal.size(), n));
+    first = from->next, th = from->theta, thermal = from->thermal;
+    thermal11 = from->thermal11, thermal12 = from->thermal12, r.evaluations = from->evaluations;
+  }
+  for (int it = first; it <= o.iterations; ++it) {
     auto objective = [&](const std::vector<double>& x) {
       const dpd::MorsePotential m = morse_of(x, o.start);
       if (!(m.r0 < m.rc)) return 1e300;
@@ -102,8 +111,8 @@ FitResult fit_morse(const std::vector<IsothermPoint>& md, const FitOptions& o) {
       thermal11 = r.dpd_constants.c11 - c[0];
       thermal12 = r.dpd_constants.c12 - c[1];
     }
-    if (o.on_round) o.on_round(it);
     if (it == o.iterations) break;
+    if (o.on_round) o.on_round(FitRound{it + 1, th, thermal, thermal11, thermal12, r.evaluations});
   }
   r.thermal = thermal;
   r.max_deviation_over_range = 0;

@@ -27,6 +27,7 @@
 // the pressure's, by DPDE strained boxes each round. Without them (the isotherm-only fit,
 // the D0 deck) the objective and every number are as before.
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "mpmx/dpd/potential/morse.hpp"
@@ -43,12 +44,26 @@ struct ElasticTargets {
   StrainedBoxOptions boxes;    // the DPDE strained boxes (temperature, mass, gamma, C_v set by the fit)
 };
 
+// A fit between two rounds: all the next round starts from. A round is a function of it
+// alone (its DPDE runs draw from the deck's seeds), so a fit resumed from one continues
+// with the bits of a fit never stopped.
+struct FitRound {
+  int next = 0;                 // the round to run next (1..iterations)
+  std::vector<double> theta;    // log D0, log alpha, log r0 after the last round's fit
+  std::vector<double> thermal;  // GPa, the thermal pressure per density the next fit adds
+  double thermal11 = 0, thermal12 = 0;  // GPa, the thermal part of C11 and C12
+  int evaluations = 0;          // of the objective so far
+};
+
 struct FitOptions {
   double atoms_per_particle = 8;
   ElasticTargets elastic;
   dpd::MorsePotential start;  // initial parameters and the fixed cutoff / shift
   int iterations = 3;    // thermal-correction rounds (each a set of DPDE runs)
-  std::function<void(int)> on_round;  // called with each finished round (0..iterations), for progress
+  // Called with each finished round but the last (rounds 0..iterations - 1), with what the
+  // next starts from: for progress and checkpoints.
+  std::function<void(const FitRound&)> on_round;
+  std::optional<FitRound> resume_from;  // continue a stopped fit at resume_from->next
   DpdIsothermOptions dpd;
 };
 

@@ -4,13 +4,15 @@
 // ends with every file an uninterrupted run writes, byte for byte (run.json less its
 // wall-clock figures): a DPDE crystal with a grip, stopped in its run or in its
 // equilibration, and a concurrent DPD/MPM rod with its grid, continuum points, free
-// flyer, tracks and profiles. A damaged checkpoint is refused (exit 2). `fit-dpd`, which
-// cannot resume, stops at once: exit 130, run.json "interrupted", its work hidden in
-// OUT/.staging and nothing else in OUT changed.
+// flyer, tracks and profiles. A damaged checkpoint is refused (exit 2). `fit-dpd` stops
+// at once: exit 130, run.json "interrupted", the stages it finished in OUT/checkpoint.bin,
+// its other work hidden in OUT/.staging and nothing else in OUT changed; `--resume`
+// continues from the last finished stage to the files of a fit never stopped.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <fmt/format.h>
@@ -221,6 +223,99 @@ TEST(DpdInterrupt, FitDpdStopsAtOnceLeavingOutAsItWas) {
   EXPECT_EQ(slurp(out / "earlier.csv"), "an earlier run's table\n");
   EXPECT_TRUE(fs::is_directory(out / ".staging"));
   EXPECT_FALSE(fs::exists(out / "isotherm.csv"));
+}
+
+// D0 with [elastic] made small: 3 densities of 108 atoms, 108 mesoparticles, 2 rounds.
+std::string tiny_fit() {
+  return deck("tiny_fit.toml", R"([case]
+id = "fit_tiny"
+[md.potential]
+style = "sutton_chen"
+epsilon = 1.2382e-2
+a = 3.61
+c = 39.432
+n = 9
+m = 6
+cutoff = 9.0
+mass = 63.546
+[md]
+lattice_constant = 3.61
+cells = 3
+temperature = 298.0
+dt = 0.002
+equilibrate_steps = 200
+sample_steps = 200
+seed = 1
+[densities]
+from = 0.95
+to = 1.05
+points = 3
+[dpd]
+atoms_per_particle = 8
+cutoff = 12.0
+start = { d0 = 2.7432, alpha = 0.6794, r0 = 5.732 }
+cells = 3
+gamma = 0.2
+heat_capacity_kB = 21.0
+dt = 0.005
+equilibrate_steps = 100
+sample_steps = 200
+iterations = 2
+seed = 1
+[elastic]
+weight = 1.0
+strain = 0.01
+md_sample_steps = 200
+dpd_sample_steps = 200
+[output]
+potential_file = "tiny_morse.toml"
+)");
+}
+
+// run.json less its wall-clock figures.
+std::string physics_of(const fs::path& run_json) {
+  std::string kept, line;
+  std::istringstream in(slurp(run_json));
+  while (std::getline(in, line))
+    if (line.find("wall_seconds") == std::string::npos && line.find("\"threads\"") == std::string::npos)
+      kept += line + "\n";
+  return kept;
+}
+
+// Stopped after each of its stages in turn (the MD isotherm, the MD constants, round 0,
+// round 1), then resumed on another thread count: the files of a fit never stopped.
+TEST(DpdInterrupt, FitDpdResumesFromItsLastStageToTheSameFiles) {
+  const std::string d = tiny_fit();
+  const fs::path whole = kDir / "fit_whole";
+  auto r = run_cli(fmt::format("fit-dpd '{}' --threads 2 --out '{}'", d, whole.string()));
+  ASSERT_EQ(r.status, 0) << r.output;
+  for (int stage : {1, 2, 3, 4}) {
+    const fs::path cut = kDir / fmt::format("fit_cut_{}", stage);
+    r = run_cli(fmt::format("fit-dpd '{}' --threads 2 --out '{}' --stop-after {}", d, cut.string(), stage));
+    ASSERT_EQ(r.status, 130) << r.output;
+    EXPECT_NE(r.output.find("--resume"), std::string::npos) << r.output;
+    ASSERT_TRUE(fs::exists(cut / "checkpoint.bin")) << stage;
+    EXPECT_NE(slurp(cut / "run.json").find("\"status\" : \"interrupted\""), std::string::npos);
+    r = run_cli(fmt::format("fit-dpd '{}' --threads 1 --out '{}' --resume", d, cut.string()));
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const char* f : {"isotherm.csv", "tiny_morse.toml"}) EXPECT_EQ(slurp(whole / f), slurp(cut / f)) << stage << f;
+    EXPECT_EQ(physics_of(whole / "run.json"), physics_of(cut / "run.json")) << stage;
+    EXPECT_FALSE(fs::exists(cut / "checkpoint.bin"));
+    EXPECT_FALSE(fs::exists(cut / ".staging"));
+  }
+  // Another deck's checkpoint, and none at all, are refused with exit 2.
+  const fs::path cut = kDir / "fit_cut_other";
+  r = run_cli(fmt::format("fit-dpd '{}' --threads 2 --out '{}' --stop-after 1", d, cut.string()));
+  ASSERT_EQ(r.status, 130) << r.output;
+  std::string other = slurp(d);
+  other.replace(other.find("seed = 1"), 8, "seed = 2");
+  const std::string d2 = deck("tiny_fit_other.toml", other);
+  r = run_cli(fmt::format("fit-dpd '{}' --out '{}' --resume", d2, cut.string()));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("another deck"), std::string::npos) << r.output;
+  r = run_cli(fmt::format("fit-dpd '{}' --out '{}' --resume", d, (kDir / "fit_nothing").string()));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("no checkpoint to resume from"), std::string::npos) << r.output;
 }
 
 }  // namespace

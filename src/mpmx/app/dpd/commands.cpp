@@ -3,6 +3,7 @@
 // the MD-to-DPD fit of D0.
 #include <filesystem>
 #include <memory>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -32,10 +33,11 @@ void check_dpd(const std::string& path, bool force) {
   auto deck = io::Deck::from_file(path);
   const dpd::DpdConfig config = dpd::read_dpd_config(deck);
   const dpd::DpdBudget budget = dpd::preflight_dpd(config, force);  // check refuses what the run would
-  fmt::print("{}: ok (dpd deck); {:.4g} particles, {:.4g} particle-steps ({}), about {} on one core at {:.2g} "
-             "particle-steps/s\n",
+  fmt::print("{}: ok (dpd deck); {:.4g} particles, {:.4g} particle-steps ({}), about {} on one core at {:.3g} "
+             "particle-steps/s ({})\n",
              path, budget.particles, budget.particle_steps, budget.work_key, format_duration(budget.seconds()),
-             dpd::kDpdParticleStepsPerSecond);
+             budget.rate,
+             budget.rate_measured ? "its system timed on this core just now" : "a typical figure: the deck is short by it");
 }
 
 // `fit-dpd --check`, and `mpmx check` of a fit deck.
@@ -106,16 +108,36 @@ void add_dpd_commands(CLI::App& app) {
   fit->add_option("--out", fargs->out, "output directory (default runs/<deck name>, as run)");
   fit->add_option("--threads", fargs->threads, "threads over the densities (default: all cores)");
   fit->add_flag("--check", fargs->check, "validate the deck and exit");
+  fit->add_flag("--resume", fargs->resume,
+                "continue a stopped fit from OUT/checkpoint.bin (its last finished stage; bit-for-bit)");
+  // For tests: stop as if interrupted once so many stages are finished.
+  fit->add_option("--stop-after", fargs->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   fit->callback([fargs] {
     if (fargs->check) return check_fit(fargs->deck, false);
     auto deck = io::Deck::from_file(fargs->deck);
     const dpd::FitConfig config = dpd::read_fit_config(deck);
     const std::string out = out_dir_of(fargs->out, fargs->deck);
     const int threads = threads_of(fargs->threads);
+    std::ostringstream text;
+    text << deck.table();
+    const std::string checkpoint = (std::filesystem::path(out) / "checkpoint.bin").string();
+    dpd::FitProgress from;
+    if (fargs->resume) {
+      if (!std::filesystem::exists(checkpoint))
+        throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint));
+      from = dpd::read_fit_checkpoint(checkpoint, text.str(), config.density_ratios.size());
+    }
     const auto r = io::run_staged(out, [&](const std::string& dir) {
-      dpd::FitStop on_signal(fargs->deck, out, deck.table());  // stops the fit at once, not resumable
-      return dpd::run_fit(config, dir, deck.table(), threads);
+      // Stops the fit at once, saving the stages it finished.
+      dpd::FitStop on_signal(fargs->deck, out, deck.table(), text.str(), config.density_ratios.size());
+      return dpd::run_fit(config, dir, deck.table(), threads, from, [&](const dpd::FitProgress& p) {
+        on_signal.keep(p);
+        const std::int64_t stages = (p.md ? 1 : 0) + (p.md_elastic ? 1 : 0) + (p.round ? p.round->next : 0);
+        if (fargs->stop_after > 0 && stages >= fargs->stop_after) on_signal.stop();
+      });
     });
+    std::error_code ec;
+    std::filesystem::remove(checkpoint, ec);  // the fit is whole: nothing to resume
     fmt::print("morse D0 = {:.6g} eV, alpha = {:.6g} 1/A, r0 = {:.6g} A, rc = {} A; max |P_DPDE - P_MD| = {:.3g} of "
                "the MD range; zero-pressure rho/rho0 MD {:.5f} DPDE {:.5f}; {:.3g} s -> {}/{}\n",
                r.potential.d0, r.potential.alpha, r.potential.r0, r.potential.rc, r.max_deviation_over_range,

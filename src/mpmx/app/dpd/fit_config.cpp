@@ -109,10 +109,11 @@ FitConfig read_fit_config(io::Deck& deck) {
   c.potential_file = out.string("potential_file", "dpd_potential.toml");
   out.check(!c.potential_file.empty() && c.potential_file.find('/') == std::string::npos, "potential_file",
             "must be a plain file name (written into the output folder)");
-  // Not a name the run writes itself, nor a folder name: it would overwrite run.json or
-  // isotherm.csv, or fail only after the whole fit (".staging" would lose the output).
-  out.check(c.potential_file != "run.json" && c.potential_file != "isotherm.csv", "potential_file",
-            "is one of the fit's own outputs (run.json, isotherm.csv): choose another name");
+  // Not a name the run writes itself, nor a folder name: it would overwrite run.json,
+  // isotherm.csv or a stopped fit's checkpoint, or fail only after the whole fit (".staging" would lose the output).
+  out.check(c.potential_file != "run.json" && c.potential_file != "isotherm.csv" &&
+                c.potential_file != "checkpoint.bin",
+            "potential_file", "is one of the fit's own outputs (run.json, isotherm.csv, checkpoint.bin): choose another name");
   out.check(c.potential_file.front() != '.', "potential_file",
             "must not start with '.' (\".\", \"..\" and the staging folder \".staging\" are folders)");
   deck.finish();

@@ -29,21 +29,35 @@ double fcc_density(double mass, double a) { return 4 * mass * 1.66053906660 / (a
 
 }  // namespace
 
-FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads) {
+FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads,
+                      const FitProgress& from, const std::function<void(const FitProgress&)>& keep) {
   namespace fs = std::filesystem;
   fs::create_directories(out_dir);
   const auto t0 = std::chrono::steady_clock::now();
   const md::Potential pot(c.md_potential);
   // Stages: the MD isotherm, the MD strained boxes ([elastic]), then each fit round.
   const int stages = 1 + (c.fit.elastic.on ? 1 : 0) + c.fit.iterations + 1;
-  Progress progress("fit-dpd stages", stages);
+  if (c.fit.elastic.on && from.round && !from.md_elastic)
+    throw InputError(fmt::format("{}: the checkpoint holds a fit round but not the MD crystal's elastic constants "
+                                 "[elastic] asks for; run afresh without --resume",
+                                 c.deck_file));
+  // A resumed fit starts after its last finished stage.
+  int done = from.md ? 1 + (from.md_elastic ? 1 : 0) + (from.round ? from.round->next : 0) : 0;
+  Progress progress("fit-dpd stages", stages, false, done);
+  FitProgress now = from;
+  auto finished = [&] {
+    progress.update(++done);
+    if (keep) keep(now);
+  };
   std::vector<double> lattice;
   for (double r : c.density_ratios) lattice.push_back(c.lattice_constant / std::cbrt(r));
   multiscale::MdIsothermOptions mo = c.md;
   mo.threads = threads;
-  const std::vector<multiscale::IsothermPoint> md = multiscale::md_isotherm(pot, lattice, mo);
-  int done = 1;
-  progress.update(done);
+  if (!now.md) {
+    now.md = multiscale::md_isotherm(pot, lattice, mo);
+    finished();
+  }
+  const std::vector<multiscale::IsothermPoint>& md = *now.md;
   multiscale::FitOptions fo = c.fit;
   fo.dpd.threads = threads;
   fo.dpd.mass = fo.atoms_per_particle * pot.mass(0);
@@ -58,14 +72,21 @@ FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml
                                    "between rho/rho0 = {} and {} ([densities] from, to)",
                                    c.deck_file, c.density_ratios.front(), c.density_ratios.back()));
     md_a0 = c.lattice_constant / std::cbrt(rho0);
-    multiscale::StrainedBoxOptions mo_el = c.md_elastic;
-    mo_el.threads = threads;
-    md_c = multiscale::md_strained_constants(pot, md_a0, mo_el);
-    progress.update(++done);
+    if (!now.md_elastic) {
+      multiscale::StrainedBoxOptions mo_el = c.md_elastic;
+      mo_el.threads = threads;
+      now.md_elastic = multiscale::md_strained_constants(pot, md_a0, mo_el);
+      finished();
+    }
+    md_c = *now.md_elastic;
     fo.elastic.c11 = md_c.c11, fo.elastic.c12 = md_c.c12;
     fo.elastic.lattice_constant = std::cbrt(fo.atoms_per_particle) * md_a0;
   }
-  fo.on_round = [&](int) { progress.update(++done); };
+  fo.resume_from = now.round;
+  fo.on_round = [&](const multiscale::FitRound& r) {
+    now.round = r;
+    finished();
+  };
   const multiscale::FitResult fit = multiscale::fit_morse(md, fo);
   progress.finish();
 

@@ -3,10 +3,12 @@
 // DIR/isotherm.csv, DIR/<potential file> and DIR/run.json (parameters, the largest
 // deviation over the MD pressure range, zero-pressure densities, D0's targets; with
 // [elastic] the MD crystal's and the model's C11, C12 and <100> bar speeds).
+#include <functional>
 #include <string>
 
 #include <toml++/toml.h>
 
+#include "mpmx/app/dpd/fit_checkpoint.hpp"
 #include "mpmx/app/dpd/fit_config.hpp"
 
 namespace mpmx::app::dpd {
@@ -22,6 +24,9 @@ struct FitRunSummary {
   double wall_seconds = 0;
 };
 
-FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads);
+// `from`: the stages a stopped fit finished (empty: a fresh fit); `keep` is given the
+// stages finished so far after each (for the checkpoint a signal writes).
+FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads,
+                      const FitProgress& from = {}, const std::function<void(const FitProgress&)>& keep = {});
 
 }  // namespace mpmx::app::dpd

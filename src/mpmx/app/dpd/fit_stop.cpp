@@ -14,8 +14,10 @@
 
 namespace mpmx::app::dpd {
 
-FitStop::FitStop(std::string deck_file, std::string out, const toml::table& deck_echo)
-    : deck_file_(std::move(deck_file)), out_(std::move(out)), deck_echo_(deck_echo), guard_(true) {
+FitStop::FitStop(std::string deck_file, std::string out, const toml::table& deck_echo, std::string deck_text,
+                 std::size_t densities)
+    : deck_file_(std::move(deck_file)), out_(std::move(out)), deck_text_(std::move(deck_text)),
+      densities_(densities), deck_echo_(deck_echo), guard_(true) {
   watcher_ = std::thread([this] {
     while (!done_.load()) {
       if (InterruptGuard::interrupted()) stop();
@@ -29,25 +31,42 @@ FitStop::~FitStop() {
   watcher_.join();
 }
 
-void FitStop::stop() const {
-  const std::string staging = io::StagedDir::staging_of(out_);
-  const toml::table rec{{"version", MPMX_VERSION},
-                        {"command", "fit-dpd"},
-                        {"status", "interrupted"},
-                        {"deck_file", deck_file_},
-                        {"deck", deck_echo_},
-                        {"partial_results", staging}};
+void FitStop::keep(const FitProgress& p) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  kept_ = p;
+}
+
+void FitStop::stop() {
+  const std::lock_guard<std::mutex> lock(mutex_);  // the fit keeps no stage while this writes
+  const std::string checkpoint = (std::filesystem::path(out_) / "checkpoint.bin").string();
   std::error_code ec;
   std::filesystem::create_directories(out_, ec);
+  bool saved = false;
+  toml::table rec{{"version", MPMX_VERSION},
+                  {"command", "fit-dpd"},
+                  {"status", "interrupted"},
+                  {"deck_file", deck_file_},
+                  {"deck", deck_echo_},
+                  {"stopped", kept_.stage()}};
   try {
+    if (!kept_.empty()) {
+      write_fit_checkpoint(checkpoint, deck_text_, densities_, kept_);
+      saved = true;
+      rec.insert("checkpoint", checkpoint);
+    } else {
+      std::filesystem::remove(checkpoint, ec);  // an older fit's: not this one's to resume
+    }
     io::write_file_atomic((std::filesystem::path(out_) / "run.json").string(), io::json_text(rec));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "mpmx: %s\n", e.what());
   }
-  const std::string msg = fmt::format(
-      "\nmpmx: interrupted: fit-dpd stopped; a fit cannot be resumed: its work so far is in {} (hidden, cleared by "
-      "the next run); start again with: mpmx fit-dpd {} --out {}\n",
-      staging, deck_file_, out_);
+  const std::string msg =
+      saved ? fmt::format("\nmpmx: interrupted: fit-dpd stopped {}; {} keeps the stages finished: continue with: "
+                          "mpmx fit-dpd {} --out {} --resume\n",
+                          kept_.stage(), checkpoint, deck_file_, out_)
+            : fmt::format("\nmpmx: interrupted: fit-dpd stopped {}: nothing to resume; start again with: mpmx "
+                          "fit-dpd {} --out {}\n",
+                          kept_.stage(), deck_file_, out_);
   std::fputs(msg.c_str(), stderr);
   std::fflush(stdout);
   std::fflush(stderr);
