@@ -99,7 +99,7 @@ INSTANTIATE_TEST_SUITE_P(Isa, EamPath, ::testing::ValuesIn(mpmx::isa_supported()
 TEST_P(EamPath, SameBitsAsTheScalarPath) {
   for (const bool mixed : {false, true})
     for (const bool per_atom : {false, true}) {
-      const Bits scalar = run("scalar", mixed, per_atom);
+      const Bits scalar = run(mpmx::isa_compiled().back(), mixed, per_atom);
       const Bits here = run(GetParam(), mixed, per_atom);
       ASSERT_GT(scalar.size(), 1000u);
       EXPECT_EQ(first_difference(here, scalar), -1) << "mixed " << mixed << ", per_atom " << per_atom;
@@ -109,7 +109,7 @@ TEST_P(EamPath, SameBitsAsTheScalarPath) {
 TEST_P(EamPath, TiledSameBitsAsTheScalarPath) {
   for (const bool mixed : {false, true})
     for (const bool per_atom : {false, true}) {
-      const Bits scalar = run("scalar", mixed, per_atom, {true, 2});
+      const Bits scalar = run(mpmx::isa_compiled().back(), mixed, per_atom, {true, 2});
       const Bits here = run(GetParam(), mixed, per_atom, {true, 2});
       ASSERT_GT(scalar.size(), 9000u);  // 1536 atoms
       EXPECT_EQ(first_difference(here, scalar), -1) << "mixed " << mixed << ", per_atom " << per_atom;
@@ -160,7 +160,7 @@ TEST(EamTiled, AgreesWithTheWholeListToRoundOff) {
 // double and mixed precision give different numbers (the test above compares like with
 // like).
 TEST(EamPathSanity, MixedPrecisionDiffersFromDouble) {
-  EXPECT_NE(first_difference(run("scalar", true, false), run("scalar", false, false)), -1);
+  EXPECT_NE(first_difference(run(mpmx::isa_compiled().back(), true, false), run(mpmx::isa_compiled().back(), false, false)), -1);
   mpmx::isa_use(mpmx::isa_supported().front());
 }
 

@@ -114,7 +114,8 @@ TEST(Stress, VirialIsStrainDerivativeOfEnergy) {
   System sys(c, pot, o);
   const Mat3 sigma = sys.stress();  // atoms at rest: potential part only
   const double h = 1e-6;
-  for (auto [a, b] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) {
+  for (auto [a_, b_] : {std::pair{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}) {
+    const int a = a_, b = b_;  // a lambda captures a copy (clang 14 takes no structured binding)
     auto energy = [&](double e) {
       // Upper-triangular displacement gradient: x_a += e x_b, box h <- (I + e E_ab) h.
       Mat3 g{};

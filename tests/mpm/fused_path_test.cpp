@@ -135,7 +135,8 @@ TEST_P(FusedPath, ElasticBarMatchesStencil) {
 // The isothermal shock tube with viscosity: a gas, particles crossing cells, and with one
 // particle per cell and 16 sub-points, sub-points more than a cell from their particle.
 TEST_P(FusedPath, ShockTubeMatchesStencil) {
-  for (const auto& [scheme, sub] : kFused) {
+  for (const auto& [scheme, subpoints] : kFused) {
+    const int sub = subpoints;  // a lambda captures a copy (clang 14 takes no structured binding)
     const auto c = with_scheme("S3_ddmp_1ppc_16sub.toml", scheme, sub ? 16 : 0, [&](toml::table& t) {
       // The original MPM with one particle per cell flies apart on this shock (S1).
       if (sub == 0) t["particles"].as_table()->insert_or_assign("per_cell", 4);

@@ -76,7 +76,7 @@ TEST_P(SearchPath, EveryPairWithinTheListRadiusOnceAndTheScalarPathsList) {
     for (const std::uint32_t seed : {4u, 5u, 6u, 7u}) {
       const auto [at, box] = random_box(seed, seed % 2 == 1);
       const Neighbors nb = build_on(GetParam(), at, box, rc, skin, periodic);
-      const Neighbors ref = build_on("scalar", at, box, rc, skin, periodic);
+      const Neighbors ref = build_on(mpmx::isa_compiled().back(), at, box, rc, skin, periodic);
       EXPECT_EQ(nb.first, ref.first);
       EXPECT_EQ(nb.list, ref.list);
       EXPECT_EQ(listed(nb), pairs_within(at, box, rc + skin, periodic)) << "seed " << seed;
@@ -94,7 +94,7 @@ TEST_P(SearchPath, LargeCrystalHoldsItsShellsAscending) {
   EXPECT_EQ(nb.list.size(), 9 * c.atoms.size());
   for (int i = 0; i < nb.nlocal; ++i)
     for (int s = nb.first[i] + 1; s < nb.first[i + 1]; ++s) ASSERT_LT(nb.list[s - 1], nb.list[s]) << "atom " << i;
-  const Neighbors ref = build_on("scalar", c.atoms, c.box, 3.5, 0.5, {true, true, true});
+  const Neighbors ref = build_on(mpmx::isa_compiled().back(), c.atoms, c.box, 3.5, 0.5, {true, true, true});
   EXPECT_EQ(nb.list, ref.list);
 }
 

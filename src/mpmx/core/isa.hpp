@@ -4,14 +4,15 @@
 // per instruction set (Google Highway's dynamic dispatch) and runs the best this machine
 // has, or the one named by the environment variable MPMX_ISA (read once, at the first
 // kernel call): a Highway target in lower case, "avx512" for AVX3. Paths are named
-// widest first: "avx512", "avx2", "sse4", "scalar" on x86.
+// widest first: "avx512", "avx2", "sse4", then the portable fallback, "scalar" (GCC) or
+// "emu128" (clang), on x86.
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace mpmx {
 
-std::vector<std::string> isa_compiled();   // the paths in this build
+std::vector<std::string> isa_compiled();   // the paths in this build, the portable fallback last
 std::vector<std::string> isa_supported();  // those this machine can run
 // The path the kernels take; InputError where MPMX_ISA names no path of this build or
 // one this machine cannot run.

@@ -131,8 +131,10 @@ Neighbors::Bins Neighbors::bin_entries(const Box& box, double rs) {
   // Bins of edge >= rs/2, searched two deep: the 5^3 bins around an atom's hold about
   // 58% of the candidates that 3^3 bins of edge rs would.
   for (int d = 0; d < 3; ++d) {
-    nb[d] = std::max(1, static_cast<int>(2.0 * ext[d] / rs));
-    nb[d] = std::min(nb[d], 2048);
+    // Bounded before the cast: a box that flew apart (or went non-finite) asks for more
+    // bins than an int holds.
+    const double want = 2.0 * ext[d] / rs;
+    nb[d] = want >= 2048.0 ? 2048 : want >= 1.0 ? static_cast<int>(want) : 1;
   }
   // Never many more bins than entries, however large and empty the box (a system that
   // flew apart, a box read from a checkpoint): fewer, larger bins hold the same pairs.

@@ -160,7 +160,8 @@ TEST(MpmPreflight, HeaderOnly2dReferenceIsRefused) {
                                            "<Collection>\n</Collection>\n</VTKFile>\n";
   std::ofstream(header / "run.json") << "{\"jet\": {\"piston_face_A\": 1.0, \"x0_A\": 0.0, \"length_A\": 10.0, "
                                         "\"ly_A\": 10.0}}\n";
-  for (const auto& [dir, why] : {std::pair<fs::path, std::string>{empty, "has no md_bins.pvd"}, {header, "lists no records"}}) {
+  for (const auto& [folder, why] : {std::pair<fs::path, std::string>{empty, "has no md_bins.pvd"}, {header, "lists no records"}}) {
+    const fs::path dir = folder;  // a lambda captures a copy (clang 14 takes no structured binding)
     auto c = test::deck_with(test::example("J2_ddmp_md_20x10_1ppc_tiny.toml"), [&](toml::table& t) {
       t["reference"].as_table()->insert_or_assign("file", dir.string());
     });
