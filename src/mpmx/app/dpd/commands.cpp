@@ -37,7 +37,7 @@ void check_dpd(const std::string& path, bool force) {
              "particle-steps/s ({})\n",
              path, budget.particles, budget.particle_steps, budget.work_key, format_duration(budget.seconds()),
              budget.rate,
-             budget.rate_measured ? "its system timed on this core just now" : "a typical figure: the deck is short by it");
+             budget.rate_measured ? "its system timed on this core just now" : "a typical figure");
 }
 
 // `fit-dpd --check`, and `mpmx check` of a fit deck.

@@ -156,7 +156,7 @@ void add_mpm_commands(CLI::App& app) {
                budget.ranks > 1 ? fmt::format(" (each of {} ranks)", budget.ranks) : std::string());
     fmt::print("  the continuum at {:.3g} point-steps/s per core ({})\n", budget.point_rate,
                budget.point_rate_measured ? "its scheme and law timed on this core just now"
-                                          : "a typical figure: the deck is short by it");
+                                          : "a typical figure");
     if (budget.md_atom_steps > 0)
       fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.3g} atom-steps/s per core "
                  "({}), with one box per point: the most it can cost (boxes shared by history run fewer, as "

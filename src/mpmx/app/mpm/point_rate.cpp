@@ -50,9 +50,15 @@ double measure_point_steps_per_second(const MpmConfig& c) {
     nodes *= cells + 1;
   }
   if (!c.bodies.empty() && points <= 1e7) points = static_cast<double>(count_points(c));
-  // Coarser cells over the same domain and bodies: a few thousand points of the same kind
-  // (and a grid of at most a few times as many nodes, where bodies fill little of it).
-  const double f = std::min({1.0, std::pow(kPoints / points, 1.0 / c.dim), std::pow(kNodes / nodes, 1.0 / c.dim)});
+  // Coarser cells over the same domain and bodies: a few thousand integration points of the
+  // same kind (and a grid of at most a few times as many nodes, where bodies fill little
+  // of it). Sub-points too many for even a coarse copy: not timed.
+  double subpoints = 1;
+  if (c.scheme.scheme == mpm::Scheme::ddmp_subpoints)
+    for (int d = 0; d < c.dim; ++d) subpoints *= c.dim == 1 ? (d == 0 ? c.scheme.subpoints : 1) : c.scheme.subpoints_axes[d];
+  if (!(subpoints * 8 <= kPoints)) return 0.0;
+  const double f = std::min({1.0, std::pow(kPoints / subpoints / points, 1.0 / c.dim),
+                             std::pow(kNodes / nodes, 1.0 / c.dim)});
   for (int d = 0; d < c.dim; ++d) r.cells_all[d] = std::max(2, static_cast<int>(std::lround(c.cells_all[d] * f)));
   r.cells = c.dim == 1 ? std::max(2, static_cast<int>(std::lround(c.cells * f))) : r.cells_all[0];
   try {
