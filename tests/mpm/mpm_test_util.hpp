@@ -15,7 +15,12 @@
 namespace mpmx::test {
 
 inline std::string example(const std::string& name) {
-  return std::string(MPMX_SOURCE_DIR) + "/examples/" + name;
+  // Appended rather than summed: GCC 12 warns (-Warray-bounds) of operator+ on a
+  // temporary here, wrongly.
+  std::string path = MPMX_SOURCE_DIR;
+  path += "/examples/";
+  path += name;
+  return path;
 }
 
 // Reads a deck file, lets `edit` change its TOML, and returns the checked config.

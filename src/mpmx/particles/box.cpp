@@ -33,12 +33,12 @@ void Box::reduce_tilt() {
 }
 
 std::array<int, 3> Box::image_of(double x, double y, double z) const {
-  const int n3 = static_cast<int>(std::floor(z / lz));
+  const int n3 = image_index(std::floor(z / lz));
   y -= n3 * yz;
   x -= n3 * xz;
-  const int n2 = static_cast<int>(std::floor(y / ly));
+  const int n2 = image_index(std::floor(y / ly));
   x -= n2 * xy;
-  const int n1 = static_cast<int>(std::floor(x / lx));
+  const int n1 = image_index(std::floor(x / lx));
   return {n1, n2, n3};
 }
 

@@ -3,7 +3,9 @@
 // slide (figs. 5.2-5.3). The image lattice is spanned by a = (lx,0,0), b = (xy,ly,0),
 // c = (xz,yz,lz): the columns of the upper-triangular h, deformed by dh/dt = G h with
 // an upper-triangular velocity gradient G (eqs. 5.7, 5.9, 5.20).
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace mpmx::particles {
 
@@ -33,5 +35,10 @@ struct Box {
   // and the unique-image argument of eqs. 5.12-5.17).
   std::array<int, 3> image_of(double x, double y, double z) const;
 };
+
+// A floored or ceiled ratio as an image index: 0 where it is not finite (a box or an atom
+// gone non-finite, which the run stops on at its next check), bounded otherwise, so that
+// the cast to int is always defined.
+inline int image_index(double v) { return std::isfinite(v) ? static_cast<int>(std::clamp(v, -1e9, 1e9)) : 0; }
 
 }  // namespace mpmx::particles

@@ -76,20 +76,20 @@ void Neighbors::add_ghosts(const Atoms& atoms, const Box& box, double rs) {
   const bool px = periodic[0], py = periodic[1], pz = periodic[2];
   for (int i = 0; i < nlocal; ++i) {
     const double xi = atoms.x[i], yi = atoms.y[i], zi = atoms.z[i];
-    const int c0 = pz ? static_cast<int>(std::ceil((-rs - zi) / box.lz)) : 0;
-    const int c1 = pz ? static_cast<int>(std::floor((box.lz + rs - zi) / box.lz)) : 0;
+    const int c0 = pz ? image_index(std::ceil((-rs - zi) / box.lz)) : 0;
+    const int c1 = pz ? image_index(std::floor((box.lz + rs - zi) / box.lz)) : 0;
     for (int c = c0; c <= c1; ++c) {
       const double zc = zi + c * box.lz;
       if (pz && (zc < -rs || zc >= box.lz + rs)) continue;
       const double yc0 = yi + c * box.yz;
-      const int b0 = py ? static_cast<int>(std::ceil((-rs - yc0) / box.ly)) : 0;
-      const int b1 = py ? static_cast<int>(std::floor((box.ly + rs - yc0) / box.ly)) : 0;
+      const int b0 = py ? image_index(std::ceil((-rs - yc0) / box.ly)) : 0;
+      const int b1 = py ? image_index(std::floor((box.ly + rs - yc0) / box.ly)) : 0;
       for (int b = b0; b <= b1; ++b) {
         const double yc = yc0 + b * box.ly;
         if (py && (yc < -rs || yc >= box.ly + rs)) continue;
         const double xc0 = xi + c * box.xz + b * box.xy;
-        const int a0 = px ? static_cast<int>(std::ceil((-rs - xc0) / box.lx)) : 0;
-        const int a1 = px ? static_cast<int>(std::floor((box.lx + rs - xc0) / box.lx)) : 0;
+        const int a0 = px ? image_index(std::ceil((-rs - xc0) / box.lx)) : 0;
+        const int a1 = px ? image_index(std::floor((box.lx + rs - xc0) / box.lx)) : 0;
         for (int a = a0; a <= a1; ++a) {
           if (a == 0 && b == 0 && c == 0) continue;
           const double xc = xc0 + a * box.lx;
