@@ -132,8 +132,7 @@ void add_dpd_commands(CLI::App& app) {
       dpd::FitStop on_signal(fargs->deck, out, deck.table(), text.str(), config.density_ratios.size());
       return dpd::run_fit(config, dir, deck.table(), threads, from, [&](const dpd::FitProgress& p) {
         on_signal.keep(p);
-        const std::int64_t stages = (p.md ? 1 : 0) + (p.md_elastic ? 1 : 0) + (p.round ? p.round->next : 0);
-        if (fargs->stop_after > 0 && stages >= fargs->stop_after) on_signal.stop();
+        if (fargs->stop_after > 0 && p.stages() >= fargs->stop_after) on_signal.stop();
       });
     });
     std::error_code ec;

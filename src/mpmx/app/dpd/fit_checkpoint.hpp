@@ -19,6 +19,8 @@ struct FitProgress {
   std::optional<multiscale::CubicConstants> md_elastic;      // the MD crystal's constants, once measured
   std::optional<multiscale::FitRound> round;                 // the last finished round's state
   bool empty() const { return !md; }
+  // The stages finished: the isotherm, the constants, each round.
+  int stages() const { return md ? 1 + (md_elastic ? 1 : 0) + (round ? round->next : 0) : 0; }
   std::string stage() const;  // what it holds, in words
 };
 

@@ -42,7 +42,7 @@ FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml
                                  "[elastic] asks for; run afresh without --resume",
                                  c.deck_file));
   // A resumed fit starts after its last finished stage.
-  int done = from.md ? 1 + (from.md_elastic ? 1 : 0) + (from.round ? from.round->next : 0) : 0;
+  int done = from.stages();
   Progress progress("fit-dpd stages", stages, false, done);
   FitProgress now = from;
   auto finished = [&] {

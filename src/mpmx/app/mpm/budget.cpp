@@ -109,8 +109,11 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
   MpmBudget b = estimate_levels(c, ranks, cost, 0.0);
   // The continuum's own work long enough to matter: timed for this deck on this machine.
   const double continuum = b.seconds - b.md_atom_steps / std::max(b.md_rate, 1.0) / b.ranks;
-  if (continuum > kTimeRateAboveSeconds)
-    if (const double rate = measure_point_steps_per_second(c); rate > 0) b = estimate_levels(c, ranks, cost, rate);
+  if (continuum > kTimeRateAboveSeconds) {
+    const MpmBudget l0 = c.convergence_levels > 1 ? estimate_level(c, ranks, cost, 0.0) : b;  // the deck's grid
+    if (const double rate = measure_point_steps_per_second(c, l0.points, l0.subpoints, l0.nodes); rate > 0)
+      b = estimate_levels(c, ranks, cost, rate);
+  }
   return b;
 }
 

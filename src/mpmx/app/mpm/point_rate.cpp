@@ -5,7 +5,6 @@
 #include <cmath>
 #include <exception>
 
-#include "mpmx/app/mpm/bodies.hpp"
 #include "mpmx/app/mpm/setup.hpp"
 #include "mpmx/mpm/state_checks.hpp"
 #include "mpmx/mpm/step.hpp"
@@ -39,23 +38,13 @@ double time_steps(const MpmConfig& c) {
 
 }  // namespace
 
-double measure_point_steps_per_second(const MpmConfig& c) {
+double measure_point_steps_per_second(const MpmConfig& c, double points, double subpoints, double nodes) {
   if (c.material.spec && c.material.spec->point_cost(c.dt).atoms > 0) return 0.0;
   MpmConfig r = c;
   r.convergence_levels = 1;
-  double points = 1, nodes = 1;
-  for (int d = 0; d < c.dim; ++d) {
-    const double cells = c.dim == 1 ? c.cells : c.cells_all[d];
-    points *= cells * (c.dim == 1 ? c.per_cell : c.per_cell_all[d]);
-    nodes *= cells + 1;
-  }
-  if (!c.bodies.empty() && points <= 1e7) points = static_cast<double>(count_points(c));
   // Coarser cells over the same domain and bodies: a few thousand integration points of the
   // same kind (and a grid of at most a few times as many nodes, where bodies fill little
   // of it). Sub-points too many for even a coarse copy: not timed.
-  double subpoints = 1;
-  if (c.scheme.scheme == mpm::Scheme::ddmp_subpoints)
-    for (int d = 0; d < c.dim; ++d) subpoints *= c.dim == 1 ? (d == 0 ? c.scheme.subpoints : 1) : c.scheme.subpoints_axes[d];
   if (!(subpoints * 8 <= kPoints)) return 0.0;
   const double f = std::min({1.0, std::pow(kPoints / subpoints / points, 1.0 / c.dim),
                              std::pow(kNodes / nodes, 1.0 / c.dim)});

@@ -11,6 +11,7 @@ namespace mpmx::app {
 // and dt kept), stepped on one thread for about a tenth of a second. 0 when it is not
 // timed: a law with a model inside its points (md_closure times its boxes itself), or a
 // coarse state that does not build or step.
-double measure_point_steps_per_second(const MpmConfig& c);
+// `points`, `subpoints`, `nodes`: the deck's, as its estimate counted them.
+double measure_point_steps_per_second(const MpmConfig& c, double points, double subpoints, double nodes);
 
 }  // namespace mpmx::app
