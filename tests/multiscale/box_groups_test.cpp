@@ -34,6 +34,28 @@ TEST(BoxGroups, PointsThatStartAlikeShareOneGroup) {
   EXPECT_EQ(BoxGroups({0.0, 0.0, 0.0}, off).groups(), 3u);
 }
 
+// A start within the tolerance of a group's first value joins the nearest such group and
+// carries the difference as its deviation; tolerance 0 groups equal values only.
+TEST(BoxGroups, StartsWithinTheToleranceShareTheNearestGroup) {
+  ShareOptions o;
+  o.tolerance = 1e-4;
+  const BoxGroups g({0.0, 5e-5, 2e-4, -9e-5, 1.5e-4, 1e-4 + 1e-12}, o);
+  ASSERT_EQ(g.groups(), 2u);
+  EXPECT_EQ(g.members(0), (std::vector<std::size_t>{0, 1, 3}));
+  EXPECT_EQ(g.members(1), (std::vector<std::size_t>{2, 4, 5}));  // 1.5e-4 is nearer 2e-4 than 0
+  EXPECT_EQ(g.deviation(0), 0.0);
+  EXPECT_DOUBLE_EQ(g.deviation(1), 5e-5);
+  EXPECT_DOUBLE_EQ(g.deviation(3), 9e-5);
+  EXPECT_DOUBLE_EQ(g.deviation(4), 5e-5);
+  // One past the tolerance from 0 (1e-4 + 1e-12) and within it from 2e-4.
+  EXPECT_NEAR(g.deviation(5), 1e-4 - 1e-12, 1e-18);
+  o.tolerance = 0.0;
+  const BoxGroups exact({0.0, 1e-13, 0.0, 2e-4}, o);
+  ASSERT_EQ(exact.groups(), 3u);
+  EXPECT_EQ(exact.members(0), (std::vector<std::size_t>{0, 2}));
+  EXPECT_EQ(exact.deviation(2), 0.0);
+}
+
 // With tolerance 0 every member leaves at its first departure from what the group kept;
 // members whose gradients are equal leave together, into one new group.
 TEST(BoxGroups, ToleranceZeroSplitsAtTheFirstDeparture) {

@@ -1,4 +1,5 @@
 // ctest-label: slow
+// ctest-cost: 40000
 // The MD crystal's elastic constants at 298 K from strained boxes (multiscale/
 // strained_box.hpp), Sutton-Chen Cu of D0 at its 298 K zero-pressure lattice constant:
 // 500 and 4,000 atoms give the same C11 and C12 within their noise (no box-size term at

@@ -48,10 +48,19 @@ BoxGroups::BoxGroups(const std::vector<double>& start, const ShareOptions& optio
   group_of_.assign(n, 0);
   deviation_.assign(n, 0.0);
   auditor_.assign(n, 0);
-  std::map<double, std::size_t> first_of;  // a start value's group
+  std::map<double, std::size_t> first_of;  // each group's first start value -> the group
   for (std::size_t p = 0; p < n; ++p) {
+    const double v = start[p];
     std::size_t g = members_.size();
-    if (opt_.enabled) g = first_of.emplace(start[p], members_.size()).first->second;
+    if (opt_.enabled && std::isfinite(v)) {
+      // The group whose first start value is nearest, within the tolerance; its box starts
+      // from that value, and the difference is the member's deviation from the outset.
+      double best = opt_.tolerance;
+      for (auto it = first_of.lower_bound(v - opt_.tolerance); it != first_of.end() && it->first <= v + opt_.tolerance; ++it)
+        if (const double d = std::abs(it->first - v); d <= best && (g == members_.size() || d < best)) g = it->second, best = d;
+      if (g == members_.size()) first_of.emplace(v, g);
+      else deviation_[p] = best;
+    }
     if (g == members_.size()) members_.emplace_back(), kept_.emplace_back(Mat3{});
     members_[g].push_back(p);
     group_of_[p] = g;

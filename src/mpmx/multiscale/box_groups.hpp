@@ -1,7 +1,10 @@
 #pragma once
 // History-shared boxes: the bookkeeping of which material points share one micro-model
-// box (an MD box in DDMP-MD), whatever the model. Points whose boxes would start from the
-// same state form one group with one box. Each macro step
+// box (an MD box in DDMP-MD), whatever the model. Points whose boxes would start from
+// states within the tolerance of each other form one group with one box, started from
+// its first member's state; each member's start difference is its deviation from the
+// outset (a profile such as tanh gives no two points the same start to the last bit,
+// and a group for every last bit was most of H2's boxes). Each macro step
 //   1. who leaves is decided first, against the gradient the group kept (the one its box
 //      followed last step): a member whose deviation D_p + |L_p - L_kept| dt would pass
 //      the tolerance leaves, so the box never steps with a leaver's gradient in its mean;
@@ -41,9 +44,10 @@ class BoxGroups {
   };
 
   BoxGroups() = default;
-  // One group per run of points whose `start` values are equal (in point order, every
-  // point with the first point's value of its kind); a group per point when sharing is
-  // off.
+  // Groups of points whose `start` values (strains) are within the tolerance: in point
+  // order, each point joins the group whose first value is nearest within it (its
+  // deviation that difference), or starts a new one; a group per point when sharing is
+  // off. With tolerance 0, the points of equal values.
   BoxGroups(const std::vector<double>& start, const ShareOptions& options);
 
   // What a split changed: the new groups, in order, each to start from a copy of its
