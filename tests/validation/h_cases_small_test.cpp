@@ -75,7 +75,7 @@ TEST(H3Small, NoiseFallsFrom256To500Atoms) {
       t.erase("reference");
       t["time"].as_table()->insert_or_assign("end", 1.0);
       t["output"].as_table()->insert_or_assign("times", toml::array{});
-      (*t["material"]["md"].as_table()).insert_or_assign("share", toml::table{{"enabled", false}});
+      t["material"]["md"].as_table()->insert_or_assign("share", toml::table{{"enabled", false}});
     });
   };
   const double n256 = noise_ahead(test::run(deck("H3_strong_300K_256_small.toml")));

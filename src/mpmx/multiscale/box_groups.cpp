@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <istream>
+#include <iterator>
 #include <map>
+#include <optional>
 #include <ostream>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -35,6 +38,21 @@ T take(std::istream& in) {
   return v;
 }
 
+// The group whose key is nearest v and at most `tol` from it, with that distance (the
+// lower key on a tie): the last key below v or the first at or above it.
+std::optional<std::pair<std::size_t, double>> nearest_within(const std::map<double, std::size_t>& groups, double v,
+                                                             double tol) {
+  std::optional<std::pair<std::size_t, double>> best;
+  const auto hi = groups.lower_bound(v);
+  if (hi != groups.begin()) {
+    const auto lo = std::prev(hi);
+    if (v - lo->first <= tol) best = {lo->second, v - lo->first};
+  }
+  if (hi != groups.end() && hi->first - v <= tol && (!best || hi->first - v < best->second))
+    best = {hi->second, hi->first - v};
+  return best;
+}
+
 }  // namespace
 
 double BoxGroups::distance(const Mat3& a, const Mat3& b) {
@@ -53,13 +71,10 @@ BoxGroups::BoxGroups(const std::vector<double>& start, const ShareOptions& optio
     const double v = start[p];
     std::size_t g = members_.size();
     if (opt_.enabled && std::isfinite(v)) {
-      // The group whose first start value is nearest, within the tolerance; its box starts
+      // The group whose first start value is nearest within the tolerance: its box starts
       // from that value, and the difference is the member's deviation from the outset.
-      double best = opt_.tolerance;
-      for (auto it = first_of.lower_bound(v - opt_.tolerance); it != first_of.end() && it->first <= v + opt_.tolerance; ++it)
-        if (const double d = std::abs(it->first - v); d <= best && (g == members_.size() || d < best)) g = it->second, best = d;
-      if (g == members_.size()) first_of.emplace(v, g);
-      else deviation_[p] = best;
+      if (const auto near = nearest_within(first_of, v, opt_.tolerance)) g = near->first, deviation_[p] = near->second;
+      else first_of.emplace(v, g);
     }
     if (g == members_.size()) members_.emplace_back(), kept_.emplace_back(Mat3{});
     members_[g].push_back(p);
