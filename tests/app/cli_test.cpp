@@ -16,15 +16,9 @@
 #include "cli_util.hpp"
 
 namespace {
+using mpmx::test::count;
 using Result = mpmx::test::CliResult;
 constexpr auto mpmx_cli = mpmx::test::run_cli;
-
-
-std::size_t count(const std::string& s, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
-  return n;
-}
 
 const std::string kDeck = std::string(MPMX_SOURCE_DIR) + "/examples/A1_standing_wave_moving.toml";
 const std::string kMdDeck = std::string(MPMX_SOURCE_DIR) + "/examples/M1_cu_energy_vs_lattice.toml";

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "mpmx/core/units.hpp"
 #include "mpmx/dpd/setup.hpp"
 #include "mpmx/dpd/system.hpp"
 #include "mpmx/particles/rng.hpp"
@@ -17,6 +18,8 @@ namespace mpmx::test {
 inline constexpr double kCuMesoMass = 8 * 63.546;  // amu
 inline constexpr double kCoarseLattice = 7.23;     // Angstrom (2a, seed 004 sec. 4.1.1)
 inline constexpr double kSeedGamma = 0.2;          // amu/ps (seed 004 sec. 2.2)
+// The mesoparticle's internal heat capacity: 8 atoms x 3 kB less the centre of mass's 3 kB.
+inline constexpr double kCuMesoCv = 21 * units::boltzmann_eV_per_K;
 
 inline dpd::MorsePotential cu_meso_morse(double rc = 12.0) {
   dpd::MorsePotential m;

@@ -19,19 +19,17 @@ namespace {
 
 using namespace mpmx;
 
-constexpr double kCv = 21 * units::boltzmann_eV_per_K;  // 8 atoms x 3 kB less the centre of mass's 3 kB
-
 // Cu mesoparticle crystal (Morse, 6^3 fcc cells = 864 particles) at 298 K, periodic.
 dpd::System cu_crystal(double gamma, double t_kinetic, double t_internal, int threads = 1) {
   const int n = 6;
   dpd::Particles p = dpd::fcc_block({n, n, n}, test::kCoarseLattice, {0, 0, 0}, test::kCuMesoMass, 0, 1);
   dpd::maxwell_velocities(p, 2 * t_kinetic, 17);  // half goes to potential energy
-  for (auto& u : p.u) u = kCv * t_internal;
+  for (auto& u : p.u) u = test::kCuMesoCv * t_internal;
   dpd::DpdParams par;
   par.energy_conserving = true;
   par.gamma = gamma;
   par.cutoff = 12.0;
-  par.heat_capacity = kCv;
+  par.heat_capacity = test::kCuMesoCv;
   par.seed = 2014;
   return dpd::System(p, test::cube(n * test::kCoarseLattice), test::cu_meso_morse(12.0), par,
                      {.skin = 1.0, .threads = threads});
@@ -100,7 +98,7 @@ TEST(DpdeEnergy, OneSweepConservesEnergyToRoundOff) {
   const auto [k0, u0] = energy(p);
   dpd::SweepParams sp;
   sp.gamma = 100 * test::kSeedGamma, sp.cutoff = 12.0, sp.dt = 0.005, sp.energy_conserving = true;
-  sp.heat_capacity = kCv, sp.seed = 5, sp.step = 10;
+  sp.heat_capacity = test::kCuMesoCv, sp.seed = 5, sp.step = 10;
   dpd::SweepWork work;
   dpd::shardlow_sweep(list, p, sp, work, 1);
   const auto [k1, u1] = energy(p);

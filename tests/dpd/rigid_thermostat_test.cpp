@@ -14,14 +14,12 @@ namespace {
 
 using namespace mpmx;
 
-constexpr double kCv = 21 * units::boltzmann_eV_per_K;
-
 dpd::DpdParams dpde() {
   dpd::DpdParams par;
   par.energy_conserving = true;
   par.gamma = test::kSeedGamma;
   par.cutoff = 12.0;
-  par.heat_capacity = kCv;
+  par.heat_capacity = test::kCuMesoCv;
   par.seed = 3;
   return par;
 }
@@ -35,7 +33,7 @@ TEST(DpdRigid, FlyerMovesAtItsVelocityAndPushesTheTarget) {
   for (auto& g : flyer.group) g = 0;
   dpd::Particles all = target;
   dpd::append(all, flyer);
-  for (auto& u : all.u) u = kCv * 298;
+  for (auto& u : all.u) u = test::kCuMesoCv * 298;
   dpd::Domain d = test::cube(4 * a, {false, true, true});
   d.box.lx = 8 * a;
   dpd::System s(all, d, test::cu_meso_morse(12.0), dpde(), {.skin = 1.0}, {{"flyer", {5.0, 0.0, 0.0}}});
@@ -71,7 +69,7 @@ TEST(DpdRigid, GripsPullAtTheirVelocityAndFeelTheRod) {
     if (rod.x[i] < 2 * a - 0.1) rod.group[i] = 0;
     if (rod.x[i] > 10 * a - 0.1) rod.group[i] = 1;
   }
-  for (auto& u : rod.u) u = kCv * 298;
+  for (auto& u : rod.u) u = test::kCuMesoCv * 298;
   dpd::Domain d = test::cube(3 * a, {false, false, false});
   d.box.lx = 12 * a;
   dpd::System s(rod, d, test::cu_meso_morse(12.0), dpde(), {.skin = 1.0},
@@ -95,7 +93,7 @@ TEST(DpdRigid, GripsPullAtTheirVelocityAndFeelTheRod) {
 TEST(DpdBerendsen, BringsKineticAndInternalTemperaturesToTheTarget) {
   dpd::Particles p = dpd::fcc_block({5, 5, 5}, test::kCoarseLattice, {0, 0, 0}, test::kCuMesoMass, 0, 1);
   dpd::maxwell_velocities(p, 50.0, 9);
-  for (auto& u : p.u) u = kCv * 100.0;
+  for (auto& u : p.u) u = test::kCuMesoCv * 100.0;
   dpd::System s(p, test::cube(5 * test::kCoarseLattice), test::cu_meso_morse(12.0), dpde(), {.skin = 1.0});
   const dpd::Berendsen b{.temperature = 298.0, .tau = 0.5};
   s.advance(2000, 0.005, &b);  // 10 ps = 20 tau

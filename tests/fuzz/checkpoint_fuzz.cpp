@@ -21,9 +21,8 @@
 #include "mpmx/app/mpm/run.hpp"
 #include "mpmx/app/mpm/setup.hpp"
 
+namespace mpmx::fuzz {
 namespace {
-
-using namespace mpmx;
 
 const char* kElastic = R"([case]
 id = "fuzz_elastic"
@@ -137,8 +136,6 @@ std::string edited(std::string bytes, std::string_view edits) {
 }
 
 }  // namespace
-
-namespace mpmx::fuzz {
 
 inline int checkpoint(const std::uint8_t* data, std::size_t size) {
   static const Case cases[2] = {make_case(kElastic, "elastic"), make_case(kClosure, "closure")};

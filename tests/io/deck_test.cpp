@@ -9,6 +9,8 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/io/deck.hpp"
 
+#include "cli_util.hpp"
+
 using mpmx::InputError;
 using mpmx::io::Deck;
 
@@ -107,11 +109,7 @@ std::int64_t read_int(const std::string& text, std::string& error, std::int64_t 
   return v;
 }
 
-std::size_t count(const std::string& s, const std::string& what) {
-  std::size_t n = 0;
-  for (auto p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
-  return n;
-}
+using mpmx::test::count;
 
 }  // namespace
 

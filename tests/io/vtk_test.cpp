@@ -217,7 +217,7 @@ void expect_bits_equal(const std::vector<double>& want, const std::vector<double
         << what << "[" << i << "]: wrote " << want[i] << ", VTK read " << got[i];
 }
 
-std::string slurp(const fs::path& p) {
+std::string read_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
@@ -375,7 +375,7 @@ TEST(Vtk, HeaderDeclaresBinaryTensorLittleEndian) {
   const fs::path& dir = tmp.path;
   const fs::path file = dir / "p.vtu";
   vtk::write_points(file, lattice_points(4), {make_field("stress", 9, 4, 1)});
-  const std::string text = slurp(file);
+  const std::string text = read_bytes(file);
   EXPECT_EQ(text.rfind("<?xml", 0), 0u);
   EXPECT_NE(text.find(R"(byte_order="LittleEndian")"), std::string::npos);
   EXPECT_NE(text.find(R"(header_type="UInt64")"), std::string::npos);

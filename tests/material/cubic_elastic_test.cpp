@@ -21,17 +21,17 @@
 namespace mpmx::material {
 namespace {
 
+using test::kCopperCubic;
 using test::PointSet;
 using Eigen::Matrix2d;
 using Eigen::Matrix3d;
 
-const CubicConstants copper{170.0, 123.0, 76.0};  // GPa (the seed's potential is near this)
 
 // Uniaxial strain at constant rate along x to eps = rate * steps * dt.
 template <int Dim>
 void uniaxial(double rate, int steps, double dt) {
   PointSet<Dim> pts(1, 8.93);
-  CubicElastic<Dim> law(copper);
+  CubicElastic<Dim> law(kCopperCubic);
   auto p = pts.view();
   law.initialize(p);
   typename PointSet<Dim>::Mat L = PointSet<Dim>::Mat::Zero();
@@ -41,19 +41,19 @@ void uniaxial(double rate, int steps, double dt) {
   const double eps = rate * steps * dt;
   const auto s = pts.stress(0);
   EXPECT_NEAR(pts.strain(0)(0, 0), eps, 1e-14);
-  EXPECT_NEAR(s(0, 0), copper.c11 * eps, 1e-12 * copper.c11 * std::abs(eps)) << "Dim " << Dim;
-  for (int a = 1; a < Dim; ++a) EXPECT_NEAR(s(a, a), copper.c12 * eps, 1e-12 * copper.c11 * std::abs(eps));
+  EXPECT_NEAR(s(0, 0), kCopperCubic.c11 * eps, 1e-12 * kCopperCubic.c11 * std::abs(eps)) << "Dim " << Dim;
+  for (int a = 1; a < Dim; ++a) EXPECT_NEAR(s(a, a), kCopperCubic.c12 * eps, 1e-12 * kCopperCubic.c11 * std::abs(eps));
   for (int a = 0; a < Dim; ++a)
     for (int b = 0; b < Dim; ++b)
       if (a != b) {
         EXPECT_EQ(s(a, b), 0.0);
       }
   if (Dim < 3) {
-    EXPECT_NEAR(law.out_of_plane_stress(p, 0), copper.c12 * eps, 1e-12 * copper.c11 * std::abs(eps));
+    EXPECT_NEAR(law.out_of_plane_stress(p, 0), kCopperCubic.c12 * eps, 1e-12 * kCopperCubic.c11 * std::abs(eps));
   }
   // 0.5 V sigma : eps = 0.5 V C11 eps^2 in uniaxial strain.
-  EXPECT_NEAR(law.stored_energy(p, 0), 0.5 * pts.volume[0] * copper.c11 * eps * eps,
-              1e-12 * copper.c11 * eps * eps);
+  EXPECT_NEAR(law.stored_energy(p, 0), 0.5 * pts.volume[0] * kCopperCubic.c11 * eps * eps,
+              1e-12 * kCopperCubic.c11 * eps * eps);
 }
 
 TEST(CubicElastic, UniaxialStrainGivesC11AndC12) {
@@ -71,7 +71,7 @@ TEST(CubicElastic, ShearGivesTwoC44TimesTheTensorShearStrain) {
   const double exy = g * steps * dt;
   {
     PointSet<2> pts(1);
-    CubicElastic<2> law(copper);
+    CubicElastic<2> law(kCopperCubic);
     auto p = pts.view();
     law.initialize(p);
     Matrix2d L;
@@ -79,21 +79,21 @@ TEST(CubicElastic, ShearGivesTwoC44TimesTheTensorShearStrain) {
     pts.set_grad_v(L);
     for (int k = 0; k < steps; ++k) law.update_stress(p, dt);
     EXPECT_NEAR(pts.strain(0)(0, 1), exy, 1e-15);
-    EXPECT_NEAR(pts.stress(0)(0, 1), 2 * copper.c44 * exy, 1e-12 * copper.c44 * exy);
+    EXPECT_NEAR(pts.stress(0)(0, 1), 2 * kCopperCubic.c44 * exy, 1e-12 * kCopperCubic.c44 * exy);
     EXPECT_EQ(pts.stress(0)(0, 0), 0.0);
     EXPECT_EQ(pts.stress(0)(1, 1), 0.0);
   }
   {
     PointSet<3> pts(1);
-    CubicElastic<3> law(copper);
+    CubicElastic<3> law(kCopperCubic);
     auto p = pts.view();
     law.initialize(p);
     Matrix3d L = Matrix3d::Zero();
     L(1, 2) = L(2, 1) = g;  // yz
     pts.set_grad_v(L);
     for (int k = 0; k < steps; ++k) law.update_stress(p, dt);
-    EXPECT_NEAR(pts.stress(0)(1, 2), 2 * copper.c44 * exy, 1e-12 * copper.c44 * exy);
-    EXPECT_NEAR(pts.stress(0)(2, 1), 2 * copper.c44 * exy, 1e-12 * copper.c44 * exy);
+    EXPECT_NEAR(pts.stress(0)(1, 2), 2 * kCopperCubic.c44 * exy, 1e-12 * kCopperCubic.c44 * exy);
+    EXPECT_NEAR(pts.stress(0)(2, 1), 2 * kCopperCubic.c44 * exy, 1e-12 * kCopperCubic.c44 * exy);
     EXPECT_EQ(pts.stress(0)(0, 0), 0.0);
   }
 }
@@ -149,7 +149,7 @@ TEST(CubicElastic, CrystalAxesTurnWithThePoint) {
   // Spin the point by 45 degrees about z with no stretch, then compress along x: x is
   // now the crystal's [110], whose uniaxial-strain modulus is (C11 + C12 + 2 C44) / 2.
   PointSet<3> pts(1);
-  CubicElastic<3> law(copper);
+  CubicElastic<3> law(kCopperCubic);
   auto p = pts.view();
   law.initialize(p);
   const int turn_steps = 200;
@@ -167,11 +167,11 @@ TEST(CubicElastic, CrystalAxesTurnWithThePoint) {
   pts.set_grad_v(L);
   for (int k = 0; k < 10; ++k) law.update_stress(p, dt);
   const double eps = -10 * dt;
-  const double m110 = 0.5 * (copper.c11 + copper.c12 + 2 * copper.c44);
+  const double m110 = 0.5 * (kCopperCubic.c11 + kCopperCubic.c12 + 2 * kCopperCubic.c44);
   EXPECT_NEAR(pts.stress(0)(0, 0), m110 * eps, 1e-12 * m110 * std::abs(eps));
-  EXPECT_NEAR(pts.stress(0)(1, 1), 0.5 * (copper.c11 + copper.c12 - 2 * copper.c44) * eps,
+  EXPECT_NEAR(pts.stress(0)(1, 1), 0.5 * (kCopperCubic.c11 + kCopperCubic.c12 - 2 * kCopperCubic.c44) * eps,
               1e-12 * m110 * std::abs(eps));
-  EXPECT_NEAR(pts.stress(0)(2, 2), copper.c12 * eps, 1e-12 * m110 * std::abs(eps));
+  EXPECT_NEAR(pts.stress(0)(2, 2), kCopperCubic.c12 * eps, 1e-12 * m110 * std::abs(eps));
   EXPECT_NEAR(pts.stress(0)(0, 1), 0.0, 1e-12 * m110 * std::abs(eps));
 }
 
@@ -189,7 +189,7 @@ TEST(CubicElastic, WaveModulusBoundsEveryDirection) {
   std::normal_distribution<double> n01;
   // Anisotropy ratio 2 C44 / (C11 - C12) above and below 1, isotropic, C44 > C11, C12 < 0.
   for (const CubicConstants& c :
-       {copper, CubicConstants{100.0, 20.0, 20.0}, CubicConstants{100.0, 60.0, 90.0},
+       {kCopperCubic, CubicConstants{100.0, 20.0, 20.0}, CubicConstants{100.0, 60.0, 90.0},
         CubicConstants{100.0, 40.0, 20.0}, CubicConstants{100.0, 40.0, 30.0},
         CubicConstants{100.0, 20.0, 120.0}, CubicConstants{100.0, -40.0, 10.0}}) {
     double max2 = 0.0, max3 = 0.0;
@@ -205,16 +205,16 @@ TEST(CubicElastic, WaveModulusBoundsEveryDirection) {
     EXPECT_EQ(c.wave_modulus(1), c.c11);
   }
   // Copper: 14% and 19% above sqrt(C11 / rho).
-  EXPECT_NEAR(std::sqrt(copper.wave_modulus(2) / copper.c11), 1.144, 0.001);
-  EXPECT_NEAR(std::sqrt(copper.wave_modulus(3) / copper.c11), 1.188, 0.001);
+  EXPECT_NEAR(std::sqrt(kCopperCubic.wave_modulus(2) / kCopperCubic.c11), 1.144, 0.001);
+  EXPECT_NEAR(std::sqrt(kCopperCubic.wave_modulus(3) / kCopperCubic.c11), 1.188, 0.001);
   PointSet<2> pts(1, 8.93);
-  CubicElastic<2> law(copper);
+  CubicElastic<2> law(kCopperCubic);
   EXPECT_NEAR(law.sound_speed(pts.view(), 0), std::sqrt(222.5 / 8.93), 1e-12);
 }
 
 TEST(CubicElastic, SaveAndLoadKeepTheCrystalAxes) {
   PointSet<2> a(2), b(2);
-  CubicElastic<2> law(copper), copy(copper);
+  CubicElastic<2> law(kCopperCubic), copy(kCopperCubic);
   auto pa = a.view();
   law.initialize(pa);
   Matrix2d L;
@@ -238,7 +238,7 @@ TEST(CubicElastic, SaveAndLoadKeepTheCrystalAxes) {
   EXPECT_THROW(copy.load(cut), InputError);
 }
 
-std::vector<std::string> read_errors(const std::string& table) {
+std::vector<std::string> cubic_table_errors(const std::string& table) {
   auto deck = io::Deck::from_string("[material]\nmodel = \"cubic_elastic\"\n" + table);
   auto m = deck.root().table("material");
   m.string("model");
@@ -264,13 +264,13 @@ TEST(CubicElastic, DeckTableIsChecked) {
       if (e.find(what) != std::string::npos) return true;
     return false;
   };
-  auto e = read_errors("density = -1.0\nc11 = 170.0\nc12 = 123.0\nc44 = 76.0\n");
+  auto e = cubic_table_errors("density = -1.0\nc11 = 170.0\nc12 = 123.0\nc44 = 76.0\n");
   EXPECT_TRUE(has(e, "material.density") && has(e, "must be positive")) << e.size();
-  e = read_errors("density = 1.0\nc11 = 100.0\nc12 = 120.0\nc44 = 76.0\n");
+  e = cubic_table_errors("density = 1.0\nc11 = 100.0\nc12 = 120.0\nc44 = 76.0\n");
   EXPECT_TRUE(has(e, "material.c12") && has(e, "c11 - c12 > 0"));
-  e = read_errors("density = 1.0\nc11 = 100.0\nc12 = -60.0\nc44 = 76.0\n");
+  e = cubic_table_errors("density = 1.0\nc11 = 100.0\nc12 = -60.0\nc44 = 76.0\n");
   EXPECT_TRUE(has(e, "material.c12") && has(e, "c11 + 2 c12 > 0"));
-  e = read_errors("density = 1.0\nc11 = 100.0\nc12 = 60.0\n");
+  e = cubic_table_errors("density = 1.0\nc11 = 100.0\nc12 = 60.0\n");
   EXPECT_TRUE(has(e, "material.c44") && has(e, "missing"));
   EXPECT_EQ(e.size(), 1u);
 }

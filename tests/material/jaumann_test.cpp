@@ -16,6 +16,7 @@
 namespace mpmx::material {
 namespace {
 
+using test::kCopperCubic;
 using test::PointSet;
 using Eigen::Matrix2d;
 using Eigen::Matrix3d;
@@ -25,7 +26,6 @@ constexpr double pi = std::numbers::pi;
 const double E = 1000.0, nu = 0.3;
 const double lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
 const CubicConstants iso{lam + 2 * mu, lam, mu};
-const CubicConstants copper{170.0, 123.0, 76.0};  // GPa
 
 Matrix3d skew_of(const Eigen::Vector3d& w) {  // [w]x: [w]x v = w x v
   Matrix3d m;
@@ -173,7 +173,7 @@ TEST(Jaumann, RigidRotationIn3DAboutAnOddAxis) {
   PointSet<3> pts(4);
   std::mt19937_64 rng(3);
   for (std::size_t q = 0; q < pts.n; ++q) pts.set_strain(q, random_symmetric(rng, 1e-3));
-  CubicElastic<3> law(copper);  // anisotropic: the crystal axes turn with the point
+  CubicElastic<3> law(kCopperCubic);  // anisotropic: the crystal axes turn with the point
   auto p = pts.view();
   law.initialize(p);
   std::vector<Matrix3d> s0(pts.n);
@@ -242,7 +242,7 @@ TEST(Jaumann, TotalFormEqualsTheIncrementalUpdate) {
   // stretch, isotropic or cubic.
   std::mt19937_64 rng(11);
   std::normal_distribution<double> n01;
-  for (const CubicConstants& c : {iso, copper}) {
+  for (const CubicConstants& c : {iso, kCopperCubic}) {
     PointSet<3> pts(1);
     CubicElastic<3> law(c);
     auto p = pts.view();

@@ -7,9 +7,13 @@
 
 #include <Eigen/Dense>
 
+#include "mpmx/material/cubic_elastic.hpp"
 #include "mpmx/material/points.hpp"
 
 namespace mpmx::test {
+
+// Copper's cubic constants, GPa (the seed's potential is near these).
+inline const material::CubicConstants kCopperCubic{170.0, 123.0, 76.0};
 
 template <int Dim>
 struct PointSet {

@@ -20,8 +20,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kPot = "/usr/share/lammps/potentials/";
-const std::string kCu = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
+using mpmx::test::kCuMishin;
+using mpmx::test::kLammpsPotentials;
+using mpmx::test::scratch_file;
 
 std::string read_text(const std::string& p) {
   std::ifstream in(p);
@@ -30,15 +31,9 @@ std::string read_text(const std::string& p) {
   return ss.str();
 }
 
-std::string temp_file(const std::string& name, const std::string& text) {
-  return mpmx::test::scratch_file(name, text).string();
-}
-
-std::string write(const std::string& name, const std::string& text) { return temp_file(name, text); }
-
 // The Mishin Cu file with line `line` (1-based) replaced.
 std::string cu_with_line(int line, const std::string& text) {
-  std::istringstream in(read_text(kCu));
+  std::istringstream in(read_text(kCuMishin));
   std::string out, l;
   for (int n = 1; std::getline(in, l); ++n) out += (n == line ? text : l) + "\n";
   return out;
@@ -56,9 +51,9 @@ std::string error_of(const std::string& path) {
 }  // namespace
 
 TEST(EamFile, ReadsEveryShippedEamFile) {
-  if (!fs::exists(kPot)) GTEST_SKIP() << "lammps-data not installed";
+  if (!fs::exists(kLammpsPotentials)) GTEST_SKIP() << "lammps-data not installed";
   int n = 0;
-  for (const auto& e : fs::directory_iterator(kPot)) {
+  for (const auto& e : fs::directory_iterator(kLammpsPotentials)) {
     const auto name = e.path().filename().string();
     if (!(name.ends_with(".eam") || name.ends_with(".eam.alloy") || name.ends_with(".eam.fs"))) continue;
     EXPECT_NO_THROW(read_eam(e.path().string())) << name;
@@ -68,7 +63,7 @@ TEST(EamFile, ReadsEveryShippedEamFile) {
 }
 
 TEST(EamFile, SetflHeaderAndTables) {
-  const auto t = read_eam(kPot + "Cu_mishin1.eam.alloy");
+  const auto t = read_eam(kLammpsPotentials + "Cu_mishin1.eam.alloy");
   EXPECT_EQ(t.format, "setfl");
   ASSERT_EQ(t.elements.size(), 1u);
   EXPECT_EQ(t.elements[0], "Cu");
@@ -76,45 +71,45 @@ TEST(EamFile, SetflHeaderAndTables) {
   EXPECT_EQ(t.nrho, 10001);
   EXPECT_EQ(t.nr, 10001);
   EXPECT_NEAR(t.cut, 5.50679, 1e-12);
-  const auto f = read_eam(kPot + "CuZr_mm.eam.fs");
+  const auto f = read_eam(kLammpsPotentials + "CuZr_mm.eam.fs");
   EXPECT_EQ(f.format, "fs");
   EXPECT_EQ(f.rhor.size(), 4u);
   EXPECT_EQ(f.z2r.size(), 3u);
-  const auto u = read_eam(kPot + "Cu_u3.eam");
+  const auto u = read_eam(kLammpsPotentials + "Cu_u3.eam");
   EXPECT_EQ(u.format, "funcfl");
   EXPECT_EQ(u.nr, 499);  // LAMMPS's int(rmax/dr + 0.5)
 }
 
 TEST(EamFile, TruncatedFileNamesFileLineAndExpectation) {
-  const auto text = read_text(kPot + "Cu_mishin1.eam.alloy");
+  const auto text = read_text(kLammpsPotentials + "Cu_mishin1.eam.alloy");
   // Keep the header and a few hundred lines: F(rho) ends early.
   std::size_t pos = 0;
   for (int l = 0; l < 300; ++l) pos = text.find('\n', pos) + 1;
-  const auto p = temp_file("Cu_cut.eam.alloy", text.substr(0, pos));
+  const auto p = scratch_file("Cu_cut.eam.alloy", text.substr(0, pos));
   const auto msg = error_of(p);
   EXPECT_NE(msg.find("Cu_cut.eam.alloy:300:"), std::string::npos) << msg;
   EXPECT_NE(msg.find("file ends early: expected 10001 values of F(rho) of Cu"), std::string::npos) << msg;
 }
 
 TEST(EamFile, BadValuesAreNamed) {
-  auto text = read_text(kPot + "Cu_mishin1.eam.alloy");
+  auto text = read_text(kLammpsPotentials + "Cu_mishin1.eam.alloy");
   // Corrupt a number on line 8.
   std::size_t pos = 0;
   for (int l = 0; l < 7; ++l) pos = text.find('\n', pos) + 1;
   text.insert(pos, "abc ");
-  auto msg = error_of(temp_file("Cu_bad.eam.alloy", text));
+  auto msg = error_of(scratch_file("Cu_bad.eam.alloy", text));
   EXPECT_NE(msg.find("Cu_bad.eam.alloy:8: expected a number (F(rho) of Cu), found 'abc'"), std::string::npos)
       << msg;
-  msg = error_of(temp_file("Cu_hdr.eam.alloy", "a\nb\nc\n2 Cu\n"));
+  msg = error_of(scratch_file("Cu_hdr.eam.alloy", "a\nb\nc\n2 Cu\n"));
   EXPECT_NE(msg.find("Cu_hdr.eam.alloy:4: expected 2 element names after N, found 1"), std::string::npos)
       << msg;
-  msg = error_of(temp_file("Cu_grid.eam.alloy", "a\nb\nc\n1 Cu\n100 0.1 x 0.1 5\n"));
+  msg = error_of(scratch_file("Cu_grid.eam.alloy", "a\nb\nc\n1 Cu\n100 0.1 x 0.1 5\n"));
   EXPECT_NE(msg.find("Cu_grid.eam.alloy:5: expected an integer (nr), found 'x'"), std::string::npos) << msg;
-  msg = error_of(temp_file("Cu_short.eam", "comment\n29 63.55\n"));
+  msg = error_of(scratch_file("Cu_short.eam", "comment\n29 63.55\n"));
   EXPECT_NE(msg.find("Cu_short.eam:2: file ends early: expected 'nrho drho nr dr cutoff' on line 3"),
             std::string::npos)
       << msg;
-  msg = error_of(temp_file("Cu.txt", "x"));
+  msg = error_of(scratch_file("Cu.txt", "x"));
   EXPECT_NE(msg.find("cannot tell the EAM format"), std::string::npos) << msg;
   msg = error_of("/nonexistent/Cu.eam");
   EXPECT_NE(msg.find("/nonexistent/Cu.eam: cannot open"), std::string::npos) << msg;
@@ -122,21 +117,21 @@ TEST(EamFile, BadValuesAreNamed) {
 
 TEST(EamFileHostile, HeaderCountsAboveTheLimitAreRefusedBeforeAllocating) {
   // 2e9 points would be 16 GB a table: refused on the header line with count and limit.
-  auto msg = error_of(write("Cu_2e9.eam.alloy", cu_with_line(5, "2000000000 0.0002 10001 0.0009 5.50679")));
+  auto msg = error_of(scratch_file("Cu_2e9.eam.alloy", cu_with_line(5, "2000000000 0.0002 10001 0.0009 5.50679")));
   EXPECT_NE(msg.find("Cu_2e9.eam.alloy:5: nrho = 2000000000: out of range: expected from 5 to 10000000 grid "
                      "points"),
             std::string::npos)
       << msg;
   // 1e12 does not fit in 32 bits: before, it wrapped to a negative nrho.
-  msg = error_of(write("Cu_1e12.eam.alloy", cu_with_line(5, "10001 0.0002 1000000000000 0.0009 5.50679")));
+  msg = error_of(scratch_file("Cu_1e12.eam.alloy", cu_with_line(5, "10001 0.0002 1000000000000 0.0009 5.50679")));
   EXPECT_NE(msg.find("Cu_1e12.eam.alloy:5: nr = 1000000000000: out of range: expected from 5 to 10000000"),
             std::string::npos)
       << msg;
-  msg = error_of(write("Cu_1e12f.eam.alloy", cu_with_line(5, "1e12 0.0002 10001 0.0009 5.50679")));
+  msg = error_of(scratch_file("Cu_1e12f.eam.alloy", cu_with_line(5, "1e12 0.0002 10001 0.0009 5.50679")));
   EXPECT_NE(msg.find("Cu_1e12f.eam.alloy:5: expected an integer (nrho), found '1e12'"), std::string::npos) << msg;
-  msg = error_of(write("Cu_big64.eam.alloy", cu_with_line(5, "99999999999999999999999 0.1 10001 0.0009 5.5")));
+  msg = error_of(scratch_file("Cu_big64.eam.alloy", cu_with_line(5, "99999999999999999999999 0.1 10001 0.0009 5.5")));
   EXPECT_NE(msg.find(":5: nrho = 99999999999999999999999: out of range"), std::string::npos) << msg;
-  msg = error_of(write("Cu_nel.eam.alloy", cu_with_line(4, "4294967297 Cu")));
+  msg = error_of(scratch_file("Cu_nel.eam.alloy", cu_with_line(4, "4294967297 Cu")));
   EXPECT_NE(msg.find(":4: number of elements = 4294967297: out of range: expected from 1 to 100 elements"),
             std::string::npos)
       << msg;
@@ -146,7 +141,7 @@ TEST(EamFileHostile, CountsTheFileCannotHoldAreRefusedOnTheHeader) {
   // Within the limit, but ten times more values than the file has: refused on line 5
   // (not after sizing tables by the claim).
   const auto msg =
-      error_of(write("Cu_claim.eam.alloy", cu_with_line(5, "9000000 0.0002 10001 0.0009 5.50679")));
+      error_of(scratch_file("Cu_claim.eam.alloy", cu_with_line(5, "9000000 0.0002 10001 0.0009 5.50679")));
   EXPECT_NE(msg.find("Cu_claim.eam.alloy:5: 1 element(s) with nrho = 9000000 and nr = 10001 promise"),
             std::string::npos)
       << msg;
@@ -154,17 +149,17 @@ TEST(EamFileHostile, CountsTheFileCannotHoldAreRefusedOnTheHeader) {
 }
 
 TEST(EamFileHostile, NanAndInfInTheFileAreRefusedWithTheLine) {
-  auto msg = error_of(write("Cu_nan.eam.alloy", cu_with_line(5, "10001 nan 10001 0.0009 5.50679")));
+  auto msg = error_of(scratch_file("Cu_nan.eam.alloy", cu_with_line(5, "10001 nan 10001 0.0009 5.50679")));
   EXPECT_NE(msg.find("Cu_nan.eam.alloy:5: expected a finite number (drho), found 'nan'"), std::string::npos)
       << msg;
-  msg = error_of(write("Cu_inf.eam.alloy", cu_with_line(8, "inf 1 2 3 4")));
+  msg = error_of(scratch_file("Cu_inf.eam.alloy", cu_with_line(8, "inf 1 2 3 4")));
   EXPECT_NE(msg.find("Cu_inf.eam.alloy:8: expected a finite number (F(rho) of Cu), found 'inf'"),
             std::string::npos)
       << msg;
 }
 
 TEST(EamFileHostile, EmptyFileAndDirectoryAreNamed) {
-  auto msg = error_of(write("Empty.eam.alloy", ""));
+  auto msg = error_of(scratch_file("Empty.eam.alloy", ""));
   EXPECT_NE(msg.find("Empty.eam.alloy: the EAM potential file is empty"), std::string::npos) << msg;
   const auto dir = mpmx::test::scratch_root() / "Dir.eam.alloy";
   std::filesystem::create_directories(dir);

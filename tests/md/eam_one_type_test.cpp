@@ -59,7 +59,7 @@ md::Crystal shaken(int nx, int ny, int nz, std::uint64_t seed) {
   return c;
 }
 
-Bits run(const std::string& path, bool mixed, bool per_atom, Form form = {}) {
+Bits run_path(const std::string& path, bool mixed, bool per_atom, Form form = {}) {
   mpmx::isa_use(path);
   EXPECT_EQ(md::eam_isa_dispatched(), path);
   const md::Crystal c = form.threaded ? shaken(8, 8, 6, 11) : shaken(4, 4, 4, 11);
@@ -91,16 +91,14 @@ class EamPath : public ::testing::TestWithParam<std::string> {
   void TearDown() override { mpmx::isa_use(mpmx::isa_supported().front()); }
 };
 
-}  // namespace
-
 INSTANTIATE_TEST_SUITE_P(Isa, EamPath, ::testing::ValuesIn(mpmx::isa_supported()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 TEST_P(EamPath, SameBitsAsTheScalarPath) {
   for (const bool mixed : {false, true})
     for (const bool per_atom : {false, true}) {
-      const Bits scalar = run(mpmx::isa_compiled().back(), mixed, per_atom);
-      const Bits here = run(GetParam(), mixed, per_atom);
+      const Bits scalar = run_path(mpmx::isa_compiled().back(), mixed, per_atom);
+      const Bits here = run_path(GetParam(), mixed, per_atom);
       ASSERT_GT(scalar.size(), 1000u);
       EXPECT_EQ(first_difference(here, scalar), -1) << "mixed " << mixed << ", per_atom " << per_atom;
     }
@@ -109,8 +107,8 @@ TEST_P(EamPath, SameBitsAsTheScalarPath) {
 TEST_P(EamPath, TiledSameBitsAsTheScalarPath) {
   for (const bool mixed : {false, true})
     for (const bool per_atom : {false, true}) {
-      const Bits scalar = run(mpmx::isa_compiled().back(), mixed, per_atom, {true, 2});
-      const Bits here = run(GetParam(), mixed, per_atom, {true, 2});
+      const Bits scalar = run_path(mpmx::isa_compiled().back(), mixed, per_atom, {true, 2});
+      const Bits here = run_path(GetParam(), mixed, per_atom, {true, 2});
       ASSERT_GT(scalar.size(), 9000u);  // 1536 atoms
       EXPECT_EQ(first_difference(here, scalar), -1) << "mixed " << mixed << ", per_atom " << per_atom;
     }
@@ -121,9 +119,9 @@ TEST_P(EamPath, TiledSameBitsAsTheScalarPath) {
 TEST(EamTiled, SameBitsForAnyThreadCount) {
   for (const bool per_atom : {false, true}) {
     const std::string path = mpmx::isa_supported().front();
-    const Bits one = run(path, false, per_atom, {true, 1});
-    EXPECT_EQ(first_difference(run(path, false, per_atom, {true, 2}), one), -1) << "per_atom " << per_atom;
-    EXPECT_EQ(first_difference(run(path, false, per_atom, {true, 3}), one), -1) << "per_atom " << per_atom;
+    const Bits one = run_path(path, false, per_atom, {true, 1});
+    EXPECT_EQ(first_difference(run_path(path, false, per_atom, {true, 2}), one), -1) << "per_atom " << per_atom;
+    EXPECT_EQ(first_difference(run_path(path, false, per_atom, {true, 3}), one), -1) << "per_atom " << per_atom;
   }
 }
 
@@ -160,7 +158,9 @@ TEST(EamTiled, AgreesWithTheWholeListToRoundOff) {
 // double and mixed precision give different numbers (the test above compares like with
 // like).
 TEST(EamPathSanity, MixedPrecisionDiffersFromDouble) {
-  EXPECT_NE(first_difference(run(mpmx::isa_compiled().back(), true, false), run(mpmx::isa_compiled().back(), false, false)), -1);
+  EXPECT_NE(first_difference(run_path(mpmx::isa_compiled().back(), true, false),
+                             run_path(mpmx::isa_compiled().back(), false, false)),
+            -1);
   mpmx::isa_use(mpmx::isa_supported().front());
 }
 
@@ -180,3 +180,5 @@ TEST(EamPathSanity, VersionNamesTheChosenPath) {
     EXPECT_NE(out.find("; chosen: " + path + "\n"), std::string::npos) << out;
   }
 }
+
+}  // namespace

@@ -1,23 +1,32 @@
 #pragma once
 // Helpers shared by the MD tests: the Mishin Cu potential that Debian's lammps-data
-// ships, and a scratch folder that lives as long as the test process.
+// ships, a system's total energy, a scratch folder that lives as long as the test
+// process, and whether LAMMPS (`lmp`) is there for the crosschecks.
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "mpmx/md/potential/potential.hpp"
+#include "mpmx/md/system.hpp"
 
 namespace mpmx::test {
 
+// The potential files of Debian's lammps-data, and the Mishin Cu one among them.
+inline const std::string kLammpsPotentials = "/usr/share/lammps/potentials/";
+inline const std::string kCuMishin = kLammpsPotentials + "Cu_mishin1.eam.alloy";
+
 inline md::PotentialSpec copper_spec() {
   md::EamSpec spec;
-  spec.file = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
+  spec.file = kCuMishin;
   return spec;
 }
 
 inline md::Potential copper() { return md::Potential(copper_spec()); }
+
+inline double total_energy(const md::System& s) { return s.potential_energy() + s.kinetic_energy(); }
 
 // A per-process folder under the system's temporary one, removed when the process ends.
 inline const std::filesystem::path& scratch_root() {
@@ -38,5 +47,7 @@ inline std::filesystem::path scratch_file(const std::string& name, const std::st
   std::ofstream(scratch_root() / name) << text;
   return scratch_root() / name;
 }
+
+inline bool have_lmp() { return std::system("command -v lmp > /dev/null 2>&1") == 0; }
 
 }  // namespace mpmx::test

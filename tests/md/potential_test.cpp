@@ -18,7 +18,7 @@ using namespace mpmx::md;
 
 namespace {
 
-const std::string kPot = "/usr/share/lammps/potentials/";
+using mpmx::test::kLammpsPotentials;
 
 Crystal perturbed(int n, double a, std::uint64_t seed, double amp = 0.1) {
   Crystal c = fcc(n, n, n, a);
@@ -63,7 +63,7 @@ void expect_forces_are_gradient(const Potential& pot, const Crystal& c, double t
 
 TEST(EamFile, UnknownElementIsAnInputError) {
   EamSpec s;
-  s.file = kPot + "Cu_mishin1.eam.alloy";
+  s.file = kLammpsPotentials + "Cu_mishin1.eam.alloy";
   s.elements = {"Zr"};
   try {
     Potential p(s);
@@ -75,15 +75,15 @@ TEST(EamFile, UnknownElementIsAnInputError) {
 
 TEST(EamForces, AreMinusEnergyGradientAndSumToZero) {
   EamSpec s;
-  s.file = kPot + "Cu_mishin1.eam.alloy";
+  s.file = kLammpsPotentials + "Cu_mishin1.eam.alloy";
   expect_forces_are_gradient(Potential(s), perturbed(3, 3.615, 1), 2e-6);
-  s.file = kPot + "Cu_u3.eam";
+  s.file = kLammpsPotentials + "Cu_u3.eam";
   expect_forces_are_gradient(Potential(s), perturbed(3, 3.615, 2), 2e-6);
 }
 
 TEST(EamForces, FinnisSinclairAlloyForces) {
   EamSpec s;
-  s.file = kPot + "CuZr_mm.eam.fs";
+  s.file = kLammpsPotentials + "CuZr_mm.eam.fs";
   s.elements = {"Cu", "Zr"};
   Crystal c = perturbed(3, 3.8, 3);
   for (std::size_t i = 0; i < c.atoms.size(); i += 3) c.atoms.type[i] = 1;
@@ -103,7 +103,7 @@ TEST(PairForces, LennardJonesAndSuttonChen) {
 // sigma_ab = (1/V) dE/d(eps_ab) for a homogeneous deformation of atoms and box.
 TEST(Stress, VirialIsStrainDerivativeOfEnergy) {
   EamSpec s;
-  s.file = kPot + "Cu_mishin1.eam.alloy";
+  s.file = kLammpsPotentials + "Cu_mishin1.eam.alloy";
   Potential pot(s);
   Crystal c = perturbed(4, 3.62, 6, 0.05);
   c.box.xy = 0.7;  // sheared images
@@ -141,7 +141,7 @@ TEST(Stress, VirialIsStrainDerivativeOfEnergy) {
 // forces within 1e-4 of the largest, and still energy-conserving dynamics.
 TEST(EamForces, MixedPrecisionAgreesWithDouble) {
   EamSpec s;
-  s.file = kPot + "Cu_mishin1.eam.alloy";
+  s.file = kLammpsPotentials + "Cu_mishin1.eam.alloy";
   Potential pot(s);
   const Crystal c = perturbed(5, 3.615, 9);
   SystemOptions o;

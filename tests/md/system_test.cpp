@@ -18,7 +18,7 @@ using namespace mpmx::md;
 
 namespace {
 using mpmx::test::copper;
-double total_energy(const System& s) { return s.potential_energy() + s.kinetic_energy(); }
+using mpmx::test::total_energy;
 }  // namespace
 
 TEST(Leapfrog, ShortNveRunConservesEnergy) {

@@ -30,7 +30,7 @@ void expect_same_nodes(const Grid<Dim>& a, const Grid<Dim>& b) {
 }
 
 template <int Dim>
-void compare(Scheme scheme) {
+void compare_active_lines(Scheme scheme) {
   SCOPED_TRACE(scheme_name(scheme) + " in " + std::to_string(Dim) + "-D");
   const Grid<Dim> g0 = mpmx::test::uneven_grid<Dim>();
   // The earlier step's points anywhere; this step's fewer and in the middle along x, some
@@ -102,8 +102,8 @@ void compare(Scheme scheme) {
 }  // namespace
 
 TEST(ActiveLines, AGridThatServedOtherPointsGivesTheFreshGridsBitsIn2D) {
-  for (const std::string& name : scheme_names()) compare<2>(scheme_from_name(name));
+  for (const std::string& name : scheme_names()) compare_active_lines<2>(scheme_from_name(name));
 }
 TEST(ActiveLines, AGridThatServedOtherPointsGivesTheFreshGridsBitsIn3D) {
-  for (const std::string& name : scheme_names()) compare<3>(scheme_from_name(name));
+  for (const std::string& name : scheme_names()) compare_active_lines<3>(scheme_from_name(name));
 }

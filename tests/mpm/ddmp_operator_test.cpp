@@ -35,7 +35,7 @@ double scale(const std::vector<double>& v) {
 }
 
 template <int Dim>
-void compare(Scheme scheme) {
+void compare_factored(Scheme scheme) {
   SCOPED_TRACE(scheme_name(scheme) + " in " + std::to_string(Dim) + "-D");
   const Grid<Dim> g0 = mpmx::test::uneven_grid<Dim>();
   const Particles<Dim> p0 = mpmx::test::random_particles<Dim>(g0, 150, 5, -0.5);
@@ -98,16 +98,16 @@ void compare(Scheme scheme) {
 }  // namespace
 
 TEST(DdmpOperator, FactoredEqualsFullIn1D) {
-  compare<1>(Scheme::ddmp);
-  compare<1>(Scheme::ddmp_subpoints);
+  compare_factored<1>(Scheme::ddmp);
+  compare_factored<1>(Scheme::ddmp_subpoints);
 }
 TEST(DdmpOperator, FactoredEqualsFullIn2D) {
-  compare<2>(Scheme::ddmp);
-  compare<2>(Scheme::ddmp_subpoints);
+  compare_factored<2>(Scheme::ddmp);
+  compare_factored<2>(Scheme::ddmp_subpoints);
 }
 TEST(DdmpOperator, FactoredEqualsFullIn3D) {
-  compare<3>(Scheme::ddmp);
-  compare<3>(Scheme::ddmp_subpoints);
+  compare_factored<3>(Scheme::ddmp);
+  compare_factored<3>(Scheme::ddmp_subpoints);
 }
 
 // The factored stencil holds the hat's 2^d nodes per point (the full one 4^d).

@@ -104,8 +104,6 @@ class FusedPath : public ::testing::TestWithParam<std::string> {
   void TearDown() override { mpmx::isa_use(mpmx::isa_supported().front()); }
 };
 
-}  // namespace
-
 INSTANTIATE_TEST_SUITE_P(Isa, FusedPath, ::testing::ValuesIn(mpmx::isa_supported()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
@@ -212,3 +210,5 @@ TEST(FusedIsa, PathsByName) {
   EXPECT_EQ(mpm::shape::isa_dispatched(), paths.back());
   mpmx::isa_use(paths.front());
 }
+
+}  // namespace

@@ -68,8 +68,6 @@ void check_consistency(const Case& c) {
   }
 }
 
-}  // namespace
-
 // Threads share the stencil's passes: the same entries for one thread and two, and a
 // point off the grid (past the cell beyond it) stops the run naming the first such point.
 template <int Dim>
@@ -184,3 +182,5 @@ TEST(DdmpND, AxisProductReducesTo1DAcrossY) {
       EXPECT_NEAR(sum, s1.G[0][q * 4 + k], 1e-13 * g1.inv_dx[0]) << q << " " << k;
     }
 }
+
+}  // namespace

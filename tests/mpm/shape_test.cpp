@@ -19,7 +19,7 @@ namespace {
 Grid<1> grid() { return Grid<1>({-1.0}, {3.0}, {20}); }
 
 // Particles spread over the whole grid, ends included, with domain lengths near dx/3.
-Particles<1> particles(const Grid<1>& g, std::size_t n, unsigned seed) {
+Particles<1> spread_particles(const Grid<1>& g, std::size_t n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   Particles<1> p;
@@ -38,12 +38,10 @@ Particles<1> particles(const Grid<1>& g, std::size_t n, unsigned seed) {
 
 class EveryScheme : public ::testing::TestWithParam<Scheme> {};
 
-}  // namespace
-
 TEST_P(EveryScheme, PartitionOfUnityAndZeroGradientSum) {
   const Grid<1> g = grid();
-  const Particles<1> p = particles(g, 400, 7);
-  ShapeEvaluator eval({GetParam(), 8, true}, g);
+  const Particles<1> p = spread_particles(g, 400, 7);
+  ShapeEvaluator eval({GetParam(), 8}, g);
   Stencil<1> st;
   eval(g, p, st);
   st = shape::expanded(st, g);  // DDMP: the gradient in full
@@ -62,8 +60,8 @@ TEST_P(EveryScheme, PartitionOfUnityAndZeroGradientSum) {
 TEST_P(EveryScheme, InternalForcesSumToZero) {  // eq. 4.7
   const Grid<1> g0 = grid();
   Grid<1> g = g0;
-  const Particles<1> p = particles(g, 400, 11);
-  ShapeEvaluator eval({GetParam(), 8, true}, g);
+  const Particles<1> p = spread_particles(g, 400, 11);
+  ShapeEvaluator eval({GetParam(), 8}, g);
   Stencil<1> st;
   eval(g, p, st);
   p2g(p, st, false, g);
@@ -123,7 +121,7 @@ TEST(Gimp, ShapeIsTheDomainAverageOfTheHat) {  // eq. 3.17
   p.x[0][0] = 0.37;
   p.length[0][0] = 0.13;
   Stencil<1> st;
-  ShapeEvaluator({Scheme::ugimp, 1, true}, g)(g, p, st);
+  ShapeEvaluator({Scheme::ugimp, 1}, g)(g, p, st);
   for (int k = 0; k < st.width; ++k) {
     const int i = st.node[k] - Grid<1>::ghost;
     // Midpoint rule with many points.
@@ -139,10 +137,10 @@ TEST(Gimp, ShapeIsTheDomainAverageOfTheHat) {  // eq. 3.17
 
 TEST(SubPoints, OneSubPointIsPlainDdmp) {
   const Grid<1> g = grid();
-  const Particles<1> p = particles(g, 50, 3);
+  const Particles<1> p = spread_particles(g, 50, 3);
   Stencil<1> a, b;
-  ShapeEvaluator({Scheme::ddmp, 1, true}, g)(g, p, a);
-  ShapeEvaluator({Scheme::ddmp_subpoints, 1, true}, g)(g, p, b);
+  ShapeEvaluator({Scheme::ddmp, 1}, g)(g, p, a);
+  ShapeEvaluator({Scheme::ddmp_subpoints, 1}, g)(g, p, b);
   a = shape::expanded(a, g);
   b = shape::expanded(b, g);
   for (std::size_t q = 0; q < p.size(); ++q)
@@ -155,3 +153,5 @@ TEST(SubPoints, OneSubPointIsPlainDdmp) {
       EXPECT_NEAR(a.G[0][q * a.width + k], gb, 1e-12);
     }
 }
+
+}  // namespace

@@ -23,7 +23,7 @@ namespace {
 
 // A 1-D bar of `points` unshared boxes of 256 atoms (the deck's cells, more points in
 // each), two continuum steps of 10 MD steps.
-std::string deck(int points) {
+std::string boxes_deck(int points) {
   std::ifstream in(test::example("H2_strong_0K_256_small.toml"));
   std::stringstream s;
   s << in.rdbuf();
@@ -55,7 +55,7 @@ double peak_of(const std::string& run_json) {
 
 TEST(MdClosureMemory, EstimateWithinFifteenPercentOfThePeak) {
   for (int points : {400, 1600, 4800}) {
-    const std::string d = deck(points);
+    const std::string d = boxes_deck(points);
     const auto c = app::read_mpm_deck(d);
     const double estimate = app::estimate_mpm(c).bytes;
     const fs::path out = test::scratch_root() / fmt::format("memory_run_{}", points);

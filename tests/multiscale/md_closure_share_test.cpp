@@ -26,8 +26,8 @@ multiscale::MdClosureConfig bar_config(bool share, double tolerance = 1e-4) {
 // Each step's gradient of every point (1/ps as continuum units here: nm_ps_GPa).
 using History = std::vector<std::vector<double>>;
 
-std::vector<double> run(const multiscale::MdClosureConfig& md, const History& gradients, std::vector<double> strain,
-                        multiscale::MdClosure<1>** keep = nullptr) {
+std::vector<double> run_closure(const multiscale::MdClosureConfig& md, const History& gradients,
+                                std::vector<double> strain, multiscale::MdClosure<1>** keep = nullptr) {
   static std::vector<std::unique_ptr<multiscale::MdClosure<1>>> kept;
   auto m = std::make_unique<multiscale::MdClosure<1>>(md);
   mpm::Particles<1> p;
@@ -48,8 +48,8 @@ std::vector<double> run(const multiscale::MdClosureConfig& md, const History& gr
 TEST(MdClosureShare, IdenticalPointsAtZeroKelvinGetTheirUnsharedStressBitForBit) {
   const History h{{-0.05, -0.05, -0.05, -0.05}, {-0.05, -0.05, -0.05, -0.05}, {0.02, 0.02, 0.02, 0.02}};
   multiscale::MdClosure<1>* shared = nullptr;
-  const auto s = run(bar_config(true), h, {0.0, 0.0, 0.0, 0.0}, &shared);
-  const auto u = run(bar_config(false), h, {0.0, 0.0, 0.0, 0.0});
+  const auto s = run_closure(bar_config(true), h, {0.0, 0.0, 0.0, 0.0}, &shared);
+  const auto u = run_closure(bar_config(false), h, {0.0, 0.0, 0.0, 0.0});
   EXPECT_EQ(s, u);
   EXPECT_EQ(shared->groups().groups(), 1u);
   EXPECT_EQ(shared->atom_steps() * 4, shared->atom_steps_unshared());
@@ -62,11 +62,11 @@ TEST(MdClosureShare, ADepartingMemberContinuesFromAnExactCopy) {
   const double a = -0.05, b = -0.03;
   const History shared_history{{a, a}, {a, a}, {a, b}, {a, b}};
   multiscale::MdClosure<1>* m = nullptr;
-  const auto s = run(bar_config(true, 0.0), shared_history, {0.0, 0.0}, &m);
+  const auto s = run_closure(bar_config(true, 0.0), shared_history, {0.0, 0.0}, &m);
   EXPECT_EQ(m->groups().groups(), 2u);
   EXPECT_EQ(m->groups().groups_initial(), 1u);
-  const auto stayer = run(bar_config(false), {{a}, {a}, {a}, {a}}, {0.0});
-  const auto leaver = run(bar_config(false), {{a}, {a}, {b}, {b}}, {0.0});
+  const auto stayer = run_closure(bar_config(false), {{a}, {a}, {a}, {a}}, {0.0});
+  const auto leaver = run_closure(bar_config(false), {{a}, {a}, {b}, {b}}, {0.0});
   EXPECT_EQ(s[0], stayer[0]);
   EXPECT_EQ(s[1], leaver[0]);
 }
@@ -79,8 +79,8 @@ TEST(MdClosureShare, TheAuditMeasuresTheSharingsError) {
   md.share.audit = 1;
   const History h(6, std::vector<double>{-0.05, -0.04});
   multiscale::MdClosure<1>* m = nullptr;
-  const auto s = run(md, h, {0.0, 0.0}, &m);
-  const auto own1 = run(bar_config(false), History(6, std::vector<double>{-0.04}), {0.0});
+  const auto s = run_closure(md, h, {0.0, 0.0}, &m);
+  const auto own1 = run_closure(bar_config(false), History(6, std::vector<double>{-0.04}), {0.0});
   ASSERT_EQ(m->groups().groups(), 1u);  // 0.01 / ps x 0.12 ps / 2 = 6e-4 < 1e-3: never split
   EXPECT_TRUE(std::isfinite(m->audit_rel_rms()));
   EXPECT_GT(m->audit_max_gpa(), 0.0);

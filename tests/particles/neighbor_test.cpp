@@ -65,8 +65,6 @@ Neighbors build_on(const std::string& path, const Atoms& at, const Box& box, dou
   return nb;
 }
 
-}  // namespace
-
 INSTANTIATE_TEST_SUITE_P(Isa, SearchPath, ::testing::ValuesIn(mpmx::isa_supported()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
@@ -173,3 +171,5 @@ TEST(NeighborRebuild, NonFiniteBoxAsksForNoRebuild) {
   at.x[0] = 3.0;  // moved by 2 > skin / 2
   EXPECT_TRUE(nb.needs_rebuild(at, box));
 }
+
+}  // namespace

@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool have_lmp() { return std::system("command -v lmp > /dev/null 2>&1") == 0; }
+using mpmx::test::have_lmp;
 
 BarConfig small_bar(double temperature) {
   BarConfig c;
@@ -45,7 +45,7 @@ struct Limits {
   double history_gpa;    // |d sxx| over the whole history (GPa)
 };
 
-void crosscheck(const std::string& name, double temperature, int steps, int every, Limits lim) {
+void crosscheck_bar(const std::string& name, double temperature, int steps, int every, Limits lim) {
   if (!have_lmp()) GTEST_SKIP() << "lmp (LAMMPS) not on PATH";
   const double dt = 0.001;
   const BarConfig c = small_bar(temperature);
@@ -110,12 +110,12 @@ void crosscheck(const std::string& name, double temperature, int steps, int ever
 // 0 K: forces agree to ~1e-14 relative (md_lammps_crosscheck_test), so the histories
 // differ by round-off growth only. Measured (2026-11, Release): 1.3e-15 relative at
 // step 0, <= 3e-13 GPa over 500 steps (1.4e-10 GPa after 6000); the limit leaves 3000x.
-TEST(bar_lammps, ZeroKelvinHistory) { crosscheck("0K", 0.0, 500, 50, {1e-10, 1e-9}); }
+TEST(bar_lammps, ZeroKelvinHistory) { crosscheck_bar("0K", 0.0, 500, 50, {1e-10, 1e-9}); }
 
 // 300 K (atoms start at 600 K): round-off differences grow chaotically, about x10 per
 // 2 ps here (measured: 5e-13 GPa at 1 ps, 2e-11 at 5 ps, 1.7e-10 at 6 ps), so 1 ps with
 // a limit 2e4 times the measured difference (some 8 ps more of growth).
-TEST(bar_lammps, ThermalShortHorizon) { crosscheck("300K", 300.0, 1000, 100, {1e-10, 1e-8}); }
+TEST(bar_lammps, ThermalShortHorizon) { crosscheck_bar("300K", 300.0, 1000, 100, {1e-10, 1e-8}); }
 
 TEST(bar_lammps, RejectsMovingPiston) {
   BarConfig c = small_bar(0.0);

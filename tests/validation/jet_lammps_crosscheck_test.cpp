@@ -29,10 +29,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool have_lmp() { return std::system("command -v lmp > /dev/null 2>&1") == 0; }
+using mpmx::test::have_lmp;
 
-void crosscheck(const std::string& name, double temperature, int ranks, int steps, int every, double step0_rel,
-                double history_gpa) {
+void crosscheck_jet(const std::string& name, double temperature, int ranks, int steps, int every, double step0_rel,
+                    double history_gpa) {
   if (!have_lmp()) GTEST_SKIP() << "lmp (LAMMPS) not on PATH";
   JetConfig c;
   c.scale = 0.04;
@@ -85,7 +85,7 @@ void crosscheck(const std::string& name, double temperature, int ranks, int step
 }  // namespace
 
 // 0 K: the block and the piston alone, one rank.
-TEST(jet_lammps, ZeroKelvinImpact) { crosscheck("0K", 0.0, 1, 300, 50, 1e-10, 1e-8); }
+TEST(jet_lammps, ZeroKelvinImpact) { crosscheck_jet("0K", 0.0, 1, 300, 50, 1e-10, 1e-8); }
 
 // 10 K (started at 20 K, sec. 7.1) on 2 ranks, as `--lammps --ranks 2` runs it.
-TEST(jet_lammps, TenKelvinTwoRanks) { crosscheck("10K", 10.0, 2, 200, 50, 1e-10, 1e-7); }
+TEST(jet_lammps, TenKelvinTwoRanks) { crosscheck_jet("10K", 10.0, 2, 200, 50, 1e-10, 1e-7); }

@@ -22,15 +22,8 @@
 namespace fs = std::filesystem;
 
 namespace {
+using mpmx::test::json_number;
 using mpmx::test::slurp;
-
-
-double json_number(const std::string& json, const std::string& key) {
-  const std::string tag = "\"" + key + "\" : ";
-  const auto at = json.find(tag);
-  if (at == std::string::npos) return std::nan("");
-  return std::strtod(json.c_str() + at + tag.size(), nullptr);
-}
 
 int run(const std::string& env, const fs::path& out) {
   fs::remove_all(out);

@@ -24,12 +24,15 @@
 #include "mpmx/particles/lattice.hpp"
 #include "mpmx/particles/rng.hpp"
 
+#include "../md/md_test_util.hpp"
+
 using namespace mpmx::md;
 namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kPot = "/usr/share/lammps/potentials/";
+using mpmx::test::have_lmp;
+using mpmx::test::kLammpsPotentials;
 
 struct Case {
   std::string name;
@@ -47,8 +50,6 @@ struct LammpsResult {
   std::array<double, 6> p0{};  // virial pressure (bar): xx yy zz xy xz yz
   std::map<long, std::array<double, 3>> f0, x1, v1;
 };
-
-bool have_lmp() { return std::system("command -v lmp > /dev/null 2>&1") == 0; }
 
 std::map<long, std::array<double, 3>> read_dump(const fs::path& p) {
   std::ifstream in(p);
@@ -85,7 +86,7 @@ LammpsResult run_lammps(const Case& cs, const System& sys, const fs::path& dir, 
     in << "units metal\natom_style atomic\nboundary p p p\natom_modify map array\n";
     in << "read_data data.lmp\n";
     in << fmt::format("pair_style {}\npair_coeff {} {}{}", cs.style, cs.style == "eam" ? "1 1" : "* *",
-                      kPot, cs.file);
+                      kLammpsPotentials, cs.file);
     for (const auto& e : cs.elements) in << " " << e;
     in << "\nneighbor 1.0 bin\nneigh_modify every 1 delay 0 check yes\n";
     in << "compute vir all pressure NULL virial\n";
@@ -125,7 +126,7 @@ LammpsResult run_lammps(const Case& cs, const System& sys, const fs::path& dir, 
 
 System make_system(const Case& cs, std::uint64_t seed) {
   EamSpec spec;
-  spec.file = kPot + cs.file;
+  spec.file = kLammpsPotentials + cs.file;
   spec.elements = cs.elements;
   Potential pot(spec);
   Crystal c = fcc(cs.cells, cs.cells, cs.cells, cs.a);

@@ -45,13 +45,12 @@ bool RunControl::stop_due(std::int64_t step) const {
 }
 
 void RunControl::checkpoint(std::uint64_t count, const std::function<void(CheckpointOut&)>& write) {
-  std::ostringstream f(std::ios::binary);
-  CheckpointOut w(f);
+  io::CheckedWriter file(checkpoint_path(dir_), {kind_, 1, io::text_hash(deck_text_), count});
+  CheckpointOut w(file.stream());
   w.text(deck_text_);
   write(w);
   w.marks(tables_->marks());
-  if (!f) throw RunError(fmt::format("cannot write the checkpoint {}", checkpoint_path(dir_)));
-  io::write_checked(checkpoint_path(dir_), {kind_, 1, io::text_hash(deck_text_), count}, f.view());
+  file.commit();
   interrupted_ = true;
 }
 

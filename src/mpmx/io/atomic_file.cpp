@@ -23,6 +23,12 @@ void AtomicWriter::write(const void* data, std::size_t bytes) {
   if (bytes > 0 && std::fwrite(data, 1, bytes, f_) != bytes) fail("write failed");
 }
 
+void AtomicWriter::overwrite(std::size_t offset, std::string_view s) {
+  if (std::fseek(f_, static_cast<long>(offset), SEEK_SET) != 0) fail("seek failed");
+  write(s);
+  if (std::fseek(f_, 0, SEEK_END) != 0) fail("seek failed");
+}
+
 void AtomicWriter::commit() {
   std::FILE* f = f_;
   f_ = nullptr;

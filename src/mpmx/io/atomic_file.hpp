@@ -20,6 +20,8 @@ class AtomicWriter {
 
   void write(const void* data, std::size_t bytes);
   void write(std::string_view s) { write(s.data(), s.size()); }
+  // Bytes over those already written at `offset` (a header filled in last).
+  void overwrite(std::size_t offset, std::string_view s);
   void commit();
 
  private:

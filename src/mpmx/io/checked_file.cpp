@@ -4,6 +4,9 @@
 #include <fstream>
 #include <istream>
 #include <iterator>
+#include <ostream>
+#include <streambuf>
+#include <vector>
 
 #include <fmt/format.h>
 #include <zlib.h>
@@ -63,18 +66,25 @@ std::uint32_t crc32_of(std::string_view bytes) {
   return static_cast<std::uint32_t>(crc);
 }
 
-std::string frame(const CheckedKind& k, std::string_view payload) {
+namespace {
+
+std::string header(const CheckedKind& k, std::uint32_t payload_crc, std::uint64_t payload_bytes) {
   std::string h(kCheckedHeaderBytes, '\0');
   h.replace(0, 8, kMagic, 8);
   h.replace(kKind, 8, kind_field(k.kind));
   put(h, kVersion, k.version, 4);
-  put(h, kPayloadCrc, crc32_of(payload), 4);
+  put(h, kPayloadCrc, payload_crc, 4);
   put(h, kDeck, k.deck_hash, 8);
   put(h, kCount, k.count, 8);
-  put(h, kSize, payload.size(), 8);
+  put(h, kSize, payload_bytes, 8);
   put(h, kHeaderCrc, crc32_of(std::string_view(h).substr(0, kHeaderCrc)), 4);
-  h.append(payload);
   return h;
+}
+
+}  // namespace
+
+std::string frame(const CheckedKind& k, std::string_view payload) {
+  return header(k, crc32_of(payload), payload.size()).append(payload);
 }
 
 std::string_view unframe(std::string_view b, const CheckedKind& k, const std::string& name) {
@@ -114,15 +124,70 @@ void write_checked(const std::string& path, const CheckedKind& k, std::string_vi
   write_file_atomic(path, frame(k, payload));
 }
 
+// A stream buffer that passes its bytes to the file a block at a time, its CRC and
+// count kept on the way.
+struct CheckedWriter::Impl : std::streambuf {
+  Impl(const std::string& path, const CheckedKind& k) : file(path), kind(k), block(1 << 20) {
+    file.write(std::string(kCheckedHeaderBytes, '\0'));  // filled in by commit()
+    setp(block.data(), block.data() + block.size());
+    out.exceptions(std::ios::badbit);  // the file's RunError (disk full) reaches the caller as it is
+  }
+  void drain() {
+    const std::string_view b(pbase(), static_cast<std::size_t>(pptr() - pbase()));
+    crc = crc32(crc, reinterpret_cast<const Bytef*>(b.data()), static_cast<uInt>(b.size()));
+    bytes += b.size();
+    file.write(b);
+    setp(block.data(), block.data() + block.size());
+  }
+  int_type overflow(int_type c) override {
+    drain();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override {
+    drain();
+    return 0;
+  }
+  AtomicWriter file;
+  CheckedKind kind;
+  std::vector<char> block;  // at most 1 MiB: crc32 takes it in one call
+  uLong crc = crc32(0L, Z_NULL, 0);
+  std::uint64_t bytes = 0;
+  std::ostream out{this};
+};
+
+CheckedWriter::CheckedWriter(const std::string& path, const CheckedKind& k) : impl_(new Impl(path, k)) {}
+CheckedWriter::~CheckedWriter() { delete impl_; }
+std::ostream& CheckedWriter::stream() { return impl_->out; }
+
+void CheckedWriter::commit() {
+  Impl& w = *impl_;
+  w.drain();
+  w.file.overwrite(0, header(w.kind, static_cast<std::uint32_t>(w.crc), w.bytes));
+  w.file.commit();
+}
+
 std::string read_checked(const std::string& path, const CheckedKind& k) {
   // A folder opens as a stream on Linux and fails only inside the read.
   if (std::error_code ec; std::filesystem::is_directory(path, ec))
     throw InputError(fmt::format("the checkpoint {} is a folder, not a file", path));
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError(fmt::format("cannot open the checkpoint {}", path));
-  std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  // Read into a string of the file's size, and the payload returned in it (a resumed jet's
+  // checkpoint is hundreds of MB: one copy in memory, not three).
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  std::string bytes(ec ? 0 : static_cast<std::size_t>(size), '\0');
+  f.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(f.gcount()));
+  if (!f.bad() && !f.eof()) bytes.append(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
   if (f.bad()) throw InputError(fmt::format("cannot read the checkpoint {}", path));
-  return std::string(unframe(bytes, k, path));
+  unframe(bytes, k, path);
+  bytes.erase(0, kCheckedHeaderBytes);
+  return bytes;
 }
 
 }  // namespace mpmx::io

@@ -39,6 +39,26 @@ std::string_view unframe(std::string_view bytes, const CheckedKind& k, const std
 // frame() written atomically to `path` (through path + ".tmp"); read_checked reads
 // `path` whole and unframes it.
 void write_checked(const std::string& path, const CheckedKind& k, std::string_view payload);
+
+// The same file, its payload streamed: what is written to stream() goes to the disk as
+// it comes, its CRC and size kept as it passes, the header filled in by commit(). A
+// checkpoint of a few hundred MB of MD boxes then costs no copy of itself in memory
+// (assembled in a string first, then framed, it took about five). Leaving without
+// commit() leaves `path` as it was.
+class CheckedWriter {
+ public:
+  CheckedWriter(const std::string& path, const CheckedKind& k);
+  ~CheckedWriter();
+  CheckedWriter(const CheckedWriter&) = delete;
+  CheckedWriter& operator=(const CheckedWriter&) = delete;
+
+  std::ostream& stream();
+  void commit();
+
+ private:
+  struct Impl;
+  Impl* impl_;
+};
 std::string read_checked(const std::string& path, const CheckedKind& k);
 
 // The payload readers' count check and offset (core/binary.hpp), under io's names too.

@@ -480,13 +480,19 @@ std::map<std::uint64_t, std::string> unpack(const std::string& all) {
 
 template <int Dim>
 void MdClosure<Dim>::save(std::ostream& out) const {
-  std::ostringstream group_boxes(std::ios::binary), audit_boxes(std::ios::binary);
-  for (std::size_t g = 0; g < boxes_.size(); ++g)
-    if (boxes_[g]) pack(group_boxes, g, box_bytes(*boxes_[g]));
-  for (const auto& [q, box] : audits_) pack(audit_boxes, q, box_bytes(box, &audit_stress_.at(q)));
-  const auto groups = unpack(ranks::gather_to_root(group_boxes.str()));
-  const auto audits = unpack(ranks::gather_to_root(audit_boxes.str()));
-  if (!ranks::root()) return;
+  // One process writes its boxes straight to `out` (hundreds of MB on the jet: no copy
+  // of them in memory); under MPI rank 0 gathers every rank's first, keyed for their order.
+  const bool gather = ranks::size() > 1;
+  std::map<std::uint64_t, std::string> groups, audits;
+  if (gather) {
+    std::ostringstream group_boxes(std::ios::binary), audit_boxes(std::ios::binary);
+    for (std::size_t g = 0; g < boxes_.size(); ++g)
+      if (boxes_[g]) pack(group_boxes, g, box_bytes(*boxes_[g]));
+    for (const auto& [q, box] : audits_) pack(audit_boxes, q, box_bytes(box, &audit_stress_.at(q)));
+    groups = unpack(ranks::gather_to_root(group_boxes.str()));
+    audits = unpack(ranks::gather_to_root(audit_boxes.str()));
+    if (!ranks::root()) return;
+  }
   const std::uint64_t n = groups_.points();
   write_raw(out, n);
   write_raw(out, atom_steps_);
@@ -494,11 +500,20 @@ void MdClosure<Dim>::save(std::ostream& out) const {
   write_raw(out, macro_step_);
   groups_.save(out);
   for (const auto& [g, bytes] : groups) out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  write_raw(out, static_cast<std::uint64_t>(audits.size()));
+  if (!gather)
+    for (const auto& box : boxes_)
+      if (box) box->save(out);
+  write_raw(out, static_cast<std::uint64_t>(gather ? audits.size() : audits_.size()));
   for (const auto& [q, bytes] : audits) {  // each box, then its last stress
     write_raw(out, q);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   }
+  if (!gather)
+    for (const auto& [q, box] : audits_) {
+      write_raw(out, static_cast<std::uint64_t>(q));
+      box.save(out);
+      out.write(reinterpret_cast<const char*>(audit_stress_.at(q).data()), sizeof(double) * 9);
+    }
   // Eq. 7.11's and the audit's tallies, every point's rotation and every group's box
   // shape and last stress (the next step's sigma^n): the same on every rank.
   for (const double v : {injected_ev_, shortfall_ev_, audit_d2_, audit_s2_, audit_max_gpa_}) write_raw(out, v);

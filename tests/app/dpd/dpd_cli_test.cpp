@@ -18,9 +18,9 @@
 #include "cli_util.hpp"
 
 namespace {
+using mpmx::test::run_cli;
 using mpmx::test::slurp;
 using Result = mpmx::test::CliResult;
-constexpr auto run = mpmx::test::run_cli;
 
 
 namespace fs = std::filesystem;
@@ -44,7 +44,7 @@ fs::path deck(const std::string& name, const std::string& text) {
 }
 
 // A top-level number of run.json (indented 4: the deck's echo has keys of the same names).
-double json_number(const std::string& json, const std::string& key) {
+double top_level_number(const std::string& json, const std::string& key) {
   const std::string tag = "\n    \"" + key + "\" : ";
   const auto at = json.find(tag);
   if (at == std::string::npos) return std::nan("");
@@ -52,7 +52,7 @@ double json_number(const std::string& json, const std::string& key) {
 }
 
 // A small DPDE Cu crystal with a rigid grip and a short Berendsen start.
-const std::string kGood = R"(
+const std::string kGoodDpdDeck = R"(
 [case]
 id = "dpd_cli"
 [potential]
@@ -89,15 +89,15 @@ dump_every = 20
 )";
 
 TEST(DpdCli, RunWritesRecordThermoAndDump) {
-  const fs::path d = deck("good.toml", kGood);
+  const fs::path d = deck("good.toml", kGoodDpdDeck);
   const fs::path out = dir() / "out1";
-  const Result r = run("dpd " + d.string() + " --out " + out.string() + " --quiet");
+  const Result r = run_cli("dpd " + d.string() + " --out " + out.string() + " --quiet");
   ASSERT_EQ(r.status, 0) << r.output;
   const std::string json = slurp(out / "run.json");
-  EXPECT_EQ(json_number(json, "particles"), 256);
-  EXPECT_EQ(json_number(json, "steps"), 60);
-  EXPECT_EQ(json_number(json, "equilibrate_steps"), 40);
-  EXPECT_GT(json_number(json, "particle_steps_per_second"), 0);
+  EXPECT_EQ(top_level_number(json, "particles"), 256);
+  EXPECT_EQ(top_level_number(json, "steps"), 60);
+  EXPECT_EQ(top_level_number(json, "equilibrate_steps"), 40);
+  EXPECT_GT(top_level_number(json, "particle_steps_per_second"), 0);
   EXPECT_NE(json.find("\"ensemble\" : \"dpde\""), std::string::npos);
   EXPECT_NE(json.find("\"conservation\""), std::string::npos);
   const std::string thermo = slurp(out / "thermo.csv");
@@ -119,9 +119,9 @@ TEST(DpdCli, RunWritesRecordThermoAndDump) {
 }
 
 TEST(DpdCli, TwoThreadsWriteTheSameThermoTable) {
-  const fs::path d = deck("threads.toml", kGood);
-  ASSERT_EQ(run("dpd " + d.string() + " --out " + (dir() / "t1").string() + " --quiet --threads 1").status, 0);
-  ASSERT_EQ(run("dpd " + d.string() + " --out " + (dir() / "t2").string() + " --quiet --threads 2").status, 0);
+  const fs::path d = deck("threads.toml", kGoodDpdDeck);
+  ASSERT_EQ(run_cli("dpd " + d.string() + " --out " + (dir() / "t1").string() + " --quiet --threads 1").status, 0);
+  ASSERT_EQ(run_cli("dpd " + d.string() + " --out " + (dir() / "t2").string() + " --quiet --threads 2").status, 0);
   EXPECT_EQ(slurp(dir() / "t1" / "thermo.csv"), slurp(dir() / "t2" / "thermo.csv"));
   EXPECT_EQ(slurp(dir() / "t1" / "dump.lammpstrj"), slurp(dir() / "t2" / "dump.lammpstrj"));
 }
@@ -157,9 +157,9 @@ std::vector<double> grip_mean_x(const std::string& dump) {
 }
 
 TEST(DpdCli, StillTwinStartsTheRigidGroupsAtRest) {
-  const fs::path d = deck("still.toml", kGood);
-  ASSERT_EQ(run("dpd " + d.string() + " --out " + (dir() / "driven").string() + " --quiet").status, 0);
-  const Result r = run("dpd " + d.string() + " --out " + (dir() / "still").string() + " --quiet --still");
+  const fs::path d = deck("still.toml", kGoodDpdDeck);
+  ASSERT_EQ(run_cli("dpd " + d.string() + " --out " + (dir() / "driven").string() + " --quiet").status, 0);
+  const Result r = run_cli("dpd " + d.string() + " --out " + (dir() / "still").string() + " --quiet --still");
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(slurp(dir() / "still" / "run.json").find("\"still\" : true"), std::string::npos);
   EXPECT_NE(slurp(dir() / "driven" / "run.json").find("\"still\" : false"), std::string::npos);
@@ -183,8 +183,8 @@ TEST(DpdCli, StillTwinStartsTheRigidGroupsAtRest) {
 }
 
 TEST(DpdCli, CheckValidatesWithoutRunning) {
-  const fs::path d = deck("check.toml", kGood);
-  const Result r = run("dpd " + d.string() + " --check --out " + (dir() / "never").string());
+  const fs::path d = deck("check.toml", kGoodDpdDeck);
+  const Result r = run_cli("dpd " + d.string() + " --check --out " + (dir() / "never").string());
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("ok"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir() / "never"));
@@ -213,13 +213,13 @@ TEST(DpdCli, BadDecksNameKeyValueAndReason) {
       {"dt = 0.005", "dt = 0.005\nskin = 1000.0", "'run.skin' = 1000: must lie in [0, "},
   };
   for (const BadCase& c : cases) {
-    std::string text = kGood;
+    std::string text = kGoodDpdDeck;
     const auto at = text.find(c.from);
     ASSERT_NE(at, std::string::npos) << c.from;
     text.replace(at, std::string(c.from).size(), c.to);
     const fs::path d = deck("bad.toml", text);
     const fs::path out = dir() / "bad_out";
-    const Result r = run("dpd " + d.string() + " --out " + out.string());
+    const Result r = run_cli("dpd " + d.string() + " --out " + out.string());
     EXPECT_EQ(r.status, 2) << c.to << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expect), std::string::npos) << "expected '" << c.expect << "' in:\n" << r.output;
     EXPECT_FALSE(fs::exists(out)) << c.to;
@@ -228,7 +228,7 @@ TEST(DpdCli, BadDecksNameKeyValueAndReason) {
 
 TEST(DpdCli, ExampleDecksValidate) {
   for (const char* name : {"D_dpd_equilibrium.toml", "D_dpde_cu_nve.toml"}) {
-    const Result r = run(std::string("dpd ") + MPMX_SOURCE_DIR + "/examples/" + name + " --check");
+    const Result r = run_cli(std::string("dpd ") + MPMX_SOURCE_DIR + "/examples/" + name + " --check");
     EXPECT_EQ(r.status, 0) << name << "\n" << r.output;
   }
 }
@@ -250,7 +250,7 @@ TEST(DpdCli, GridAndAnalysisKeysAreChecked) {
   swap("cell = 4.0", "cell = 0.01");
   swap("name = \"region2\"", "name = \"region1\"");
   swap("interface = \"pair_reaction\"", "interface = \"glue\"");
-  const auto r = run("dpd " + deck("grid_bad.toml", text).string() + " --check");
+  const auto r = run_cli("dpd " + deck("grid_bad.toml", text).string() + " --check");
   EXPECT_EQ(r.status, 2) << r.output;
   for (const char* key : {"'grid'", "track[1].name", "analysis.wave_speed", "continuum.interface"})
     EXPECT_NE(r.output.find(key), std::string::npos) << key << "\n" << r.output;
@@ -264,7 +264,7 @@ namespace {
 // estimated and refused beyond about a day, naming the key, by the run and by --check
 // alike; --force takes it, and --check prints the estimate.
 TEST(DpdCli, WorkBeyondADayIsRefusedUnlessForced) {
-  std::string text = kGood;
+  std::string text = kGoodDpdDeck;
   const std::string from = "dt = 0.005";
   const auto at = text.find(from);
   ASSERT_NE(at, std::string::npos);
@@ -274,17 +274,17 @@ TEST(DpdCli, WorkBeyondADayIsRefusedUnlessForced) {
   const fs::path d = deck("forever.toml", text);
   for (const std::string flags : {"", " --check"}) {
     const fs::path out = dir() / "forever_out";
-    const Result r = run("dpd " + d.string() + flags + " --out " + out.string());
+    const Result r = run_cli("dpd " + d.string() + flags + " --out " + out.string());
     EXPECT_EQ(r.status, 2) << flags << "\n" << r.output;
     EXPECT_NE(r.output.find("run.steps"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("particle-steps"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("--force"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(out));
   }
-  const Result forced = run("dpd " + d.string() + " --check --force");
+  const Result forced = run_cli("dpd " + d.string() + " --check --force");
   EXPECT_EQ(forced.status, 0) << forced.output;
   EXPECT_NE(forced.output.find("days on one core"), std::string::npos) << forced.output;
-  const Result small = run("dpd " + deck("small.toml", kGood).string() + " --check");
+  const Result small = run_cli("dpd " + deck("small.toml", kGoodDpdDeck).string() + " --check");
   EXPECT_EQ(small.status, 0) << small.output;
   EXPECT_NE(small.output.find("256 particles"), std::string::npos) << small.output;
 }

@@ -26,9 +26,9 @@ namespace fs = std::filesystem;
 using mpmx::test::run_cli;
 using mpmx::test::slurp;
 
-const mpmx::test::ScratchFolder kDir("mpmx_dpd_interrupt");
+const mpmx::test::ScratchFolder kDpdDir("mpmx_dpd_interrupt");
 
-std::string deck(const std::string& name, const std::string& text) { return kDir.file(name, text); }
+std::string dpd_deck(const std::string& name, const std::string& text) { return kDpdDir.file(name, text); }
 
 // A DPDE Cu crystal with a rigid grip pulled away, after a Berendsen start.
 std::string crystal(int steps) {
@@ -134,7 +134,7 @@ every = 40
 )";
 
 std::string whole_run(const std::string& d, const std::string& name) {
-  const fs::path whole = kDir / (name + "_whole");
+  const fs::path whole = kDpdDir / (name + "_whole");
   const auto w = run_cli(fmt::format("dpd '{}' --quiet --no-plot --threads 2 --out '{}'", d, whole.string()));
   EXPECT_EQ(w.status, 0) << w.output;
   return whole.string();
@@ -147,9 +147,9 @@ void resume_and_compare(const std::string& d, const fs::path& whole, const fs::p
 }
 
 TEST(DpdInterrupt, CtrlCInTheRunResumesToTheSameFiles) {
-  const std::string d = deck("crystal.toml", crystal(3000));
-  const fs::path whole = whole_run(d, "crystal"), cut = kDir / "crystal_cut";
-  const std::string log = (kDir / "crystal.log").string();
+  const std::string d = dpd_deck("crystal.toml", crystal(3000));
+  const fs::path whole = whole_run(d, "crystal"), cut = kDpdDir / "crystal_cut";
+  const std::string log = (kDpdDir / "crystal.log").string();
   // Past the equilibration's 3 rows and a few of the run's.
   const int status = mpmx::test::signal_when(
       fmt::format("'{}' dpd '{}' --quiet --no-plot --threads 2 --out '{}'", MPMX_BINARY, d, cut.string()),
@@ -165,8 +165,8 @@ TEST(DpdInterrupt, CtrlCInTheRunResumesToTheSameFiles) {
 }
 
 TEST(DpdInterrupt, StoppedInTheEquilibrationResumesToTheSameFiles) {
-  const std::string d = deck("equilibrating.toml", crystal(100));
-  const fs::path whole = whole_run(d, "equilibrating"), cut = kDir / "equilibrating_cut";
+  const std::string d = dpd_deck("equilibrating.toml", crystal(100));
+  const fs::path whole = whole_run(d, "equilibrating"), cut = kDpdDir / "equilibrating_cut";
   const auto stop =
       run_cli(fmt::format("dpd '{}' --quiet --no-plot --out '{}' --stop-after 20", d, cut.string()));
   ASSERT_EQ(stop.status, 130) << stop.output;
@@ -175,8 +175,8 @@ TEST(DpdInterrupt, StoppedInTheEquilibrationResumesToTheSameFiles) {
 }
 
 TEST(DpdInterrupt, TheConcurrentRodResumesToTheSameFiles) {
-  const std::string d = deck("concurrent.toml", kConcurrent);
-  const fs::path whole = whole_run(d, "concurrent"), cut = kDir / "concurrent_cut";
+  const std::string d = dpd_deck("concurrent.toml", kConcurrent);
+  const fs::path whole = whole_run(d, "concurrent"), cut = kDpdDir / "concurrent_cut";
   const auto stop =
       run_cli(fmt::format("dpd '{}' --quiet --no-plot --out '{}' --stop-after 85", d, cut.string()));
   ASSERT_EQ(stop.status, 130) << stop.output;
@@ -186,8 +186,8 @@ TEST(DpdInterrupt, TheConcurrentRodResumesToTheSameFiles) {
 }
 
 TEST(DpdInterrupt, ADamagedCheckpointIsRefused) {
-  const std::string d = deck("damaged.toml", crystal(100));
-  const fs::path cut = kDir / "damaged";
+  const std::string d = dpd_deck("damaged.toml", crystal(100));
+  const fs::path cut = kDpdDir / "damaged";
   ASSERT_EQ(run_cli(fmt::format("dpd '{}' --quiet --no-plot --out '{}' --stop-after 60", d, cut.string())).status,
             130);
   const fs::path ck = cut / "checkpoint.bin";
@@ -209,10 +209,10 @@ TEST(DpdInterrupt, ADamagedCheckpointIsRefused) {
 }
 
 TEST(DpdInterrupt, FitDpdStopsAtOnceLeavingOutAsItWas) {
-  const fs::path out = kDir / "fit";
+  const fs::path out = kDpdDir / "fit";
   fs::create_directories(out);
   std::ofstream(out / "earlier.csv") << "an earlier run's table\n";
-  const std::string log = (kDir / "fit.log").string();
+  const std::string log = (kDpdDir / "fit.log").string();
   const int status = mpmx::test::signal_when(
       fmt::format("'{}' fit-dpd '{}/examples/D0_md_to_dpd_fit.toml' --threads 1 --out '{}'", MPMX_BINARY,
                   MPMX_SOURCE_DIR, out.string()),
@@ -227,7 +227,7 @@ TEST(DpdInterrupt, FitDpdStopsAtOnceLeavingOutAsItWas) {
 
 // D0 with [elastic] made small: 3 densities of 108 atoms, 108 mesoparticles, 2 rounds.
 std::string tiny_fit() {
-  return deck("tiny_fit.toml", R"([case]
+  return dpd_deck("tiny_fit.toml", R"([case]
 id = "fit_tiny"
 [md.potential]
 style = "sutton_chen"
@@ -286,11 +286,11 @@ std::string physics_of(const fs::path& run_json) {
 // round 1), then resumed on another thread count: the files of a fit never stopped.
 TEST(DpdInterrupt, FitDpdResumesFromItsLastStageToTheSameFiles) {
   const std::string d = tiny_fit();
-  const fs::path whole = kDir / "fit_whole";
+  const fs::path whole = kDpdDir / "fit_whole";
   auto r = run_cli(fmt::format("fit-dpd '{}' --threads 2 --out '{}'", d, whole.string()));
   ASSERT_EQ(r.status, 0) << r.output;
   for (int stage : {1, 2, 3, 4}) {
-    const fs::path cut = kDir / fmt::format("fit_cut_{}", stage);
+    const fs::path cut = kDpdDir / fmt::format("fit_cut_{}", stage);
     r = run_cli(fmt::format("fit-dpd '{}' --threads 2 --out '{}' --stop-after {}", d, cut.string(), stage));
     ASSERT_EQ(r.status, 130) << r.output;
     EXPECT_NE(r.output.find("--resume"), std::string::npos) << r.output;
@@ -304,16 +304,16 @@ TEST(DpdInterrupt, FitDpdResumesFromItsLastStageToTheSameFiles) {
     EXPECT_FALSE(fs::exists(cut / ".staging"));
   }
   // Another deck's checkpoint, and none at all, are refused with exit 2.
-  const fs::path cut = kDir / "fit_cut_other";
+  const fs::path cut = kDpdDir / "fit_cut_other";
   r = run_cli(fmt::format("fit-dpd '{}' --threads 2 --out '{}' --stop-after 1", d, cut.string()));
   ASSERT_EQ(r.status, 130) << r.output;
   std::string other = slurp(d);
   other.replace(other.find("seed = 1"), 8, "seed = 2");
-  const std::string d2 = deck("tiny_fit_other.toml", other);
+  const std::string d2 = dpd_deck("tiny_fit_other.toml", other);
   r = run_cli(fmt::format("fit-dpd '{}' --out '{}' --resume", d2, cut.string()));
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("another deck"), std::string::npos) << r.output;
-  r = run_cli(fmt::format("fit-dpd '{}' --out '{}' --resume", d, (kDir / "fit_nothing").string()));
+  r = run_cli(fmt::format("fit-dpd '{}' --out '{}' --resume", d, (kDpdDir / "fit_nothing").string()));
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("no checkpoint to resume from"), std::string::npos) << r.output;
 }

@@ -23,9 +23,10 @@
 namespace fs = std::filesystem;
 
 namespace {
+using mpmx::test::json_number;
+using mpmx::test::run_cli;
 using mpmx::test::slurp;
 using Result = mpmx::test::CliResult;
-constexpr auto run = mpmx::test::run_cli;
 
 
 fs::path write_deck(const std::string& name, const std::string& text) {
@@ -34,7 +35,7 @@ fs::path write_deck(const std::string& name, const std::string& text) {
 
 fs::path deck_dir() { return mpmx::test::scratch_root(); }
 
-const std::string kGood = R"(
+const std::string kGoodMdDeck = R"(
 [potential]
 style = "eam"
 file = "Cu_mishin1.eam.alloy"
@@ -54,13 +55,6 @@ strain_rate_per_s = 1e9
 )";
 
 }  // namespace
-
-double json_number(const std::string& json, const std::string& key) {
-  const std::string tag = "\"" + key + "\" : ";
-  const auto at = json.find(tag);
-  if (at == std::string::npos) return std::nan("");
-  return std::strtod(json.c_str() + at + tag.size(), nullptr);
-}
 
 // The numbers of a JSON array value (nested arrays flattened), up to its closing bracket.
 std::vector<double> json_numbers(const std::string& json, const std::string& key) {
@@ -83,10 +77,10 @@ std::vector<double> json_numbers(const std::string& json, const std::string& key
 }
 
 TEST(MdCli, RunWritesRunJsonAndThermo) {
-  const auto deck = write_deck("good.toml", kGood);
+  const auto deck = write_deck("good.toml", kGoodMdDeck);
   const auto out = deck.parent_path() / "out_good";
   fs::remove_all(out);
-  const auto r = run("md " + deck.string() + " --out " + out.string() + " --quiet");
+  const auto r = run_cli("md " + deck.string() + " --out " + out.string() + " --quiet");
   ASSERT_EQ(r.status, 0) << r.output;
   const std::string json = slurp(out / "run.json");
   EXPECT_EQ(json_number(json, "atoms"), 108);
@@ -113,19 +107,19 @@ TEST(MdCli, RunWritesRunJsonAndThermo) {
 }
 
 TEST(MdCli, CheckValidatesOnly) {
-  const auto deck = write_deck("check.toml", kGood);
-  const auto r = run("md " + deck.string() + " --check");
+  const auto deck = write_deck("check.toml", kGoodMdDeck);
+  const auto r = run_cli("md " + deck.string() + " --check");
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("ok"), std::string::npos);
 }
 
 TEST(MdCli, BadDeckNamesKeyValueReason) {
-  std::string text = kGood;
+  std::string text = kGoodMdDeck;
   text.replace(text.find("dt = 0.001"), 10, "dt = -0.5");
   text.replace(text.find("cells = [3, 3, 3]"), 17, "cells = [3, 0, 3]\nwidth = 2");
   text.replace(text.find("Cu_mishin1.eam.alloy"), 20, "Nope.eam.alloy");
   const auto deck = write_deck("bad.toml", text);
-  const auto r = run("md " + deck.string() + " --check");
+  const auto r = run_cli("md " + deck.string() + " --check");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("run.dt"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("-0.5"), std::string::npos) << r.output;
@@ -136,10 +130,10 @@ TEST(MdCli, BadDeckNamesKeyValueReason) {
 
 TEST(MdCli, MalformedPotentialFileIsAnInputError) {
   const auto pot = write_deck("Broken.eam.alloy", "c\nc\nc\n1 Cu\n100 0.01 100 0.01 5.0\n29 63.55 3.6 fcc\n1 2 3\n");
-  std::string text = kGood;
+  std::string text = kGoodMdDeck;
   text.replace(text.find("Cu_mishin1.eam.alloy"), 20, "Broken.eam.alloy");
   const auto deck = write_deck("broken.toml", text);
-  const auto r = run("md " + deck.string() + " --out " + (deck.parent_path() / "out_broken").string());
+  const auto r = run_cli("md " + deck.string() + " --out " + (deck.parent_path() / "out_broken").string());
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("Broken.eam.alloy:7: file ends early: expected 100 values of F(rho) of Cu, found 3"),
             std::string::npos)
@@ -148,14 +142,14 @@ TEST(MdCli, MalformedPotentialFileIsAnInputError) {
 
 TEST(MdCli, BenchAndExampleDecksAreValid) {
   for (const char* d : {"bench/md_cu500.toml", "bench/md_cu32000.toml", "examples/MD_bar_release.toml"}) {
-    const auto r = run(std::string("md ") + MPMX_SOURCE_DIR + "/" + d + " --check");
+    const auto r = run_cli(std::string("md ") + MPMX_SOURCE_DIR + "/" + d + " --check");
     EXPECT_EQ(r.status, 0) << d << r.output;
   }
   int n = 0;
   for (const auto& e : fs::directory_iterator(fs::path(MPMX_SOURCE_DIR) / "examples")) {
     const auto name = e.path().filename().string();
     if (name.size() < 3 || name[0] != 'M' || !std::isdigit(static_cast<unsigned char>(name[1]))) continue;
-    const auto r = run("md " + e.path().string() + " --check");
+    const auto r = run_cli("md " + e.path().string() + " --check");
     EXPECT_EQ(r.status, 0) << name << r.output;
     ++n;
   }
@@ -163,12 +157,12 @@ TEST(MdCli, BenchAndExampleDecksAreValid) {
 }
 
 TEST(MdCli, BarDeckWritesBinnedStressOverTime) {
-  std::string text = kGood;
+  std::string text = kGoodMdDeck;
   text += "[bar]\ncells_x = 8\ncells_yz = 2\nstrain_left = -0.01\nbins = 8\noutput_every = 20\n";
   const auto deck = write_deck("bar.toml", text);
   const auto out = deck.parent_path() / "out_bar";
   fs::remove_all(out);
-  const auto r = run("md " + deck.string() + " --out " + out.string() + " --quiet");
+  const auto r = run_cli("md " + deck.string() + " --out " + out.string() + " --quiet");
   ASSERT_EQ(r.status, 0) << r.output;
   const std::string csv = slurp(out / "bar_stress.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 8);  // steps 0, 20, 40 x 8 bins
@@ -178,14 +172,15 @@ TEST(MdCli, BarDeckWritesBinnedStressOverTime) {
 // One large system on two threads: the same binned stress, to the last digit written,
 // as on one (2304 atoms: two tiles).
 TEST(MdCli, ThreadsGiveTheSameRun) {
-  std::string text = kGood;
+  std::string text = kGoodMdDeck;
   text += "[bar]\ncells_x = 144\ncells_yz = 2\nstrain_left = -0.01\nbins = 8\noutput_every = 20\n";
   const auto deck = write_deck("bar_threads.toml", text);
   std::string csv[2];
   for (const int n : {1, 2}) {
     const auto out = deck.parent_path() / ("out_bar_threads_" + std::to_string(n));
     fs::remove_all(out);
-    const auto r = run("md " + deck.string() + " --out " + out.string() + " --quiet --threads " + std::to_string(n));
+    const auto r =
+        run_cli("md " + deck.string() + " --out " + out.string() + " --quiet --threads " + std::to_string(n));
     ASSERT_EQ(r.status, 0) << r.output;
     csv[n - 1] = slurp(out / "bar_stress.csv");
   }
@@ -213,15 +208,15 @@ bool strict_json(const std::string& text, std::string& why) {
 
 TEST(MdCliHostile, CheckParsesThePotentialFile) {
   write_deck("Empty.eam.alloy", "");
-  const auto deck = write_deck("empty_pot.toml", with(kGood, "Cu_mishin1.eam.alloy", "Empty.eam.alloy"));
-  const auto r = run("md " + deck.string() + " --check");
+  const auto deck = write_deck("empty_pot.toml", with(kGoodMdDeck, "Cu_mishin1.eam.alloy", "Empty.eam.alloy"));
+  const auto r = run_cli("md " + deck.string() + " --check");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("Empty.eam.alloy: the EAM potential file is empty"), std::string::npos) << r.output;
 }
 
 TEST(MdCliHostile, CheckRefusesAnElementTheFileLacks) {
-  const auto deck = write_deck("no_zr.toml", with(kGood, "elements = [\"Cu\"]", "elements = [\"Zr\"]"));
-  const auto r = run("md " + deck.string() + " --check");
+  const auto deck = write_deck("no_zr.toml", with(kGoodMdDeck, "elements = [\"Cu\"]", "elements = [\"Zr\"]"));
+  const auto r = run_cli("md " + deck.string() + " --check");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("key 'potential.elements' = [\"Zr\"]: element 'Zr' is not in"), std::string::npos)
       << r.output;
@@ -232,14 +227,14 @@ TEST(MdCliHostile, BadPotentialLeavesNoOutputDirectory) {
   for (const std::string pot : {"Header.eam.alloy", "Broken.eam.alloy", "Missing.eam.alloy"}) {
     if (pot == "Broken.eam.alloy")
       write_deck(pot, "c\nc\nc\n1 Cu\n100 0.01 100 0.01 5.0\n29 63.55 3.6 fcc\n1 2 3\n");
-    const auto deck = write_deck("leave_" + pot + ".toml", with(kGood, "Cu_mishin1.eam.alloy", pot));
+    const auto deck = write_deck("leave_" + pot + ".toml", with(kGoodMdDeck, "Cu_mishin1.eam.alloy", pot));
     const auto out = deck.parent_path() / ("out_leave_" + pot);
     fs::remove_all(out);
-    const auto r = run("md " + deck.string() + " --out " + out.string() + " --quiet");
+    const auto r = run_cli("md " + deck.string() + " --out " + out.string() + " --quiet");
     EXPECT_EQ(r.status, 2) << pot << r.output;
     EXPECT_FALSE(fs::exists(out)) << pot << ": " << out << " left behind";
   }
-  const auto r = run("md " + (deck_dir() / "leave_Header.eam.alloy.toml").string());
+  const auto r = run_cli("md " + (deck_dir() / "leave_Header.eam.alloy.toml").string());
   EXPECT_NE(r.output.find("Header.eam.alloy:5: nrho = 2000000000: out of range: expected from 5 to 10000000"),
             std::string::npos)
       << r.output;
@@ -247,25 +242,25 @@ TEST(MdCliHostile, BadPotentialLeavesNoOutputDirectory) {
 
 TEST(MdCliHostile, DirectoryAsDeckIsNamed) {
   fs::create_directories(deck_dir());
-  const auto r = run("md " + deck_dir().string());
+  const auto r = run_cli("md " + deck_dir().string());
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("is a directory, not a deck file"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("is missing"), std::string::npos) << r.output;
 }
 
 TEST(MdCliHostile, NanVelocityGradientRefusedAtCheck) {
-  const auto deck = write_deck(
-      "nan_grad.toml", with(kGood, "strain_rate_per_s = 1e9", "velocity_gradient_per_ps = [0,0,0, 0,nan,0, 0,0,0]"));
-  const auto r = run("md " + deck.string() + " --check");
+  const auto deck = write_deck("nan_grad.toml", with(kGoodMdDeck, "strain_rate_per_s = 1e9",
+                                                     "velocity_gradient_per_ps = [0,0,0, 0,nan,0, 0,0,0]"));
+  const auto r = run_cli("md " + deck.string() + " --check");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("key 'run.velocity_gradient_per_ps'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("entry 5 is nan"), std::string::npos) << r.output;
 }
 
 TEST(MdCliHostile, HugeLatticeRefusedForMemoryEvenWithForce) {
-  const auto deck = write_deck("huge.toml", with(kGood, "cells = [3, 3, 3]", "cells = [1000, 1000, 1000]"));
+  const auto deck = write_deck("huge.toml", with(kGoodMdDeck, "cells = [3, 3, 3]", "cells = [1000, 1000, 1000]"));
   for (const char* flags : {" --check", " --check --force", " --force --quiet --out /nonexistent/never"}) {
-    const auto r = run("md " + deck.string() + flags);
+    const auto r = run_cli("md " + deck.string() + flags);
     EXPECT_EQ(r.status, 2) << flags << r.output;
     EXPECT_NE(r.output.find("lattice.cells: 4e+09 atoms need about"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("bytes), more than this machine's"), std::string::npos) << r.output;
@@ -273,26 +268,27 @@ TEST(MdCliHostile, HugeLatticeRefusedForMemoryEvenWithForce) {
 }
 
 TEST(MdCliHostile, WorkAboveADayRefusedUnlessForced) {
-  const auto deck = write_deck("long.toml", with(kGood, "steps = 40", "steps = 9000000000000"));
-  auto r = run("md " + deck.string() + " --check");
+  const auto deck = write_deck("long.toml", with(kGoodMdDeck, "steps = 40", "steps = 9000000000000"));
+  auto r = run_cli("md " + deck.string() + " --check");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("run.steps: 108 atoms x 9e+12 steps = 9.72e+14 atom-steps"), std::string::npos)
       << r.output;
   EXPECT_NE(r.output.find("--force"), std::string::npos) << r.output;
-  r = run("md " + deck.string() + " --check --force");
+  r = run_cli("md " + deck.string() + " --check --force");
   EXPECT_EQ(r.status, 0) << r.output;
 }
 
 TEST(MdCliHostile, RunThatGoesNonFiniteStopsWithValidJson) {
   // The box doubles along x every step: inf after about 1,100 steps.
-  std::string text = with(kGood, "strain_rate_per_s = 1e9", "velocity_gradient_per_ps = [1000,0,0, 0,0,0, 0,0,0]");
+  std::string text =
+      with(kGoodMdDeck, "strain_rate_per_s = 1e9", "velocity_gradient_per_ps = [1000,0,0, 0,0,0, 0,0,0]");
   text = with(text, "steps = 40", "steps = 3000");
   text = with(text, "thermo = 10", "thermo = 100");
   text = with(text, "dump_every = 20", "dump_every = 0");
   const auto deck = write_deck("blow.toml", text);
   const auto out = deck.parent_path() / "out_blow";
   fs::remove_all(out);
-  const auto r = run("md " + deck.string() + " --out " + out.string() + " --quiet");
+  const auto r = run_cli("md " + deck.string() + " --out " + out.string() + " --quiet");
   EXPECT_EQ(r.status, 3) << r.output;  // stopped by the physics, partial result written
   EXPECT_NE(r.output.find("went non-finite"), std::string::npos) << r.output;
   const std::string json = slurp(out / "run.json");
@@ -310,9 +306,9 @@ TEST(MdCliHostile, RunThatGoesNonFiniteStopsWithValidJson) {
 }
 
 TEST(MdCliHostile, OutThatIsAFileIsBadInput) {
-  const auto deck = write_deck("out_file.toml", kGood);
+  const auto deck = write_deck("out_file.toml", kGoodMdDeck);
   const auto file = write_deck("not_a_dir.txt", "x");
-  const auto r = run("md " + deck.string() + " --quiet --out " + file.string());
+  const auto r = run_cli("md " + deck.string() + " --quiet --out " + file.string());
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("exists and is not a directory"), std::string::npos) << r.output;
 }

@@ -19,54 +19,50 @@ using namespace mpmx::app::md;
 
 namespace {
 
-constexpr auto config_of = mpmx::test::md_config_of;
-constexpr auto lj = mpmx::test::lj_deck;
-
-const std::string kCu = "/usr/share/lammps/potentials/Cu_mishin1.eam.alloy";
-
-std::string write(const std::string& name, const std::string& text) {
-  return mpmx::test::scratch_file(name, text).string();
-}
+using mpmx::test::kCuMishin;
+using mpmx::test::lj_deck;
+using mpmx::test::md_config_of;
+using mpmx::test::scratch_file;
 
 }  // namespace
 
 TEST(MdConfigHostile, IntegersAreRangeCheckedNotWrapped) {
   auto error = [](const std::string& text) {
     try {
-      config_of(text);
+      md_config_of(text);
     } catch (const mpmx::InputError& e) {
       return std::string(e.what());
     }
     return std::string("(no error)");
   };
-  std::string t = lj("5", "10");
+  std::string t = lj_deck("5", "10");
   t += "[scan]\nlattice_from = 3.5\nlattice_to = 3.7\npoints = 4294967299\n";
   auto msg = error(t);
   EXPECT_NE(msg.find("key 'scan.points' = 4294967299: out of range: must be an integer from 3 to 100000"),
             std::string::npos)
       << msg;
-  t = lj("4294967297, 5, 5", "10");
+  t = lj_deck("4294967297, 5, 5", "10");
   msg = error(t);
   EXPECT_NE(msg.find("key 'lattice.cells' = [4294967297, 5, 5]: entry 1 = 4294967297: out of range: must be "
                      "an integer from 1 to 1000"),
             std::string::npos)
       << msg;
-  t = lj("5", "10");
+  t = lj_deck("5", "10");
   t.replace(t.find("style = \"lj\""), 12, "style = \"sutton_chen\"\na = 3.61\nc = 39.4\nn = 9\nm = 4294967302");
   t.replace(t.find("sigma = 2.3\n"), 12, "");
   msg = error(t);
   EXPECT_NE(msg.find("key 'potential.m' = 4294967302: out of range: must be an integer from 1 to 100"),
             std::string::npos)
       << msg;
-  t = lj("5", "10") + "[bar]\ncells_x = 40\ncells_yz = 4\nbins = 4294967396\n";
+  t = lj_deck("5", "10") + "[bar]\ncells_x = 40\ncells_yz = 4\nbins = 4294967396\n";
   msg = error(t);
   EXPECT_NE(msg.find("key 'bar.bins' = 4294967396: out of range: must be an integer from 1 to 100000"),
             std::string::npos)
       << msg;
-  t = lj("5", "1e6");
+  t = lj_deck("5", "1e6");
   msg = error(t);
   EXPECT_NE(msg.find("key 'run.steps' = 1000000.0: expected an integer, got a number"), std::string::npos) << msg;
-  t = lj("5", "10") + "thermo = 4294967396\n";
+  t = lj_deck("5", "10") + "thermo = 4294967396\n";
   msg = error(t);
   EXPECT_NE(msg.find("key 'run.thermo' = 4294967396: out of range: must be an integer from 1 to 2147483647"),
             std::string::npos)
@@ -74,9 +70,9 @@ TEST(MdConfigHostile, IntegersAreRangeCheckedNotWrapped) {
 }
 
 TEST(MdConfigHostile, NanVelocityGradientIsRefusedAtReadTime) {
-  std::string t = lj("5", "10") + "velocity_gradient_per_ps = [0, 0, 0, 0, nan, 0, 0, 0, 0]\n";
+  std::string t = lj_deck("5", "10") + "velocity_gradient_per_ps = [0, 0, 0, 0, nan, 0, 0, 0, 0]\n";
   try {
-    config_of(t);
+    md_config_of(t);
     FAIL() << "nan accepted";
   } catch (const mpmx::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("key 'run.velocity_gradient_per_ps' = [0, 0, 0, 0, nan, 0, 0, 0, 0]: "
@@ -87,10 +83,10 @@ TEST(MdConfigHostile, NanVelocityGradientIsRefusedAtReadTime) {
 }
 
 TEST(MdConfigHostile, PotentialFileIsParsedAndItsElementsCheckedAtReadTime) {
-  const std::string empty = write("Empty2.eam.alloy", "");
+  const std::string empty = scratch_file("Empty2.eam.alloy", "");
   auto error = [](const std::string& text) {
     try {
-      config_of(text);
+      md_config_of(text);
     } catch (const mpmx::InputError& e) {
       return std::string(e.what());
     }
@@ -107,11 +103,11 @@ TEST(MdConfigHostile, PotentialFileIsParsedAndItsElementsCheckedAtReadTime) {
   auto msg = error(deck(empty, "\"Cu\""));
   EXPECT_NE(msg.find("key 'potential.file'"), std::string::npos) << msg;
   EXPECT_NE(msg.find("the EAM potential file is empty"), std::string::npos) << msg;
-  msg = error(deck(kCu, "\"Cu\", \"Zr\""));
+  msg = error(deck(kCuMishin, "\"Cu\", \"Zr\""));
   EXPECT_NE(msg.find("key 'potential.elements' = [\"Cu\", \"Zr\"]: element 'Zr' is not in"), std::string::npos)
       << msg;
   EXPECT_NE(msg.find("(it has: Cu)"), std::string::npos) << msg;
-  EXPECT_EQ(error(deck(kCu, "\"Cu\"")), "(no error)");
+  EXPECT_EQ(error(deck(kCuMishin, "\"Cu\"")), "(no error)");
 }
 
 TEST(JetDeck, ErrorsNameKeyValueAndReason) {

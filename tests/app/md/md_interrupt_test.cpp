@@ -21,9 +21,9 @@ namespace fs = std::filesystem;
 using mpmx::test::run_cli;
 using mpmx::test::slurp;
 
-const mpmx::test::ScratchFolder kDir("mpmx_md_interrupt");
+const mpmx::test::ScratchFolder kMdDir("mpmx_md_interrupt");
 
-std::string deck(const std::string& name, const std::string& text) { return kDir.file(name, text); }
+std::string md_deck(const std::string& name, const std::string& text) { return kMdDir.file(name, text); }
 
 const std::string kLj = R"([potential]
 style = "lj"
@@ -70,11 +70,11 @@ output_every = 50
 // has `lines` lines and resumed on `resume_threads`: the same files.
 void interrupt_and_resume(const std::string& deck_path, const std::string& name, const std::string& table, int lines,
                           const std::string& signal, int threads = 2, int resume_threads = 1) {
-  const fs::path whole = kDir / (name + "_whole"), cut = kDir / (name + "_cut");
+  const fs::path whole = kMdDir / (name + "_whole"), cut = kMdDir / (name + "_cut");
   const std::string run = fmt::format("md '{}' --quiet --threads {}", deck_path, threads);
   const auto w = run_cli(fmt::format("{} --out '{}'", run, whole.string()));
   ASSERT_EQ(w.status, 0) << w.output;
-  const std::string log = (kDir / (name + ".log")).string();
+  const std::string log = (kMdDir / (name + ".log")).string();
   const int status = mpmx::test::signal_when(fmt::format("'{}' {} --out '{}'", MPMX_BINARY, run, cut.string()),
                                              (cut / ".staging" / table).string(), lines, signal, log);
   ASSERT_EQ(status, 130) << slurp(log);
@@ -100,16 +100,16 @@ TEST(MdInterrupt, CtrlCOnTheJetResumesToTheSameFiles) {
 }
 
 TEST(MdInterrupt, SigtermOnABoxResumesToTheSameFiles) {
-  interrupt_and_resume(deck("box.toml", kBox), "box", "thermo.csv", 8, "TERM", 1, 2);
+  interrupt_and_resume(md_deck("box.toml", kBox), "box", "thermo.csv", 8, "TERM", 1, 2);
 }
 
 TEST(MdInterrupt, CtrlCOnABoxResumesToTheSameFiles) {
-  interrupt_and_resume(deck("box_int.toml", kBox), "box_int", "thermo.csv", 8, "INT");
+  interrupt_and_resume(md_deck("box_int.toml", kBox), "box_int", "thermo.csv", 8, "INT");
 }
 
 TEST(MdInterrupt, TheBarStoppedAtARecordResumesToTheSameFiles) {
-  const std::string d = deck("bar.toml", kBar);
-  const fs::path whole = kDir / "bar_whole", cut = kDir / "bar_cut";
+  const std::string d = md_deck("bar.toml", kBar);
+  const fs::path whole = kMdDir / "bar_whole", cut = kMdDir / "bar_cut";
   ASSERT_EQ(run_cli(fmt::format("md '{}' --quiet --out '{}'", d, whole.string())).status, 0);
   const auto stop = run_cli(fmt::format("md '{}' --quiet --out '{}' --stop-after 200", d, cut.string()));
   ASSERT_EQ(stop.status, 130) << stop.output;
@@ -120,8 +120,8 @@ TEST(MdInterrupt, TheBarStoppedAtARecordResumesToTheSameFiles) {
 }
 
 TEST(MdInterrupt, ADamagedCheckpointIsRefused) {
-  const std::string d = deck("damaged.toml", kBar);
-  const fs::path cut = kDir / "damaged";
+  const std::string d = md_deck("damaged.toml", kBar);
+  const fs::path cut = kMdDir / "damaged";
   ASSERT_EQ(run_cli(fmt::format("md '{}' --quiet --out '{}' --stop-after 100", d, cut.string())).status, 130);
   const fs::path ck = cut / "checkpoint.bin";
   std::string bytes = slurp(ck);
@@ -140,7 +140,7 @@ TEST(MdInterrupt, ADamagedCheckpointIsRefused) {
   std::ofstream(ck, std::ios::binary | std::ios::trunc) << good;
   std::string changed = kBar;
   changed.replace(changed.find("seed = 2"), 8, "seed = 4");
-  const std::string other = deck("other.toml", changed);
+  const std::string other = md_deck("other.toml", changed);
   r = run_cli(fmt::format("md '{}' --quiet --out '{}' --resume", other, cut.string()));
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("another deck"), std::string::npos) << r.output;

@@ -54,7 +54,7 @@ std::string deck_text(const app::MpmConfig& c) {
 
 // The message of the InputError `f` throws ("" when it throws none).
 template <class F>
-std::string refusal(F&& f) {
+std::string damage_refusal(F&& f) {
   try {
     f();
   } catch (const InputError& e) {
@@ -78,7 +78,7 @@ TEST(CheckpointDamage, EveryFlippedByteIsRefused) {
     for (unsigned char mask : {0xffu, 0x01u}) {
       std::string b = k.bytes;
       b[i] = static_cast<char>(b[i] ^ mask);
-      const std::string why = refusal([&] { io::unframe(b, kind, k.path); });
+      const std::string why = damage_refusal([&] { io::unframe(b, kind, k.path); });
       EXPECT_NE(why.find("byte "), std::string::npos) << "flip at " << i << " accepted";
     }
   }
@@ -90,7 +90,7 @@ TEST(CheckpointDamage, FlippedByteStopsTheResumeWithItsOffset) {
     std::string b = k.bytes;
     b[i] = static_cast<char>(b[i] ^ 0x10);
     write(k.path, b);
-    const std::string why = refusal([&] { app::run_mpm(k.config, k.options); });
+    const std::string why = damage_refusal([&] { app::run_mpm(k.config, k.options); });
     EXPECT_NE(why.find(fmt::format("checkpoint {}: byte ", k.path)), std::string::npos) << i << ": " << why;
   }
   // Undamaged, it resumes and completes.
@@ -104,18 +104,18 @@ TEST(CheckpointDamage, TruncationIsRefused) {
   const auto kind = app::run_checkpoint_kind(deck_text(k.config), k.config.cells * k.config.per_cell);
   for (std::size_t n : {std::size_t{0}, std::size_t{7}, io::kCheckedHeaderBytes - 1, io::kCheckedHeaderBytes,
                         k.bytes.size() / 3, k.bytes.size() - 1}) {
-    const std::string why = refusal([&] { io::unframe(std::string_view(k.bytes).substr(0, n), kind, k.path); });
+    const std::string why = damage_refusal([&] { io::unframe(std::string_view(k.bytes).substr(0, n), kind, k.path); });
     EXPECT_NE(why.find("byte "), std::string::npos) << n;
   }
   write(k.path, k.bytes.substr(0, k.bytes.size() - 8));
-  EXPECT_NE(refusal([&] { app::run_mpm(k.config, k.options); }).find("truncated"), std::string::npos);
+  EXPECT_NE(damage_refusal([&] { app::run_mpm(k.config, k.options); }).find("truncated"), std::string::npos);
 }
 
 TEST(CheckpointDamage, AnotherDeckIsRefused) {
   const Cut k = cut_run("ckpt_other_deck");
   auto other = k.config;
   other.deck.insert_or_assign("extra", 1);
-  EXPECT_NE(refusal([&] { app::run_mpm(other, k.options); }).find("another deck"), std::string::npos);
+  EXPECT_NE(damage_refusal([&] { app::run_mpm(other, k.options); }).find("another deck"), std::string::npos);
 }
 
 // A well-framed checkpoint (valid checksums) whose step count is out of range: the
@@ -133,7 +133,7 @@ TEST(CheckpointDamage, NegativeOrPastTheEndStepIsRefused) {
     std::string p = payload;
     std::memcpy(p.data() + step_at, &bad, sizeof bad);
     write(k.path, io::frame(kind, p));
-    const std::string why = refusal([&] { app::run_mpm(k.config, k.options); });
+    const std::string why = damage_refusal([&] { app::run_mpm(k.config, k.options); });
     EXPECT_NE(why.find("step"), std::string::npos) << bad << ": " << why;
   }
 }

@@ -18,7 +18,7 @@ using namespace mpmx;
 
 // The tiny bar's run whole, then signalled with `signal` once its step loop runs and
 // resumed: the same tables.
-void interrupt_and_resume(const std::string& name, const std::string& signal) {
+void interrupt_tiny_bar(const std::string& name, const std::string& signal) {
   const auto c = test::tiny_bar(4, 2, 400);
   const std::string deck = test::scratch_dir(name) + "/tiny.toml";
   {
@@ -52,10 +52,10 @@ void interrupt_and_resume(const std::string& name, const std::string& signal) {
   EXPECT_FALSE(std::filesystem::exists(cut + "/checkpoint.bin"));
 }
 
-TEST(Interrupt, CtrlCLeavesACheckpointThatResumesExactly) { interrupt_and_resume("interrupt", "INT"); }
+TEST(Interrupt, CtrlCLeavesACheckpointThatResumesExactly) { interrupt_tiny_bar("interrupt", "INT"); }
 
 TEST(Interrupt, SigtermToOneProcessLeavesACheckpointThatResumesExactly) {
-  interrupt_and_resume("interrupt_term", "TERM");
+  interrupt_tiny_bar("interrupt_term", "TERM");
 }
 
 // Ctrl-C while md_closure builds its boxes (before any step, so no state to keep): the

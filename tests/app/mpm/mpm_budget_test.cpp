@@ -60,7 +60,7 @@ struct Outcome {
   int code;
   std::string err, out;
 };
-Outcome mpmx(const std::string& args) {
+Outcome mpmx_outcome(const std::string& args) {
   const std::string err = (test::scratch_root() / "budget_stderr").string();
   const std::string out = (test::scratch_root() / "budget_stdout").string();
   const int status = std::system(fmt::format("'{}' {} >'{}' 2>'{}'", MPMX_BINARY, args, out, err).c_str());
@@ -83,14 +83,14 @@ TEST(MpmBudget, MemoryBeyondTheMachineIsRefusedEvenForced) {
   // 1e7 cells x 1e6 points per cell: each key in range, their product not.
   const std::string d = deck1d("mem.toml", "10000000", "1000000", "1e-8", "1e-6");
   for (const char* cmd : {"check", "check --force"}) {
-    const auto r = mpmx(fmt::format("{} '{}'", cmd, d));
+    const auto r = mpmx_outcome(fmt::format("{} '{}'", cmd, d));
     EXPECT_EQ(r.code, 2) << cmd;
     EXPECT_NE(r.err.find("particles.per_cell and grid.cells: 1e+13 points"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("of memory"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(d + ": particles.per_cell"), std::string::npos) << r.err;  // the deck named
   }
-  const auto r = mpmx(fmt::format("run --force --no-plot --quiet '{}' --out '{}'", d,
-                                  (test::scratch_root() / "mem_out").string()));
+  const auto r = mpmx_outcome(fmt::format("run --force --no-plot --quiet '{}' --out '{}'", d,
+                                          (test::scratch_root() / "mem_out").string()));
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("of memory"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(test::scratch_root() / "mem_out"));
@@ -102,7 +102,7 @@ TEST(MpmBudget, MdBoxesBeyondTheMachineNameTheDeckAndTheRanks) {
   t.replace(t.find("\ncells = 5"), 10, "\ncells = 20");
   t.replace(t.find("\"../runs/"), 9, "\"" + std::string(MPMX_SOURCE_DIR) + "/runs/");
   const std::string d = test::scratch_file("md_mem.toml", t).string();
-  const auto r = mpmx(fmt::format("check '{}'", d));
+  const auto r = mpmx_outcome(fmt::format("check '{}'", d));
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find(d + ": material.md.cells"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--ranks N"), std::string::npos) << r.err;
@@ -130,11 +130,11 @@ poisson_ratio = 0.0
 dt = 1e-6
 end = 1e-6
 )");
-  const auto r = mpmx(fmt::format("check '{}'", test::scratch_file("grid3.toml", t).string()));
+  const auto r = mpmx_outcome(fmt::format("check '{}'", test::scratch_file("grid3.toml", t).string()));
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("grid.cells"), std::string::npos) << r.err;
   // 2048 sub-points per point on a large bar.
-  const auto s = mpmx(fmt::format(
+  const auto s = mpmx_outcome(fmt::format(
       "check '{}'", deck1d("sub.toml", "10000000", "8", "1e-8", "1e-8", "ddmp_subpoints", "subpoints = 2048")));
   EXPECT_EQ(s.code, 2) << s.err;
   EXPECT_NE(s.err.find("scheme.subpoints"), std::string::npos) << s.err;
@@ -144,14 +144,14 @@ end = 1e-6
 // deck may be a cluster's).
 TEST(MpmBudget, MoreThanADayOfWorkNeedsForce) {
   const std::string d = deck1d("work.toml", "10", "1000000", "1e-3", "1e9");
-  const auto r = mpmx(fmt::format("run '{}' --out '{}'", d, d + ".out"));
+  const auto r = mpmx_outcome(fmt::format("run '{}' --out '{}'", d, d + ".out"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("time.end / time.dt"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
-  const auto c = mpmx(fmt::format("check '{}'", d));
+  const auto c = mpmx_outcome(fmt::format("check '{}'", d));
   EXPECT_EQ(c.code, 0) << c.err;
   EXPECT_NE(c.out.find("more than a day of work on one core"), std::string::npos) << c.out;
-  EXPECT_EQ(mpmx(fmt::format("check --force '{}'", d)).out.find("more than a day"), std::string::npos);
+  EXPECT_EQ(mpmx_outcome(fmt::format("check --force '{}'", d)).out.find("more than a day"), std::string::npos);
 }
 
 TEST(MpmBudget, EveryContinuumExamplePasses) {

@@ -41,7 +41,7 @@ const std::string k2d = grid_deck(2, 10, 2);
 const std::string k3d = grid_deck(3, 4, 1);
 
 // The error of reading the deck and its pre-flight, or "" when both pass.
-std::string refusal(const std::string& text, std::uint64_t memory = 0) {
+std::string mpm_refusal(const std::string& text, std::uint64_t memory = 0) {
   try {
     const auto c = app::read_mpm_deck_text(text, "p.toml");
     app::preflight_mpm_run(c, 1, memory, false);
@@ -54,46 +54,46 @@ std::string refusal(const std::string& text, std::uint64_t memory = 0) {
 #define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
 
 TEST(MpmPreflight, PolygonOfZeroAreaIsRefused) {
-  EXPECT_HAS(refusal(k2d + "[[body]]\nshape = \"polygon\"\nvertices = [0.1, 0.1, 0.5, 0.5, 0.9, 0.9]\n"),
+  EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"polygon\"\nvertices = [0.1, 0.1, 0.5, 0.5, 0.9, 0.9]\n"),
              "body 1: polygon has zero area");
 }
 
 TEST(MpmPreflight, SelfCrossingPolygonNamesItsEdges) {
-  const std::string e = refusal(k2d + "[[body]]\nshape = \"polygon\"\n"
-                                      "vertices = [0.1, 0.1, 0.9, 0.9, 0.9, 0.1, 0.1, 0.9]\n");
+  const std::string e = mpm_refusal(k2d + "[[body]]\nshape = \"polygon\"\n"
+                                          "vertices = [0.1, 0.1, 0.9, 0.9, 0.9, 0.1, 0.1, 0.9]\n");
   EXPECT_HAS(e, "body 1: polygon edges 1 (0.1, 0.1)-(0.9, 0.9) and 3 (0.9, 0.1)-(0.1, 0.9) cross");
   // A simple one with a notch (concave) is fine.
-  EXPECT_EQ(refusal(k2d + "[[body]]\nshape = \"polygon\"\n"
-                          "vertices = [0.1, 0.1, 0.9, 0.1, 0.9, 0.9, 0.5, 0.4, 0.1, 0.9]\n"),
+  EXPECT_EQ(mpm_refusal(k2d + "[[body]]\nshape = \"polygon\"\n"
+                              "vertices = [0.1, 0.1, 0.9, 0.1, 0.9, 0.9, 0.5, 0.4, 0.1, 0.9]\n"),
             "");
 }
 
 TEST(MpmPreflight, OverflowingCoordinatesAreRefused) {
-  EXPECT_HAS(refusal(k2d + "[[body]]\nshape = \"polygon\"\nvertices = [0.0, 0.0, 1e308, 0.0, 0.0, 1e308]\n"),
+  EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"polygon\"\nvertices = [0.0, 0.0, 1e308, 0.0, 0.0, 1e308]\n"),
              "body 1: 1e+308 is beyond 1e+100 in magnitude");
-  EXPECT_HAS(refusal(k2d + "[[body]]\nshape = \"circle\"\ncenter = [0.5, 0.5]\nradius = 1e200\n"),
+  EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"circle\"\ncenter = [0.5, 0.5]\nradius = 1e200\n"),
              "body 1: 1e+200 is beyond");
-  EXPECT_HAS(refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [-1e300, 0.0]\nupper = [1e300, 1.0]\n"), "beyond");
+  EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [-1e300, 0.0]\nupper = [1e300, 1.0]\n"), "beyond");
   std::string wide = k2d;
   wide.replace(wide.find("lower = [0.0, 0.0]"), 18, "lower = [-1.7e308, 0.0]");
   wide.replace(wide.find("upper = [1.0, 1.0]"), 18, "upper = [1.7e308, 1.0]");
-  EXPECT_HAS(refusal(wide), "upper - lower overflows");
+  EXPECT_HAS(mpm_refusal(wide), "upper - lower overflows");
 }
 
 TEST(MpmPreflight, BodiesThatPlaceNoPointAreNamed) {
-  EXPECT_HAS(refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [5.0, 5.0]\nupper = [6.0, 6.0]\n"),
+  EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [5.0, 5.0]\nupper = [6.0, 6.0]\n"),
              "body 1: holds no point: it lies wholly off the grid");
-  EXPECT_HAS(refusal(k3d + "[[body]]\nshape = \"sphere\"\ncenter = [5.0, 5.0, 5.0]\nradius = 0.5\n"),
+  EXPECT_HAS(mpm_refusal(k3d + "[[body]]\nshape = \"sphere\"\ncenter = [5.0, 5.0, 5.0]\nradius = 0.5\n"),
              "body 1: holds no point: it lies wholly off the grid");
-  EXPECT_HAS(refusal(k2d + "[[body]]\nshape = \"circle\"\ncenter = [0.5, 0.5]\nradius = 0.01\n"),
+  EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"circle\"\ncenter = [0.5, 0.5]\nradius = 0.01\n"),
              "body 1: holds no point: it lies between the grid's points");
-  EXPECT_HAS(refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [0.0, 0.0]\nupper = [1.0, 1.0]\n"
-                           "[[body]]\nshape = \"box\"\nremove = true\nlower = [-1.0, -1.0]\nupper = [2.0, 2.0]\n"),
+  EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [0.0, 0.0]\nupper = [1.0, 1.0]\n"
+                               "[[body]]\nshape = \"box\"\nremove = true\nlower = [-1.0, -1.0]\nupper = [2.0, 2.0]\n"),
              "body 1: places no point: each of the 400 points it holds is removed");
-  EXPECT_HAS(refusal(k2d + "[[body]]\nshape = \"box\"\nremove = true\nlower = [0.2, 0.2]\nupper = [0.4, 0.4]\n"),
+  EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"box\"\nremove = true\nlower = [0.2, 0.2]\nupper = [0.4, 0.4]\n"),
              "body 1: removes points, but no body adds any");
-  EXPECT_HAS(refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [0.0, 0.0]\nupper = [0.5, 1.0]\n"
-                           "[[body]]\nshape = \"box\"\nremove = true\nlower = [0.7, 0.2]\nupper = [0.9, 0.4]\n"),
+  EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [0.0, 0.0]\nupper = [0.5, 1.0]\n"
+                               "[[body]]\nshape = \"box\"\nremove = true\nlower = [0.7, 0.2]\nupper = [0.9, 0.4]\n"),
              "body 2: removes no point: it overlaps no adding body");
 }
 
@@ -102,16 +102,17 @@ TEST(MpmPreflight, OverlappingBodiesOfDifferentMotionAreRefused) {
                                 "[[body]]\nshape = \"box\"\nlower = [0.4, 0.4]\nupper = [0.9, 0.9]\n";
   std::string moving = two;
   moving.replace(moving.find('V'), 1, "0.1");
-  EXPECT_HAS(refusal(moving), "bodies 1 and 2 overlap (16 points lie in both) with different velocities or materials");
+  EXPECT_HAS(mpm_refusal(moving),
+             "bodies 1 and 2 overlap (16 points lie in both) with different velocities or materials");
   std::string same = two;
   same.replace(same.find('V'), 1, "0.0");
-  EXPECT_EQ(refusal(same), "");  // one solid given as two boxes
+  EXPECT_EQ(mpm_refusal(same), "");  // one solid given as two boxes
 }
 
 TEST(MpmPreflight, SpinCountsInTheCflLimit) {
   const std::string spin = k2d + "[[body]]\nshape = \"circle\"\ncenter = [0.5, 0.5]\nradius = 0.3\nangular_velocity = ";
-  EXPECT_HAS(refusal(spin + "1e8\n"), "key 'time.dt' = 0.001: exceeds the CFL limit");
-  EXPECT_EQ(refusal(spin + "1.0\n"), "");
+  EXPECT_HAS(mpm_refusal(spin + "1e8\n"), "key 'time.dt' = 0.001: exceeds the CFL limit");
+  EXPECT_EQ(mpm_refusal(spin + "1.0\n"), "");
 }
 
 TEST(MpmPreflight, ConvergenceStudyIsSizedByItsFinestGrid) {
@@ -130,7 +131,7 @@ TEST(MpmPreflight, ConvergenceStudyIsSizedByItsFinestGrid) {
   // Eight levels of a 160 x 160 grid: the finest has 20480^2 cells; refused on 24 GiB naming the key.
   std::string big = study(8);
   big.replace(big.find("cells = [10, 10]"), 16, "cells = [160, 160]");  // grid_deck(2, 10, 2)
-  const std::string e = refusal(big, std::uint64_t{24} << 30);
+  const std::string e = mpm_refusal(big, std::uint64_t{24} << 30);
   EXPECT_HAS(e, "convergence.levels = 8 (its finest grid");
   EXPECT_HAS(e, "more than this machine's 24 GiB");
 }

@@ -36,8 +36,6 @@ using namespace mpm;
 
 namespace {
 
-double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
 // The steps at which a run records its fields and compares them with its reference
 // (dt = "cfl": the record times, each step landing on the next).
 struct Schedule {

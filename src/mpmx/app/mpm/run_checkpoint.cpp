@@ -1,5 +1,7 @@
 #include "mpmx/app/mpm/run_checkpoint.hpp"
 
+#include <optional>
+#include <ostream>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -33,7 +35,12 @@ template <int Dim>
 void save_run_checkpoint(const std::string& path, const MpmConfig& c, const mpm::State<Dim>& s,
                          const RunCarry& carry, const ErrorBook& book, const io::RunRecord& rec,
                          const Output::Marks& marks) {
-  std::ostringstream f(std::ios::binary);  // every rank fills it (the laws gather their state); rank 0 writes it
+  // Every rank fills the stream (the laws gather their state to rank 0): rank 0's goes to
+  // the file as it comes, the others' nowhere.
+  std::optional<io::CheckedWriter> file;
+  if (ranks::root()) file.emplace(path, run_checkpoint_kind(deck_text(c), s.particles.size()));
+  std::ostream nowhere(nullptr);
+  std::ostream& f = file ? file->stream() : nowhere;
   CheckpointOut w(f);
   w.text(deck_text(c));
   save_state(w, s);
@@ -50,8 +57,7 @@ void save_run_checkpoint(const std::string& path, const MpmConfig& c, const mpm:
   table << rec.table();
   w.text(table.str());
   w.marks(marks);
-  if (!f) throw RunError(fmt::format("cannot write the checkpoint {}", path));
-  if (ranks::root()) io::write_checked(path, run_checkpoint_kind(deck_text(c), s.particles.size()), f.view());
+  if (file) file->commit();
 }
 
 template <int Dim>

@@ -12,9 +12,9 @@
 
 namespace mpmx::app {
 
-namespace {
-
 double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+namespace {
 
 template <int Dim>
 void record_conservation(const RunResultOf<Dim>& r, io::RunRecord& rec) {
