@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <fstream>
 #include <istream>
-#include <iterator>
 #include <ostream>
 #include <streambuf>
 #include <vector>
@@ -120,10 +119,6 @@ std::string_view unframe(std::string_view b, const CheckedKind& k, const std::st
   return payload;
 }
 
-void write_checked(const std::string& path, const CheckedKind& k, std::string_view payload) {
-  write_file_atomic(path, frame(k, payload));
-}
-
 // A stream buffer that passes its bytes to the file a block at a time, its CRC and
 // count kept on the way.
 struct CheckedWriter::Impl : std::streambuf {
@@ -159,8 +154,8 @@ struct CheckedWriter::Impl : std::streambuf {
   std::ostream out{this};
 };
 
-CheckedWriter::CheckedWriter(const std::string& path, const CheckedKind& k) : impl_(new Impl(path, k)) {}
-CheckedWriter::~CheckedWriter() { delete impl_; }
+CheckedWriter::CheckedWriter(const std::string& path, const CheckedKind& k) : impl_(std::make_unique<Impl>(path, k)) {}
+CheckedWriter::~CheckedWriter() = default;
 std::ostream& CheckedWriter::stream() { return impl_->out; }
 
 void CheckedWriter::commit() {
@@ -176,15 +171,13 @@ std::string read_checked(const std::string& path, const CheckedKind& k) {
     throw InputError(fmt::format("the checkpoint {} is a folder, not a file", path));
   std::ifstream f(path, std::ios::binary);
   if (!f) throw InputError(fmt::format("cannot open the checkpoint {}", path));
-  // Read into a string of the file's size, and the payload returned in it (a resumed jet's
-  // checkpoint is hundreds of MB: one copy in memory, not three).
+  // One string of the file's size, the payload returned in it (a resumed jet's checkpoint
+  // is hundreds of MB: one copy in memory).
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
   std::string bytes(ec ? 0 : static_cast<std::size_t>(size), '\0');
-  f.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  bytes.resize(static_cast<std::size_t>(f.gcount()));
-  if (!f.bad() && !f.eof()) bytes.append(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
-  if (f.bad()) throw InputError(fmt::format("cannot read the checkpoint {}", path));
+  if (ec || !f.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+    throw InputError(fmt::format("cannot read the checkpoint {}", path));
   unframe(bytes, k, path);
   bytes.erase(0, kCheckedHeaderBytes);
   return bytes;

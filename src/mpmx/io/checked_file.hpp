@@ -6,6 +6,7 @@
 // offset and the reason (InputError, exit status 2), before any of the payload is parsed.
 #include <cstdint>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -36,15 +37,10 @@ std::string frame(const CheckedKind& k, std::string_view payload);
 // `name` (the file) starts each message. Throws InputError otherwise.
 std::string_view unframe(std::string_view bytes, const CheckedKind& k, const std::string& name);
 
-// frame() written atomically to `path` (through path + ".tmp"); read_checked reads
-// `path` whole and unframes it.
-void write_checked(const std::string& path, const CheckedKind& k, std::string_view payload);
-
-// The same file, its payload streamed: what is written to stream() goes to the disk as
-// it comes, its CRC and size kept as it passes, the header filled in by commit(). A
-// checkpoint of a few hundred MB of MD boxes then costs no copy of itself in memory
-// (assembled in a string first, then framed, it took about five). Leaving without
-// commit() leaves `path` as it was.
+// frame() of what is written to stream(), written atomically to `path` (through path +
+// ".tmp") as it comes: the CRC and size kept as the bytes pass, the header filled in by
+// commit(). A checkpoint of a few hundred MB of MD boxes costs no copy of itself in
+// memory. Leaving without commit() leaves `path` as it was.
 class CheckedWriter {
  public:
   CheckedWriter(const std::string& path, const CheckedKind& k);
@@ -57,8 +53,10 @@ class CheckedWriter {
 
  private:
   struct Impl;
-  Impl* impl_;
+  std::unique_ptr<Impl> impl_;
 };
+
+// The payload of the file at `path` once unframed (read whole, into one string).
 std::string read_checked(const std::string& path, const CheckedKind& k);
 
 // The payload readers' count check and offset (core/binary.hpp), under io's names too.

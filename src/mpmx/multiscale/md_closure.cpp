@@ -450,11 +450,14 @@ namespace {
 
 // Boxes keyed by an index (a group, or an auditor's point), each written with its
 // length so that rank 0 can put every rank's in order.
-// A box's bytes, with the last stress an auditor's power needs after them.
+// A box, with the last stress an auditor's power needs after it.
+void save_box(std::ostream& out, const md::System& box, const md::Mat3* stress = nullptr) {
+  box.save(out);
+  if (stress) out.write(reinterpret_cast<const char*>(stress->data()), sizeof(double) * 9);
+}
 std::string box_bytes(const md::System& box, const md::Mat3* stress = nullptr) {
   std::ostringstream b(std::ios::binary);
-  box.save(b);
-  if (stress) b.write(reinterpret_cast<const char*>(stress->data()), sizeof(double) * 9);
+  save_box(b, box, stress);
   return b.str();
 }
 void pack(std::ostream& out, std::uint64_t key, const std::string& bytes) {
@@ -502,7 +505,7 @@ void MdClosure<Dim>::save(std::ostream& out) const {
   for (const auto& [g, bytes] : groups) out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   if (!gather)
     for (const auto& box : boxes_)
-      if (box) box->save(out);
+      if (box) save_box(out, *box);
   write_raw(out, static_cast<std::uint64_t>(gather ? audits.size() : audits_.size()));
   for (const auto& [q, bytes] : audits) {  // each box, then its last stress
     write_raw(out, q);
@@ -511,8 +514,7 @@ void MdClosure<Dim>::save(std::ostream& out) const {
   if (!gather)
     for (const auto& [q, box] : audits_) {
       write_raw(out, static_cast<std::uint64_t>(q));
-      box.save(out);
-      out.write(reinterpret_cast<const char*>(audit_stress_.at(q).data()), sizeof(double) * 9);
+      save_box(out, box, &audit_stress_.at(q));
     }
   // Eq. 7.11's and the audit's tallies, every point's rotation and every group's box
   // shape and last stress (the next step's sigma^n): the same on every rank.

@@ -3,6 +3,7 @@
 // is refused with the byte offset and the reason, and `mpmx run --resume` exits 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -165,6 +166,31 @@ TEST(CheckpointDamage, AFolderIsRefusedWithASentence) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("is a folder, not a file"), std::string::npos) << e.what();
   }
+}
+
+// The streamed writer's file is frame() of what it was given, across its 1 MiB blocks
+// (a payload of 2.5 MiB written in uneven pieces), and read_checked gives the payload
+// back; a writer left without commit() leaves the earlier file as it was.
+TEST(CheckpointDamage, StreamedFileIsTheFrameOfItsPayload) {
+  const std::string path = test::scratch_dir("ckpt_streamed") + "/streamed.bin";
+  const io::CheckedKind kind{"mpm_run", 1, 12345, 678};
+  std::string payload(5 * (1 << 19) + 3, '\0');
+  for (std::size_t i = 0; i < payload.size(); ++i) payload[i] = static_cast<char>((i * 2654435761u) >> 13);
+  {
+    io::CheckedWriter w(path, kind);
+    for (std::size_t at = 0, piece = 1; at < payload.size(); at += piece, piece = piece * 7 % 100003 + 1)
+      w.stream().write(payload.data() + at, static_cast<std::streamsize>(std::min(piece, payload.size() - at)));
+    w.commit();
+  }
+  const std::string framed = io::frame(kind, payload);
+  EXPECT_TRUE(test::read_file(path) == framed);
+  EXPECT_TRUE(io::read_checked(path, kind) == payload);
+  {
+    io::CheckedWriter w(path, kind);
+    w.stream() << "a checkpoint never committed";
+  }
+  EXPECT_TRUE(test::read_file(path) == framed);
+  EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
 }
 
 }  // namespace

@@ -28,8 +28,8 @@ std::string FitProgress::stage() const {
 
 void write_fit_checkpoint(const std::string& path, const std::string& deck_text, std::size_t densities,
                           const FitProgress& p) {
-  std::ostringstream f(std::ios::binary);
-  CheckpointOut w(f);
+  io::CheckedWriter file(path, kind_of(deck_text, densities));
+  CheckpointOut w(file.stream());
   w.text(deck_text);
   w.integer(p.md ? 1 : 0);
   if (p.md) {
@@ -47,7 +47,7 @@ void write_fit_checkpoint(const std::string& path, const std::string& deck_text,
     w.numbers({r->thermal11, r->thermal12});
     w.integer(r->evaluations);
   }
-  io::write_checked(path, kind_of(deck_text, densities), f.view());
+  file.commit();
 }
 
 FitProgress read_fit_checkpoint(const std::string& path, const std::string& deck_text, std::size_t densities) {
