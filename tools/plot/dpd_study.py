@@ -2,7 +2,8 @@
 """Figures and figures-of-merit of DPD runs (seed 004 sec. 4): the region displacement
 histories (fig. 3), CNA snapshots of the last dump frame (fig. 4, when the dump has a
 structure column), stress-strain curves (fig. 6) and displacement profiles (fig. 8) of
-one or more `mpmx dpd` run directories, overlaid, and a table of what VALIDATION.md D1-D3
+one or more `mpmx dpd` run directories (and the all-atom reference of the rod, an `mpmx md`
+run of a [rod] deck, whose tracks come from the same code), overlaid, and a table of what VALIDATION.md D1-D3
 compare: wave speeds (and their difference from the first run's), initial slopes and peak
 stresses, and, for a concurrent run beside its all-DPD reference (a run whose deck id ends
 in "reference_dpd_only"), the reflection at the interface: the largest difference of the
@@ -40,6 +41,8 @@ def interface_note(run):
 
 
 def label(run):
+    if run.get("command") == "md":
+        return "all-atom MD"
     m = run.get("model", {})
     if m.get("name") == "dpd_only":
         return "DPD-only"
@@ -86,7 +89,7 @@ def first_peak_end(u, step, start=0):
 
 
 def onset_time(t, u, rise, sign):
-    """The run's onset rule (app/dpd/analysis.cpp, Recorder::onset_time): the first time u has
+    """The run's onset rule (app/region_tracks.cpp, RegionTracks::onset_time): the first time u has
     risen `rise` along `sign` above its lowest value so far, interpolated in the record."""
     lowest = sign * u[0] if u else 0.0
     for r in range(1, len(u)):
@@ -223,6 +226,8 @@ def main():
         with open(os.path.join(d, "run.json")) as f:
             r = json.load(f)
         r["dir"] = d
+        if "case" not in r:  # an `mpmx md` run (the all-atom rod): its deck's name
+            r["case"] = os.path.splitext(os.path.basename(r.get("deck_file", d)))[0]
         for name in ("tracks", "stress_strain", "profile"):
             p = os.path.join(d, name + ".csv")
             if os.path.exists(p):

@@ -17,9 +17,10 @@ struct ForceWork {
   // Set by a kernel that already summed ghost forces (and per-atom tallies) into their
   // owners (valid for locals only).
   bool folded = false;
-  // Threads for a list with tiles (Neighbors::tiles): the one-element EAM kernel sums its
-  // pairs tile by tile and every atom adds its tiles' shares in a fixed order, so any
-  // count gives the same bits. Other potentials run on one thread.
+  // Threads for a list with tiles (Neighbors::tiles): the EAM kernels (the one-element
+  // tables, and the generic one of several elements and of Sutton-Chen) sum their pairs
+  // tile by tile and every atom adds its tiles' shares in a fixed order, so any count
+  // gives the same bits. Lennard-Jones runs on one thread.
   int threads = 1;
   // Sizes the arrays and zeroes rho (and the per-atom sums); each kernel zeroes the
   // force arrays it accumulates into (zero_forces()).

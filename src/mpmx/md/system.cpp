@@ -154,6 +154,53 @@ void System::add_streaming_velocity(const Mat3& grad) {
   }
 }
 
+namespace {
+
+// The mean velocity of the atoms with id > after_id, their count and their kinetic
+// temperature about it, summed in atom order (the same bits on any thread count).
+struct GroupMotion {
+  double u[3] = {0, 0, 0};
+  std::int64_t n = 0;
+  double temperature = 0;
+};
+
+GroupMotion motion_after(const Atoms& a, const std::vector<double>& mass_of, std::int64_t after_id) {
+  GroupMotion mo;
+  double p[3] = {0, 0, 0}, mass = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a.id[i] <= after_id) continue;
+    const double m = mass_of[a.type[i]];
+    p[0] += m * a.vx[i], p[1] += m * a.vy[i], p[2] += m * a.vz[i], mass += m, ++mo.n;
+  }
+  if (mo.n < 2) return mo;
+  for (int d = 0; d < 3; ++d) mo.u[d] = p[d] / mass;
+  double twice_ke = 0;  // amu A^2/ps^2
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a.id[i] <= after_id) continue;
+    const double dx = a.vx[i] - mo.u[0], dy = a.vy[i] - mo.u[1], dz = a.vz[i] - mo.u[2];
+    twice_ke += mass_of[a.type[i]] * (dx * dx + dy * dy + dz * dz);
+  }
+  mo.temperature = twice_ke * units::mvv2e / (3.0 * static_cast<double>(mo.n - 1) * units::boltzmann_eV_per_K);
+  return mo;
+}
+
+}  // namespace
+
+double System::temperature_after(std::int64_t after_id) const { return motion_after(atoms_, mass_, after_id).temperature; }
+
+void System::rescale_temperature(double target_K, std::int64_t after_id) {
+  const GroupMotion mo = motion_after(atoms_, mass_, after_id);
+  if (!(mo.temperature > 0)) return;
+  const double f = std::sqrt(target_K / mo.temperature);
+  const double* u = mo.u;
+  for (std::size_t i = 0; i < atoms_.size(); ++i) {
+    if (atoms_.id[i] <= after_id) continue;
+    atoms_.vx[i] = u[0] + f * (atoms_.vx[i] - u[0]);
+    atoms_.vy[i] = u[1] + f * (atoms_.vy[i] - u[1]);
+    atoms_.vz[i] = u[2] + f * (atoms_.vz[i] - u[2]);
+  }
+}
+
 void System::add_energy(double e) { inject_energy(atoms_, mass_, e, rng_); }
 
 void System::advance(int nsteps, const Mat3& grad, double dt) {
@@ -187,8 +234,26 @@ void System::set_frozen_ids(std::int64_t max_id) {
   hold_frozen();
 }
 
+void System::release_rigid(const Vec3& v) {
+  rigid_free_ = true;
+  for (std::size_t i = 0; i < atoms_.size(); ++i)
+    if (atoms_.id[i] <= frozen_ids_) atoms_.vx[i] = v[0], atoms_.vy[i] = v[1], atoms_.vz[i] = v[2];
+}
+
 void System::hold_frozen() {
   if (frozen_ids_ <= 0) return;
+  if (rigid_free_) {
+    // The body's momentum over its mass, summed in atom order on one thread, so every
+    // thread count gives the same bits.
+    double p[3] = {0, 0, 0}, mass = 0;
+    for (std::size_t i = 0; i < atoms_.size(); ++i) {
+      if (atoms_.id[i] > frozen_ids_) continue;
+      const double m = mass_[atoms_.type[i]];
+      p[0] += m * atoms_.vx[i], p[1] += m * atoms_.vy[i], p[2] += m * atoms_.vz[i], mass += m;
+    }
+    if (mass > 0) release_rigid({p[0] / mass, p[1] / mass, p[2] / mass});
+    return;
+  }
   const int nt = opt_.threads;
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(atoms_.size());
 #pragma omp parallel for schedule(static) num_threads(nt) if (nt > 1)

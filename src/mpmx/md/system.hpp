@@ -59,6 +59,13 @@ class System {
   // Section 6.2: Maxwell speeds at twice `target_K`, isotropic directions, zero total
   // momentum, from the stream (seed, stream_id) - the same on any thread count.
   void thermalize(double target_K, std::uint64_t seed, std::uint64_t stream_id);
+  // Velocities of the atoms with id > after_id scaled about their mean so that their
+  // kinetic temperature (3N-3 degrees of freedom) is `target_K` (an equilibration's
+  // rescaling, leaving a rigid body's atoms, ids 1..after_id, alone). Forces stay valid.
+  void rescale_temperature(double target_K, std::int64_t after_id = 0);
+  // The kinetic temperature of the atoms with id > after_id about their mean velocity
+  // (3N-3 degrees of freedom; 0 for fewer than two atoms).
+  double temperature_after(std::int64_t after_id) const;
   // Eq. 7.11 hook: adds `energy_eV` to the box as kinetic energy about the mean velocity.
   void add_energy(double energy_eV);
   // Adds the streaming velocity G (x - box centre) of a homogeneous deformation (G made
@@ -109,7 +116,18 @@ class System {
   // velocities are zeroed after every kick, so they never move; their forces still
   // count in the virial. 0: none.
   void set_frozen_ids(std::int64_t max_id);
+  // From now on those atoms (set_frozen_ids) are a free rigid body (seed 004's flyer): they
+  // take `velocity` (Angstrom/ps) now, and after every kick the body's mean velocity, so it
+  // translates as one under the total force on it (internal forces cancel).
+  void release_rigid(const Vec3& velocity);
+  // The rigid atoms (ids 1..max_id) and whether they are free, set without touching the
+  // velocities (a checkpoint's state is already the body's).
+  void set_rigid(std::int64_t max_id, bool free) {
+    frozen_ids_ = max_id;
+    rigid_free_ = free;
+  }
   std::int64_t frozen_ids() const { return frozen_ids_; }
+  bool rigid_free() const { return rigid_free_; }
   const Walls& walls() const { return walls_; }
   // Forces for the current state (recomputed if atoms or box were edited).
   void refresh();
@@ -146,6 +164,7 @@ class System {
   Mat3 g_{};
   Walls walls_;
   std::int64_t frozen_ids_ = 0;
+  bool rigid_free_ = false;
   std::int64_t step_ = 0;
   double time_ = 0;
   std::int64_t builds_ = 0;  // neighbour-list builds before the last compact()

@@ -1,17 +1,9 @@
 #pragma once
 // What the seed's figures read off a DPD run (seed 004 sec. 4), recorded during the run:
-//  - region tracks (fig. 3): the mean x displacement and velocity of the particles whose
-//    x at the run's start lies in [lo, hi); the onset is the first time the displacement
-//    along the wave's direction s (+1 or -1) has risen by `onset` above its lowest value
-//    so far, s u(t) - min_{t' <= t} s u(t') >= onset (interpolated between records). The
-//    rise above the running minimum, not above the start, because the rod keeps a slow
-//    breathing after a short equilibration (the regions drift by a tenth of an Angstrom
-//    per ps before the wave comes); a velocity threshold would meet the mean velocity's
-//    thermal scatter (0.1-0.2 Angstrom/ps over a few hundred particles). The wave speed is
-//    the regions' centre distance over their onsets' difference;
+//  - region tracks (fig. 3) and displacement profiles (fig. 8): app/region_tracks.hpp,
+//    shared with the all-atom MD reference of the rod;
 //  - the tensile test (fig. 6): engineering strain from the grips' separation over the
-//    domain's length, stress from the grips' pair forces over the cross-section;
-//  - displacement profiles (fig. 8): mean x displacement in bins of the start's x.
+//    domain's length, stress from the grips' pair forces over the cross-section.
 // The rigid particles are left out of tracks and profiles.
 #include <array>
 #include <cstdint>
@@ -21,28 +13,17 @@
 #include <toml++/toml.h>
 
 #include "mpmx/app/checkpoint_fields.hpp"
+#include "mpmx/app/region_tracks.hpp"
 #include "mpmx/dpd/system.hpp"
 
 namespace mpmx::app::dpd {
 
 using namespace mpmx::dpd;  // the DPD driver speaks the engine's names
 
-struct TrackSpec {
-  std::string name;
-  double lo = 0, hi = 0;  // Angstrom, x at the run's start
-};
-
-struct AnalysisSpec {
-  std::vector<TrackSpec> tracks;
-  std::int64_t every = 5;                 // steps between records
-  double onset = 0.3;                     // Angstrom of rise
-  int onset_direction = 1;                // +1: the wave pushes along +x; -1: along -x
-  std::array<std::string, 2> wave_speed;  // two track names, or empty
-  std::array<std::string, 2> grips;       // tensile: left and right rigid groups, or empty
+struct AnalysisSpec : TrackSettings {
+  std::array<std::string, 2> grips;  // tensile: left and right rigid groups, or empty
   std::array<double, 2> slope_strain{0.0, 0.05};
-  int profile_bins = 0;
-  std::int64_t profile_every = 0;  // steps
-  double cna_lattice = 0;          // > 0: CNA with this lattice constant in the dump and run.json
+  double cna_lattice = 0;  // > 0: CNA with this lattice constant in the dump and run.json
 
   bool records() const { return !tracks.empty() || !grips[0].empty() || profile_bins > 0; }
 };
@@ -70,22 +51,15 @@ class Recorder {
   static Recorder load(const AnalysisSpec& spec, const System& s, CheckpointIn& in);
 
  private:
-  explicit Recorder(const AnalysisSpec& spec) : spec_(spec) {}
-  double onset_time(std::size_t track) const;
-  std::vector<double> displacement(const System& s) const;  // x - x0 by particle, NaN rigid
+  Recorder(const AnalysisSpec& spec, RegionTracks tracks) : spec_(spec), tracks_(std::move(tracks)) {}
+  void record_grips(const System& s);
 
   AnalysisSpec spec_;
-  double t0_ = 0, length_ = 0, area_ = 0;
-  std::vector<double> x0_;                // by particle id
-  std::vector<std::vector<std::int64_t>> track_ids_;
-  std::vector<double> times_;
-  std::vector<std::vector<double>> track_u_, track_v_;  // per record, per track
+  RegionTracks tracks_;
+  double length_ = 0, area_ = 0;
   int grip_[2] = {-1, -1};
   double sep0_ = 0;
-  std::vector<double> strain_, stress_;  // GPa
-  std::vector<double> profile_times_;
-  std::vector<std::vector<double>> profile_u_;
-  double profile_lo_ = 0, profile_hi_ = 0;
+  std::vector<double> strain_, stress_;  // GPa, by record
 };
 
 }  // namespace mpmx::app::dpd

@@ -61,29 +61,9 @@ namespace {
 // [[track]], [analysis], [tensile], [profile] (analysis.hpp); `groups` the rigid groups' names.
 void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>& groups) {
   AnalysisSpec& a = c.analysis;
-  std::set<std::string> names;
-  for (auto& t : root.tables("track")) {
-    TrackSpec s;
-    s.name = t.string("name");
-    t.check(!s.name.empty() && names.insert(s.name).second, "name", "must be a new, non-empty track name");
-    const auto x = t.numbers("x");
-    if (x.size() == 2 && x[1] > x[0]) s.lo = x[0], s.hi = x[1];
-    else t.check(false, "x", "expected [lower, upper] with upper > lower (Angstrom)");
-    a.tracks.push_back(s);
-  }
   auto an = root.optional_table("analysis");
-  a.every = an.integer("every", 5, 1, 1000000);
+  read_track_settings(root, an, a);
   an.check(c.thermo % std::max<std::int64_t>(a.every, 1) == 0, "every", "must divide run.thermo");
-  a.onset = an.number("onset", 0.3);
-  an.positive("onset", a.onset);
-  a.onset_direction = an.integer_int("onset_direction", 1, -1, 1);
-  an.check(a.onset_direction == 1 || a.onset_direction == -1, "onset_direction",
-           "must be 1 (the wave pushes along +x) or -1 (along -x)");
-  if (an.has("wave_speed")) {
-    const auto w = an.strings("wave_speed", {});
-    if (w.size() == 2 && names.count(w[0]) && names.count(w[1]) && w[0] != w[1]) a.wave_speed = {w[0], w[1]};
-    else an.check(false, "wave_speed", "expected two different names of [[track]] regions");
-  }
   a.cna_lattice = an.number("cna_lattice", 0.0);
   an.non_negative("cna_lattice", a.cna_lattice);
   auto te = root.optional_table("tensile");
@@ -94,13 +74,6 @@ void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>&
     const auto r = te.numbers("slope_strain", {0.0, 0.05});
     if (r.size() == 2 && r[1] > r[0]) a.slope_strain = {r[0], r[1]};
     else te.check(false, "slope_strain", "expected [lower, upper] strains with upper > lower");
-  }
-  auto pr = root.optional_table("profile");
-  if (pr.present()) {
-    a.profile_bins = pr.integer_int("bins", 1, 100000);
-    a.profile_every = pr.integer("every", 1, kMaxSteps);
-    pr.check(a.profile_every % std::max<std::int64_t>(a.every, 1) == 0, "every",
-             "must be a positive multiple of analysis.every");
   }
 }
 

@@ -22,6 +22,10 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
     n[0] = j.nx(), n[1] = j.ny(), n[2] = j.nz();
     filled = 1.0 - j.notch_depth_A() / (2.0 * n[0] * a);  // the V notch: half its depth's share
     b.size_key = "jet.cells and jet.scale";
+  } else if (c.rod) {
+    const RodConfig& r = c.rod_config;
+    n[0] = r.target_cells[0] + r.flyer_cells, n[1] = r.target_cells[1], n[2] = r.target_cells[2];
+    b.size_key = "rod.target_cells and rod.flyer_cells";
   } else {
     for (int d = 0; d < 3; ++d) n[d] = c.cells[d];
     b.size_key = "lattice.cells";
@@ -39,6 +43,10 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
   const double steps = static_cast<double>(c.relax_steps) + static_cast<double>(c.steps);
   b.atom_steps = b.atoms * (steps + c.scan_points);
   b.work_key = c.relax_steps > 0 ? "thermal.relax_steps + run.steps" : "run.steps";
+  if (c.rod) {
+    b.atom_steps = b.atoms * (static_cast<double>(c.rod_equilibrate_steps) + static_cast<double>(c.steps));
+    b.work_key = "rod.equilibrate_steps + run.steps";
+  }
   if (c.jet) {
     b.work_key = "jet.duration_ps and jet.scale";
     b.bins = static_cast<double>(c.jet_bins[0]) * c.jet_bins[1];

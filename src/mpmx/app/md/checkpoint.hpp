@@ -6,6 +6,7 @@
 // advance's half kicks at its ends differ in the last bit from the whole kicks inside
 // one, so a resumed run is bit-for-bit only from there.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "mpmx/app/run_control.hpp"
@@ -23,5 +24,11 @@ Tracked resume_md(RunControl& control, mpmx::md::System& sys, std::int64_t last_
 
 // At a record before the last: true when the run is to stop here, its checkpoint written.
 bool stop_md_at(RunControl& control, const mpmx::md::System& sys, const Tracked& tracked);
+
+// The same with the run's own fields after the system (written and read in one order).
+void resume_md_with(RunControl& control, mpmx::md::System& sys, std::int64_t last_step,
+                    const std::function<void(CheckpointIn&)>& read_rest);
+bool stop_md_with(RunControl& control, const mpmx::md::System& sys,
+                  const std::function<void(CheckpointOut&)>& write_rest);
 
 }  // namespace mpmx::app::md

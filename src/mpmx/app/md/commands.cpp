@@ -111,7 +111,8 @@ void check_md(const std::string& path, bool force, bool lammps = false) {
   if (!measured) rate = md::kMdAtomStepsPerSecond;
   fmt::print("{}: ok (md deck: {:.4g} atoms, {} steps, about {} of memory, {:.3g} atom-steps, about {:.3g} h on one "
              "core at {:.3g} atom-steps/s ({}))\n",
-             path, budget.atoms, config.steps, format_bytes(budget.bytes), budget.atom_steps,
+             path, budget.atoms, config.steps + (config.rod ? config.rod_equilibrate_steps : 0),
+             format_bytes(budget.bytes), budget.atom_steps,
              budget.atom_steps / rate / 3600.0, rate,
              measured ? "a box of its potential timed on this core just now" : "a typical figure");
   if (budget.bins > 0)
@@ -126,7 +127,8 @@ void add_md_commands(CLI::App& app) {
   auto* md = app.add_subcommand("md", "Run an MD-only deck (fcc crystal, EAM/LJ/Sutton-Chen, NVE)");
   struct Args {
     std::string deck, out;
-    bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false, resume = false;
+    bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false, resume = false,
+         still = false;
     int ranks = 1, threads = 0;  // all cores, as run and dpd
     std::int64_t stop_after = 0;
   };
@@ -141,6 +143,9 @@ void add_md_commands(CLI::App& app) {
   md->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   md->add_flag("--resume", args->resume,
                "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit)");
+  md->add_flag("--still", args->still,
+               "rod decks: the flyer released at rest, the undriven twin of the run, which "
+               "tools/plot/dpd_study.py subtracts to leave the wave alone");
   // For tests: stop as if interrupted at the first record at or past step N.
   md->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   auto* lammps = md->add_flag("--lammps", args->lammps,
@@ -158,6 +163,8 @@ void add_md_commands(CLI::App& app) {
       return check_md(args->deck, args->force || args->lammps_write_only, args->lammps || args->lammps_write_only);
     auto deck = io::Deck::from_file(args->deck);
     md::MdConfig config = md::read_md_config(deck);  // parses the potential file too
+    if (args->still && !config.rod) throw InputError(fmt::format("{}: --still needs a deck with a [rod] table", args->deck));
+    config.still = args->still;
     // mpmx md advances one large system: its threaded form (the same bits for any count).
     config.options.threaded = true;
     config.options.threads = threads_of(args->threads);
@@ -186,8 +193,9 @@ void add_md_commands(CLI::App& app) {
     const auto r = run_resumable(out, args->resume,
                                  [&](const std::string& dir) { return md::run_md(config, dir, deck.table(), o); });
     if (r.interrupted)
-      throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx md {} --out {} --resume", r.step,
-                                    r.last_step, checkpoint_path(out), args->deck, out));
+      throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx md {} --out {} --resume{}",
+                                    r.step, r.last_step, checkpoint_path(out), args->deck, out,
+                                    args->still ? " --still" : ""));
     fmt::print("{} atoms, {} steps, {:.3g} s, {:.4g} atom-steps/s, PE {:.6f} eV/atom -> {}/run.json\n", r.atoms,
                r.steps, r.wall_seconds, r.atom_steps_per_second, r.potential_energy_per_atom, out);
   });

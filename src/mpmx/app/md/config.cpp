@@ -171,6 +171,46 @@ void read_jet_records(io::Section& jet, io::Section& run, MdConfig& c) {
   }
 }
 
+// [rod] (seed 004 sec. 4.1.1): the flyer and target, the equilibration, the flyer's speed;
+// with the region tracks of [[track]], [analysis] and [profile] (app/region_tracks.hpp).
+void read_rod(io::Section& root, io::Section& rod, bool other, MdConfig& c) {
+  if (other) rod.error("a deck holds one of [bar], [jet] and [rod]");
+  c.rod = true;
+  RodConfig& r = c.rod_config;
+  const auto cells = rod.integers("target_cells", 1, 100000);
+  if (cells.size() == 3) {
+    for (int d = 0; d < 3; ++d) r.target_cells[d] = static_cast<int>(cells[d]);
+  } else {
+    rod.check(false, "target_cells", "expected [nx, ny, nz] (fcc cells of lattice.constant)");
+  }
+  r.flyer_cells = rod.integer_int("flyer_cells", 1, 100000);
+  r.lattice_constant = c.lattice_constant;
+  r.temperature = c.temperature;
+  r.seed = c.seed;
+  c.rod_velocity = rod.number("flyer_velocity");
+  rod.check(c.rod_velocity > 0 && c.rod_velocity <= 200, "flyer_velocity",
+            "must lie in (0, 200] Angstrom/ps (along +x, into the target)");
+  c.rod_equilibrate_steps = rod.integer("equilibrate_steps", 0, 0, kMax64);
+  c.rod_rescale_every = rod.integer("rescale_every", 50, 0, INT_MAX);
+  rod.check(c.rod_rescale_every == 0 || c.temperature > 0, "rescale_every",
+            "rescales to thermal.temperature, which is 0: set rescale_every = 0 or a temperature");
+  auto an = root.optional_table("analysis");
+  read_track_settings(root, an, c.tracks);
+  an.check(c.thermo % std::max<std::int64_t>(c.tracks.every, 1) == 0, "every", "must divide run.thermo");
+  // The target's atomic planes lie at face + k a/2, k = 0 .. 2 nx - 1 (md/rod.hpp's frame):
+  // a region between two planes would hold no atom at the start.
+  const double a = c.lattice_constant, face = r.flyer_cells * a;
+  for (const TrackSpec& t : c.tracks.tracks) {
+    const double k = std::max(0.0, std::ceil((t.lo - face) / (0.5 * a) - 1e-9));
+    if (!(k < 2.0 * r.target_cells[0] && face + 0.5 * a * k < t.hi))
+      an.error(fmt::format("track \"{}\": x = [{}, {}) A holds no atomic plane of the target (planes every {} A "
+                           "from the impact face at {} A to {} A)",
+                           t.name, t.lo, t.hi, 0.5 * a, face, face + (r.target_cells[0] - 0.5) * a));
+  }
+  rod.check(c.rod_rescale_every == 0 || c.rod_equilibrate_steps % c.rod_rescale_every == 0, "equilibrate_steps",
+            "must be a multiple of rescale_every (the rescaling ends with the equilibration)");
+}
+
 }  // namespace
 
 MdConfig read_md_config(io::Deck& deck) {
@@ -196,6 +236,8 @@ MdConfig read_md_config(io::Deck& deck) {
     read_jet_sample(jet, run, bar.present(), c);
     read_jet_records(jet, run, c);
   }
+  auto rod = root.optional_table("rod");
+  if (rod.present()) read_rod(root, rod, bar.present() || jet.present(), c);
   deck.finish();
   return c;
 }

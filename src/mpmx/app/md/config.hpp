@@ -6,10 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "mpmx/app/region_tracks.hpp"
 #include "mpmx/io/deck.hpp"
 #include "mpmx/md/bar.hpp"
 #include "mpmx/md/jet.hpp"
 #include "mpmx/md/particles.hpp"
+#include "mpmx/md/rod.hpp"
 #include "mpmx/md/potential/potential.hpp"
 #include "mpmx/md/system.hpp"
 
@@ -45,6 +47,18 @@ struct MdConfig {
   JetConfig jet_config;
   std::array<int, 2> jet_bins{400, 50};
   std::int64_t jet_every = 1000;  // steps between records (bins, front)
+  // Optional all-atom flyer on a rod ([rod], seed 004 sec. 4.1.1): the target equilibrated
+  // for rod_equilibrate_steps with the flyer held, then the flyer sent at rod_velocity
+  // along +x for run.steps, the region tracks recorded every tracks.every steps.
+  bool rod = false;
+  RodConfig rod_config;
+  double rod_velocity = 5.0;                // Angstrom/ps
+  std::int64_t rod_equilibrate_steps = 0;
+  std::int64_t rod_rescale_every = 50;      // velocity rescaling to the temperature (0: none)
+  // `mpmx md --still`: the flyer released at rest (the undriven twin of the run: the same
+  // random streams, so the two agree until the wave arrives; dpd_study.py subtracts it).
+  bool still = false;
+  TrackSettings tracks;
   std::string deck_file;
 };
 

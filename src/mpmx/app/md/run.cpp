@@ -11,6 +11,7 @@
 
 #include "mpmx/app/md/dump.hpp"
 #include "mpmx/app/md/jet_run.hpp"
+#include "mpmx/app/md/rod_run.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
 #include "mpmx/io/run_record.hpp"
@@ -151,11 +152,12 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   const auto t0 = std::chrono::steady_clock::now();
   RunControl control(out_dir, "md_run", deck_echo, o);
   const Potential pot(c.potential);
-  if (c.bar || c.jet) {
+  if (c.bar || c.jet || c.rod) {
     MdRunSummary r;
     toml::table rec;
-    const std::string stopped =
-        c.bar ? run_bar(c, pot, out_dir, r, rec, control) : run_jet(c, pot, out_dir, r, rec, control, o.quiet);
+    const std::string stopped = c.bar   ? run_bar(c, pot, out_dir, r, rec, control)
+                                : c.jet ? run_jet(c, pot, out_dir, r, rec, control, o.quiet)
+                                        : run_rod(c, pot, out_dir, r, rec, control, o.quiet);
     r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     r.interrupted = control.interrupted();
     write_record(c, pot, deck_echo, r, std::move(rec), out_dir, stopped, control);

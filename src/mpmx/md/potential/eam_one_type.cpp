@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "mpmx/core/isa.hpp"
+#include "mpmx/md/potential/tile_shares.hpp"
 
 #ifndef MPMX_MD_EAM_ONE_TYPE_SCRATCH_
 #define MPMX_MD_EAM_ONE_TYPE_SCRATCH_
@@ -632,36 +633,11 @@ ForceSums one_type_tiles(const EamOneType<Real>& t, const Neighbors& nb, ForceWo
     }
     // Each atom: its shares of force (and of the per-atom tallies).
 #pragma omp for schedule(dynamic, 256)
-    for (int j = 0; j < nlocal; ++j) {
-      double sx = 0, sy = 0, sz = 0;
-      for (int v = share_first[j]; v < share_first[j + 1]; ++v) {
-        const double* f = tf + 4 * static_cast<std::size_t>(share[v]);
-        sx += f[0], sy += f[1], sz += f[2];
-      }
-      w.fx[j] = sx, w.fy[j] = sy, w.fz[j] = sz;
-      if constexpr (PerAtom) {
-        double e = emb[j], v6[6] = {};
-        for (int v = share_first[j]; v < share_first[j + 1]; ++v) {
-          e += te_[share[v]];
-          for (int c = 0; c < 6; ++c) v6[c] += tw_[6 * static_cast<std::size_t>(share[v]) + c];
-        }
-        w.energy_atom[j] = e;
-        for (int c = 0; c < 6; ++c) w.virial_atom[6 * static_cast<std::size_t>(j) + c] = v6[c];
-      }
-    }
+    for (int j = 0; j < nlocal; ++j) gather_shares(nb, j, tf, PerAtom, PerAtom ? emb[j] : 0.0, te_, tw_, w);
   }
 
   ForceSums sums;
-  if constexpr (Tally) {
-    double e = 0, v[6] = {};
-    for (int j = 0; j < nlocal; ++j) e += emb[j];
-    for (int p = 0; p < ntile; ++p) {
-      e += tsum[7 * p];
-      for (int c = 0; c < 6; ++c) v[c] += tsum[7 * p + 1 + c];
-    }
-    sums.energy = e;
-    sums.virial = {v[0], v[1], v[2], v[3], v[4], v[5]};
-  }
+  if constexpr (Tally) sums = sum_tiles(emb, nlocal, tsum, ntile);
   w.folded = true;
   return sums;
 }
