@@ -4,10 +4,13 @@
 // process, and whether LAMMPS (`lmp`) is there for the crosschecks.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "mpmx/md/potential/potential.hpp"
 #include "mpmx/md/system.hpp"
@@ -27,6 +30,15 @@ inline md::PotentialSpec copper_spec() {
 inline md::Potential copper() { return md::Potential(copper_spec()); }
 
 inline double total_energy(const md::System& s) { return s.potential_energy() + s.kinetic_energy(); }
+
+// How many of two runs' numbers differ in any bit (every one when the counts differ):
+// 0 for the same bits on any thread count.
+inline std::size_t differing_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return std::max(a.size(), b.size());
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) n += std::memcmp(&a[k], &b[k], sizeof(double)) != 0;
+  return n;
+}
 
 // A per-process folder under the system's temporary one, removed when the process ends.
 inline const std::filesystem::path& scratch_root() {

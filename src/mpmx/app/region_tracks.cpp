@@ -26,7 +26,7 @@ std::size_t id_index(std::int64_t id, std::size_t size) {
 
 }  // namespace
 
-void read_track_settings(io::Section& root, io::Section& an, TrackSettings& a) {
+void read_track_settings(io::Section& root, io::Section& an, std::int64_t thermo, TrackSettings& a) {
   std::set<std::string> names;
   for (auto& t : root.tables("track")) {
     TrackSpec s;
@@ -38,6 +38,7 @@ void read_track_settings(io::Section& root, io::Section& an, TrackSettings& a) {
     a.tracks.push_back(s);
   }
   a.every = an.integer("every", 5, 1, 1000000);
+  an.check(thermo % std::max<std::int64_t>(a.every, 1) == 0, "every", "must divide run.thermo");
   a.onset = an.number("onset", 0.3);
   an.positive("onset", a.onset);
   a.onset_direction = an.integer_int("onset_direction", 1, -1, 1);

@@ -44,9 +44,9 @@ struct TrackSettings {
 };
 
 // A deck's [[track]] tables (name, x = [lower, upper]), the track keys of its [analysis]
-// table `analysis` (every, onset, onset_direction, wave_speed) and its [profile] (bins,
-// every), every problem named by key.
-void read_track_settings(io::Section& root, io::Section& analysis, TrackSettings& a);
+// table `analysis` (every, which must divide the run's `thermo`; onset, onset_direction,
+// wave_speed) and its [profile] (bins, every), every problem named by key.
+void read_track_settings(io::Section& root, io::Section& analysis, std::int64_t thermo, TrackSettings& a);
 
 // The particles at one moment, by index: their ids (0 <= id), x and x velocity.
 struct TrackFrame {

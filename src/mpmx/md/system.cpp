@@ -156,32 +156,39 @@ void System::add_streaming_velocity(const Mat3& grad) {
 
 namespace {
 
-// The mean velocity of the atoms with id > after_id, their count and their kinetic
-// temperature about it, summed in atom order (the same bits on any thread count).
+// The mean velocity of the atoms `in(id)` takes, their count and (with_temperature)
+// their kinetic temperature about it, summed in atom order (the same bits on any thread
+// count): a rigid body's velocity, a region's temperature.
 struct GroupMotion {
   double u[3] = {0, 0, 0};
   std::int64_t n = 0;
   double temperature = 0;
 };
 
-GroupMotion motion_after(const Atoms& a, const std::vector<double>& mass_of, std::int64_t after_id) {
+template <class In>
+GroupMotion motion_of(const Atoms& a, const std::vector<double>& mass_of, In in, bool with_temperature) {
   GroupMotion mo;
   double p[3] = {0, 0, 0}, mass = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (a.id[i] <= after_id) continue;
+    if (!in(a.id[i])) continue;
     const double m = mass_of[a.type[i]];
     p[0] += m * a.vx[i], p[1] += m * a.vy[i], p[2] += m * a.vz[i], mass += m, ++mo.n;
   }
-  if (mo.n < 2) return mo;
-  for (int d = 0; d < 3; ++d) mo.u[d] = p[d] / mass;
+  if (mass > 0)
+    for (int d = 0; d < 3; ++d) mo.u[d] = p[d] / mass;
+  if (!with_temperature || mo.n < 2) return mo;
   double twice_ke = 0;  // amu A^2/ps^2
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (a.id[i] <= after_id) continue;
+    if (!in(a.id[i])) continue;
     const double dx = a.vx[i] - mo.u[0], dy = a.vy[i] - mo.u[1], dz = a.vz[i] - mo.u[2];
     twice_ke += mass_of[a.type[i]] * (dx * dx + dy * dy + dz * dz);
   }
   mo.temperature = twice_ke * units::mvv2e / (3.0 * static_cast<double>(mo.n - 1) * units::boltzmann_eV_per_K);
   return mo;
+}
+
+GroupMotion motion_after(const Atoms& a, const std::vector<double>& mass_of, std::int64_t after_id) {
+  return motion_of(a, mass_of, [after_id](std::int64_t id) { return id > after_id; }, true);
 }
 
 }  // namespace
@@ -243,15 +250,10 @@ void System::release_rigid(const Vec3& v) {
 void System::hold_frozen() {
   if (frozen_ids_ <= 0) return;
   if (rigid_free_) {
-    // The body's momentum over its mass, summed in atom order on one thread, so every
-    // thread count gives the same bits.
-    double p[3] = {0, 0, 0}, mass = 0;
-    for (std::size_t i = 0; i < atoms_.size(); ++i) {
-      if (atoms_.id[i] > frozen_ids_) continue;
-      const double m = mass_[atoms_.type[i]];
-      p[0] += m * atoms_.vx[i], p[1] += m * atoms_.vy[i], p[2] += m * atoms_.vz[i], mass += m;
-    }
-    if (mass > 0) release_rigid({p[0] / mass, p[1] / mass, p[2] / mass});
+    // The body's momentum over its mass, on one thread: the same bits on any count.
+    const std::int64_t last = frozen_ids_;
+    const GroupMotion mo = motion_of(atoms_, mass_, [last](std::int64_t id) { return id <= last; }, false);
+    if (mo.n > 0) release_rigid({mo.u[0], mo.u[1], mo.u[2]});
     return;
   }
   const int nt = opt_.threads;

@@ -62,8 +62,7 @@ namespace {
 void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>& groups) {
   AnalysisSpec& a = c.analysis;
   auto an = root.optional_table("analysis");
-  read_track_settings(root, an, a);
-  an.check(c.thermo % std::max<std::int64_t>(a.every, 1) == 0, "every", "must divide run.thermo");
+  read_track_settings(root, an, c.thermo, a);
   a.cna_lattice = an.number("cna_lattice", 0.0);
   an.non_negative("cna_lattice", a.cna_lattice);
   auto te = root.optional_table("tensile");

@@ -195,8 +195,7 @@ void read_rod(io::Section& root, io::Section& rod, bool other, MdConfig& c) {
   rod.check(c.rod_rescale_every == 0 || c.temperature > 0, "rescale_every",
             "rescales to thermal.temperature, which is 0: set rescale_every = 0 or a temperature");
   auto an = root.optional_table("analysis");
-  read_track_settings(root, an, c.tracks);
-  an.check(c.thermo % std::max<std::int64_t>(c.tracks.every, 1) == 0, "every", "must divide run.thermo");
+  read_track_settings(root, an, c.thermo, c.tracks);
   // The target's atomic planes lie at face + k a/2, k = 0 .. 2 nx - 1 (md/rod.hpp's frame):
   // a region between two planes would hold no atom at the start.
   const double a = c.lattice_constant, face = r.flyer_cells * a;
