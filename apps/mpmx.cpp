@@ -19,6 +19,7 @@
 #include "mpmx/md/potential/eam_one_type.hpp"
 #include "mpmx/core/isa.hpp"
 #include "mpmx/core/exit_codes.hpp"
+#include "mpmx/core/omp_wait.hpp"
 
 namespace {
 
@@ -164,6 +165,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  mpmx::wait_passively(argc, argv);  // before MPI or OpenMP start: it may restart the process
   mpmx::ranks::Session mpi(argc, argv);  // MPI only when started by an MPI launcher
   return run(argc, argv);
 }

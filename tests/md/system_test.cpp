@@ -9,6 +9,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
+#include "mpmx/md/budget.hpp"
 #include "mpmx/md/system.hpp"
 #include "mpmx/particles/lattice.hpp"
 
@@ -86,6 +87,45 @@ TEST(Checkpoint, RoundTripContinuesBitForBit) {
   }
   std::stringstream bad("not a checkpoint");
   EXPECT_THROW(System::load(bad, s.potential()), mpmx::InputError);
+}
+
+// A multiscale box between macro steps (System::compact) keeps its neighbour list: it
+// continues as a box never compacted, bit for bit, rebuilding its list by the skin only,
+// at the bytes md/budget estimates, and a checkpoint of it resumes bit for bit.
+TEST(Compact, KeepsTheListAndContinuesBitForBit) {
+  const Mat3 g{2e-3, 1e-3, 0, 0, -1e-3, 0, 0, 0, 5e-4};  // 1/ps
+  System kept(fcc(5, 5, 5, 3.615), copper());
+  kept.thermalize(300, 7, 1);
+  System whole = kept;
+  for (int macro = 0; macro < 20; ++macro) {
+    kept.advance(10, g, 0.001);
+    kept.compact();
+    whole.advance(10, g, 0.001);
+  }
+  // Twenty macro steps of ten MD steps: the skin decides the builds, not the macro steps.
+  EXPECT_EQ(kept.neighbor_builds(), whole.neighbor_builds());
+  EXPECT_LT(kept.neighbor_builds(), 12);
+  for (std::size_t i = 0; i < kept.atoms().size(); ++i) {
+    ASSERT_EQ(kept.atoms().x[i], whole.atoms().x[i]);
+    ASSERT_EQ(kept.atoms().vy[i], whole.atoms().vy[i]);
+  }
+  const double estimate = kept_box_bytes(5, 3.615, kept.potential().cutoff() + kept.options().skin);
+  std::printf("compact 500-atom box: %zu bytes held, %.0f estimated (%.0f per atom)\n", kept.bytes(), estimate,
+              estimate / 500);
+  EXPECT_NEAR(static_cast<double>(kept.bytes()) / estimate, 1.0, 0.15);
+  EXPECT_LT(static_cast<double>(kept.bytes()), 0.5 * static_cast<double>(whole.bytes()));
+  std::stringstream buf;
+  kept.save(buf);
+  System resumed = System::load(buf, kept.potential());
+  resumed.compact();
+  for (int macro = 0; macro < 5; ++macro) {
+    kept.advance(10, g, 0.001);
+    kept.compact();
+    resumed.advance(10, g, 0.001);
+    resumed.compact();
+  }
+  EXPECT_EQ(resumed.neighbor_builds(), kept.neighbor_builds());
+  for (std::size_t i = 0; i < kept.atoms().size(); ++i) ASSERT_EQ(kept.atoms().z[i], resumed.atoms().z[i]);
 }
 
 TEST(Neighbors, SmallBoxJustOverTwiceTheCutoffMatchesLargeBox) {

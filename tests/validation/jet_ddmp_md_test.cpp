@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -114,6 +115,14 @@ TEST(J2Tiny, DdmpMdFollowsTheDirectMdJet) {
   EXPECT_LT(r.stress_vs_direct_md, 0.4);
   EXPECT_GT(r.stress_vs_direct_md, 0.05);
   EXPECT_LT(r.momentum_error(), 1e-9 * r.momentum_scale + 1e-12);
+  // The boxes in mixed precision (float pairs, double sums): within 0.5 points of double.
+  const auto cm = test::deck_with(test::example("J2_ddmp_md_20x10_1ppc_tiny.toml"), [&](toml::table& t) {
+    t["reference"].as_table()->insert_or_assign("file", md);
+    t["material"]["md"].as_table()->insert_or_assign("precision", "mixed");
+  });
+  const auto rm = app::run_mpm_dim<2>(cm, o);
+  std::printf("J2 tiny, eq. 7.12: double %.4f, mixed %.4f\n", r.stress_vs_direct_md, rm.stress_vs_direct_md);
+  EXPECT_LT(std::abs(rm.stress_vs_direct_md - r.stress_vs_direct_md), 0.005);
 }
 
 // The cluster decks pass `mpmx check` for the ranks they are meant for, and one process

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 
+#include "mpmx/app/cli_checks.hpp"
 #include "mpmx/core/machine.hpp"
 #include "../md/md_test_util.hpp"
 #include "cli_util.hpp"
@@ -52,7 +53,10 @@ TEST(J1Tiny, ShockSpeedWithinTenPercentOfHugoniot) {
   const double p_hugoniot = 8.93 * (3.94 + 1.49 * up) * up;
   EXPECT_NEAR(json_number(json, "plateau_stress_gpa"), 162.0, 0.2 * 162.0);
   EXPECT_GT(json_number(json, "plateau_stress_gpa"), p_hugoniot * 0.9);
-  EXPECT_EQ(json_number(json, "threads"), static_cast<double>(mpmx::hardware_threads()));  // md's default: every core, as run's
+  // md's default: every core, as run's, at most one a kAtomsPerMdThread atoms.
+  const int threads = mpmx::app::threads_for(static_cast<int>(mpmx::hardware_threads()), json_number(json, "atoms"),
+                                             mpmx::app::kAtomsPerMdThread);
+  EXPECT_EQ(json_number(json, "threads"), static_cast<double>(threads));
   EXPECT_GT(json_number(json, "md_atom_steps_per_second"), 0);
   EXPECT_TRUE(fs::exists(out / "md_bins.pvd"));
   EXPECT_TRUE(fs::exists(out / "vtk" / "md_bins_001500.vti"));

@@ -1,5 +1,6 @@
 #include "mpmx/app/cli_checks.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -98,6 +99,16 @@ std::string out_dir_of(const std::string& out, const std::string& deck) {
   return out.empty() ? "runs/" + std::filesystem::path(deck).stem().string() : out;
 }
 
-int threads_of(int requested) { return requested > 0 ? requested : static_cast<int>(hardware_threads()); }
+int threads_of(int requested) {
+  const int cores = static_cast<int>(hardware_threads());
+  return requested > 0 ? std::min(requested, cores) : cores;
+}
+
+int run_threads_of(int requested) { return requested > 0 ? threads_of(requested) : 0; }
+
+int threads_for(int threads, double items, double per_thread) {
+  const double most = std::max(1.0, std::floor(items / per_thread));
+  return most < threads ? static_cast<int>(most) : std::max(1, threads);
+}
 
 }  // namespace mpmx::app

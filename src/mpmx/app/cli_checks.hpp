@@ -23,8 +23,22 @@ CLI::Validator non_empty_path();
 // Every command's --out when none is given: runs/<deck name>.
 std::string out_dir_of(const std::string& out, const std::string& deck);
 
-// Every command's --threads: 0 (not given) is every core.
+// Every command's --threads: 0 (not given) is every core, and more than the cores is the
+// cores (a thread waiting for a core only slows the others; results are the same on any
+// count, so the count only decides speed).
 int threads_of(int requested);
+// `mpmx run`'s --threads: 0 stays 0 (the continuum on one thread, the MD boxes on every
+// core), more than the cores is the cores.
+int run_threads_of(int requested);
+// Threads for one system of `items` (atoms, particles): no more than one per `per_thread`
+// items, so that a small system, whose step is over in microseconds, never forks threads
+// every step (on a busy machine each fork waits for a core).
+int threads_for(int threads, double items, double per_thread);
+// Atoms a thread of one MD system needs before it pays: the threaded force loop cuts
+// tiles of 2048 atoms or more (particles/neighbor.hpp), and below two tiles a thread
+// would fork only for the step's short loops (a 500-atom box ran 19x slower on 2 threads
+// than on one while another program held a core).
+inline constexpr double kAtomsPerMdThread = 4096;
 
 // The shared policy, applied by main() to every command once all are registered: any
 // option named --threads, --checkpoint-minutes, --checkpoint-every or --out gets the

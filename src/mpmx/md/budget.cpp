@@ -39,4 +39,15 @@ double compact_box_bytes(double atoms) {
   return kBytesPerAtom * atoms + kBytesPerBox;
 }
 
+double kept_box_bytes(double cells, double a, double reach) {
+  const double atoms = 4.0 * cells * cells * cells, density = 4.0 / (a * a * a);
+  const double side = cells * a + 2.0 * reach;
+  const double entries = std::max(atoms, density * side * side * side);
+  const double pairs = atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density;
+  constexpr double kListPerAtom = 3 * 8 + 4;  // positions at the build; the list's offsets
+  constexpr double kPerPair = 4;               // an entry's index
+  constexpr double kPerEntry = 4 + 4 + 3;      // type, owner, image
+  return compact_box_bytes(atoms) + kListPerAtom * atoms + kPerPair * pairs + kPerEntry * entries;
+}
+
 }  // namespace mpmx::md

@@ -40,8 +40,13 @@ double box_bytes(const double n[3], double a, double reach);
 double measure_atom_steps_per_second(const Potential& pot, const SystemOptions& options, double a, int cells,
                                      double temperature, std::uint64_t seed, double dt);
 
-// Bytes a box holds between the macro steps of a multiscale run (System::compact: its
-// atoms' positions, velocities, forces, types and ids, and the box's own small state).
+// Bytes of a box's atoms (positions, velocities, forces, types and ids) and of its own
+// small state.
 double compact_box_bytes(double atoms);
+// Bytes a box of cells^3 fcc cells of lattice constant `a` holds between the macro steps
+// of a multiscale run (System::compact): its atoms, and the neighbour list it keeps for
+// the next macro step (the half list within `reach` = cutoff + skin, the ghosts' owners
+// and images, the positions at the list's build).
+double kept_box_bytes(double cells, double a, double reach);
 
 }  // namespace mpmx::md

@@ -40,8 +40,7 @@ void System::refresh() {
 }
 
 void System::compact() {
-  builds_ += nb_.builds;
-  nb_ = Neighbors{};
+  nb_.shed();
   work_ = ForceWork{};
 }
 
@@ -52,8 +51,7 @@ std::size_t System::bytes() const {
     b += v->capacity() * sizeof(double);
   b += atoms_.type.capacity() * sizeof(int) + atoms_.id.capacity() * sizeof(std::int64_t);
   b += mass_.capacity() * sizeof(double);
-  b += nb_.x.capacity() * 24 + nb_.xyz.capacity() * 8 + nb_.type.capacity() * 4 + nb_.owner.capacity() * 4 +
-       nb_.n1.capacity() * 3 + nb_.first.capacity() * 4 + nb_.list.capacity() * 4;
+  b += nb_.bytes();
   b += (work_.fx.capacity() + work_.fy.capacity() + work_.fz.capacity() + work_.rho.capacity() +
         work_.fp.capacity() + work_.energy_atom.capacity() + work_.virial_atom.capacity()) *
        sizeof(double);
@@ -215,7 +213,7 @@ void System::advance(int nsteps, const Mat3& grad, double dt) {
   if (!(dt > 0)) throw InputError(fmt::format("MD time step dt = {}: must be positive", dt));
   const Mat3 g = is_upper_triangular(grad) ? grad : upper_triangular(grad);  // eq. 5.20
   if (!valid_) refresh();
-  else if (!nb_.built()) rebuild();  // after compact(): the forces are the stored ones
+  else if (!nb_.built()) rebuild();  // loaded from a list-less checkpoint: the forces are the stored ones
   g_ = g;
   const bool affine = opt_.deformation == Deformation::affine;
   const bool deforming = std::any_of(g.begin(), g.end(), [](double v) { return v != 0.0; });

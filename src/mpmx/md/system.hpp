@@ -132,8 +132,9 @@ class System {
   // Forces for the current state (recomputed if atoms or box were edited).
   void refresh();
   // Keeps only what the next advance needs (atoms with their forces, box, stream,
-  // tallies): the neighbour list and force buffers are freed, rebuilt when it advances.
-  // The multiscale boxes between macro steps (about 90 bytes per atom).
+  // tallies, and the neighbour list with what decides its rebuild: Neighbors::shed); the
+  // force buffers and packed positions are freed. The multiscale boxes between macro
+  // steps: the list lives on and is rebuilt by the skin, not by the macro step.
   void compact();
   // Bytes this box holds now (its arrays' capacity).
   std::size_t bytes() const;
@@ -167,7 +168,7 @@ class System {
   bool rigid_free_ = false;
   std::int64_t step_ = 0;
   double time_ = 0;
-  std::int64_t builds_ = 0;  // neighbour-list builds before the last compact()
+  std::int64_t builds_ = 0;  // neighbour-list builds before a list-less checkpoint
   bool valid_ = false;
 };
 

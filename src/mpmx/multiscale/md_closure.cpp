@@ -79,7 +79,10 @@ void read_raw(std::istream& in, T& v) {
 }  // namespace
 
 MdClosureProperties md_closure_properties(const md::PotentialSpec& spec, const units::UnitSystem& u) {
-  return properties(md::fcc_equilibrium(md::Potential(spec)), u);
+  const md::Potential pot(spec);
+  MdClosureProperties r = properties(md::fcc_equilibrium(pot), u);
+  r.cutoff = pot.cutoff();
+  return r;
 }
 
 int MdClosureConfig::md_steps(double dt_continuum) const {
@@ -545,6 +548,7 @@ void MdClosure<Dim>::load(std::istream& in) {
   for (std::size_t g = 0; g < G; ++g) {
     try {
       md::System box = md::System::load(in, pot_, box_options());
+      box.compact();  // as the run keeps it between macro steps
       if (mine(g)) boxes_[g] = std::make_unique<md::System>(std::move(box));
     } catch (const RunError& e) {  // a box the file describes that no run makes
       throw InputError(fmt::format("the MD box of group {} (point {}): {}", g, groups_.members(g).front(), e.what()));
@@ -558,6 +562,7 @@ void MdClosure<Dim>::load(std::istream& in) {
     read_raw(in, q);
     if (!in || q >= n || !groups_.auditor(q)) throw InputError(fmt::format("checkpoint: an auditor {} out of place", q));
     md::System box = md::System::load(in, pot_, box_options());
+    box.compact();
     md::Mat3 s{};
     in.read(reinterpret_cast<char*>(s.data()), sizeof(double) * 9);
     if (mine(groups_.group_of(q))) audits_.insert_or_assign(q, std::move(box)), audit_stress_[q] = s;
@@ -630,6 +635,7 @@ bool MdClosure<Dim>::rebalance(double threshold) {
   for (const auto& [key, box] : unpack(ranks::exchange(bytes))) {
     std::istringstream b(box, std::ios::binary);
     md::System s = md::System::load(b, pot_, box_options());
+    s.compact();
     if (key % 2 == 0) {
       boxes_[key / 2] = std::make_unique<md::System>(std::move(s));
     } else {

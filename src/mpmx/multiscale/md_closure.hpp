@@ -16,8 +16,9 @@
 // from the same state (records, the CFL step, the checks) without a protocol of
 // commands, and the gradients need no scatter. A box's state and random stream depend
 // only on its group's first point, so the results do not depend on the ranks or threads.
-// Between macro steps a box holds only its atoms' state (md::System::compact): the lists
-// and buffers are rebuilt when it is advanced.
+// A box keeps its pair structure between macro steps (md::System::compact frees only the
+// force buffers and packed positions): its neighbour list is rebuilt by the skin
+// criterion, not by the macro step, which at s = 0.1 holds only 10 MD steps.
 #include <array>
 #include <cstdint>
 #include <map>
@@ -65,6 +66,7 @@ struct MdClosureProperties {
   md::FccEquilibrium equilibrium;
   double density = 0.0, modulus = 0.0, sound_speed = 0.0;
   double c12 = 0.0, c44 = 0.0;  // the other cubic constants (continuum units)
+  double cutoff = 0.0;          // the potential's, Angstrom
 };
 MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, const units::UnitSystem& u);
 

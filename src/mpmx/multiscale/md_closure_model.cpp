@@ -32,7 +32,7 @@ material::PointCost MdClosureModel::point_cost(double dt) const {
   material::PointCost c;
   const double n[3] = {double(md.cells), double(md.cells), double(md.cells)};
   constexpr double kClosureBytesPerPoint = 256;  // rotation, group, deviation, stress and shape records
-  c.bytes = md::compact_box_bytes(md.atoms_per_point()) + kClosureBytesPerPoint;
+  c.bytes = md::kept_box_bytes(md.cells, a0, cutoff + md.skin) + kClosureBytesPerPoint;
   // A Cu-like fcc box (a = 3.615 A) reached by an 8 A cutoff plus skin, whole (md/budget's fit).
   c.scratch_bytes = md::box_bytes(n, 3.615, 8.0 + md.skin);
   c.atoms = md.atoms_per_point();
@@ -106,6 +106,8 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
       const auto props = md_closure_properties(md.potential, md.units);
       r->rho = props.density;
       r->c11 = props.modulus;
+      r->a0 = props.equilibrium.lattice_constant;
+      r->cutoff = props.cutoff;
     } catch (const std::exception& e) {
       m.check(false, "potential", e.what());
     }

@@ -13,6 +13,7 @@ namespace mpmx::multiscale {
 struct MdClosureModel final : material::Model {
   MdClosureConfig md;
   double rho = 1.0, c11 = 1.0;   // the unstrained crystal's, continuum units
+  double a0 = 3.615, cutoff = 8.0;  // its lattice constant and the potential's cutoff, Angstrom
 
   std::string name() const override { return "md_closure"; }
   double density() const override { return rho; }
@@ -23,7 +24,7 @@ struct MdClosureModel final : material::Model {
   double uniaxial_modulus() const override { return c11; }
   // A continuum step must be a whole number of MD steps.
   std::string time_step_problem(double dt) const override;
-  // The box of a point as it is kept between macro steps (md/budget's compact box), the
+  // The box of a point as it is kept between macro steps (md/budget's kept box), the
   // closure's own records of the point, and its atom-steps: one box per point, the most
   // sharing can cost (it cannot know the groups before the run). The lists and buffers of
   // a box being advanced are per thread (scratch_bytes).

@@ -234,6 +234,7 @@ void Neighbors::remember(const Atoms& atoms, const Box& box) {
 
 void Neighbors::update_positions(const Atoms& atoms, const Box& box, int threads) {
   // Only the packed copy the kernels read; x, y, z keep the build-time positions.
+  if (xyz.size() != 4 * static_cast<std::size_t>(nall)) xyz.assign(4 * static_cast<std::size_t>(nall), 0.0);
   double* __restrict q = xyz.data();
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (int i = 0; i < nlocal; ++i) {
@@ -249,6 +250,39 @@ void Neighbors::update_positions(const Atoms& atoms, const Box& box, int threads
     q[4 * k + 1] = atoms.y[o] + (b * box.ly + c * box.yz);
     q[4 * k + 2] = atoms.z[o] + c * box.lz;
   }
+}
+
+namespace {
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+template <class T>
+std::size_t capacity_bytes(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+}  // namespace
+
+void Neighbors::shed() {
+  for (auto* v : {&x, &y, &z, &xyz, &bin_x_, &bin_y_, &bin_z_}) release(*v);
+  for (auto* v : {&bin_start_, &bin_atoms_, &bin_key_}) release(*v);
+  release(part_);
+  release(tile_part_);
+  // The ghosts' arrays grew by push_back (up to twice their size): kept at their size.
+  for (auto* v : {&type, &owner}) v->shrink_to_fit();
+  for (auto* v : {&n1, &n2, &n3}) v->shrink_to_fit();
+}
+
+std::size_t Neighbors::bytes() const {
+  std::size_t b = 0;
+  for (const auto* v : {&x, &y, &z, &xyz, &bin_x_, &bin_y_, &bin_z_, &x0_, &y0_, &z0_}) b += capacity_bytes(*v);
+  for (const auto* v : {&type, &owner, &first, &list, &tile_atom, &tile_first, &tile_entry, &tile_list, &share_first,
+                        &share, &bin_start_, &bin_atoms_, &bin_key_})
+    b += capacity_bytes(*v);
+  for (const auto* v : {&n1, &n2, &n3}) b += capacity_bytes(*v);
+  for (const auto& p : part_) b += capacity_bytes(p);
+  for (const auto& p : tile_part_) b += capacity_bytes(p);
+  return b;
 }
 
 void Neighbors::pack() {

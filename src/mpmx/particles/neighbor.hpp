@@ -30,6 +30,14 @@ class Neighbors {
   // True if some pair may have come within the cutoff unseen.
   bool needs_rebuild(const Atoms& atoms, const Box& box, int threads = 1) const;
   bool built() const { return built_; }
+  // Frees what only a build or a step uses (the entries' build-time and packed positions,
+  // the bins, the builders' parts), keeping the list, the ghosts' owners and images and
+  // the build's positions: all that decides the next step's pairs, so a box between
+  // macro steps keeps its list at a third of the bytes (update_positions restores the
+  // packed positions).
+  void shed();
+  // Bytes held now (the arrays' capacity).
+  std::size_t bytes() const;
   // The positions and box of the last build (a checkpoint rebuilds the same list from them).
   const std::vector<double>& x_at_build() const { return x0_; }
   const std::vector<double>& y_at_build() const { return y0_; }

@@ -167,9 +167,9 @@ void add_md_commands(CLI::App& app) {
     config.still = args->still;
     // mpmx md advances one large system: its threaded form (the same bits for any count).
     config.options.threaded = true;
-    config.options.threads = threads_of(args->threads);
     const md::Potential potential(config.potential);
     const md::MdBudget budget = md::estimate_md(config, potential.cutoff());
+    config.options.threads = threads_for(threads_of(args->threads), budget.atoms, kAtomsPerMdThread);
     // Memory always; work unless --force, or when only LAMMPS inputs are written.
     md::check_md_budget(budget, physical_memory_bytes(), args->force || args->lammps_write_only);
     const std::string out = out_dir_of(args->out, args->deck);

@@ -68,6 +68,7 @@ MpmBudget estimate_level(const MpmConfig& c, int ranks, const material::PointCos
   if (cost.atoms > 0) {
     b.md_atoms_per_point = cost.atoms;
     b.md_atoms = b.points * cost.atoms;
+    b.md_bytes_per_atom = cost.bytes / cost.atoms;
     const double mb = cost.bytes * std::ceil(b.points / b.ranks) + cost.scratch_bytes * hardware_threads();
     b.bytes += mb;
     if (mb > pb && mb > nb) b.size_key = cost.size_key;

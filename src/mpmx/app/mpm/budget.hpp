@@ -26,6 +26,7 @@ struct MpmBudget {
   double nodes = 0;        // grid nodes
   double md_atoms_per_point = 0;  // md_closure: atoms of each point's box
   double md_atoms = 0;     // md_closure: atoms of all the points' boxes
+  double md_bytes_per_atom = 0;  // md_closure: bytes a box keeps per atom between macro steps
   double md_atom_steps = 0;  // md_closure: those atoms x (relaxation + MD steps of the run), all ranks
   double md_rate = 0;             // md_closure: the atom-steps a second of one core the work is scaled by
   bool md_rate_measured = false;  // that rate timed on this machine (PointCost), not the typical figure

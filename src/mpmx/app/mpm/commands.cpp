@@ -94,7 +94,7 @@ void add_mpm_commands(CLI::App& app) {
     o.out_dir = out;
     o.quiet = args->quiet;
     o.plot = !args->no_plot;
-    o.threads = args->threads;
+    o.threads = run_threads_of(args->threads);
     o.resume = args->resume;
     o.checkpoint_every = args->checkpoint_every;
     o.stop_after = args->stop_after;
@@ -165,6 +165,9 @@ void add_mpm_commands(CLI::App& app) {
                  budget.points, budget.md_atoms_per_point, budget.md_atom_steps,
                  budget.md_atom_steps / budget.md_rate / 3600.0, budget.md_rate,
                  budget.md_rate_measured ? "one of its boxes timed on this core just now" : "a typical figure");
+    if (budget.md_atom_steps > 0)
+      fmt::print("  each box keeps {:.0f} bytes per atom between macro steps (its atoms and its neighbour list)\n",
+                 budget.md_bytes_per_atom);
     if (!pre.pending.empty()) fmt::print("  {}\n", pre.pending);
     if (!(budget.seconds <= kWorkLimitSeconds) && !args->force)
       fmt::print("  more than a day of work{}: `mpmx run` needs --force; over N MPI ranks it is about 1/N "
