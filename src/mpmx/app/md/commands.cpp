@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/io/run_manifest.hpp"
 #include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/deck_kind.hpp"
 #include "mpmx/app/commands.hpp"
@@ -128,7 +129,7 @@ void add_md_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
     bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false, resume = false,
-         still = false;
+         still = false, overwrite = false;
     int ranks = 1, threads = 0;  // all cores, as run and dpd
     std::int64_t stop_after = 0;
   };
@@ -143,6 +144,7 @@ void add_md_commands(CLI::App& app) {
   md->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   md->add_flag("--resume", args->resume,
                "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit)");
+  md->add_flag("--overwrite", args->overwrite, kOverwriteHelp);
   md->add_flag("--still", args->still,
                "rod decks: the flyer released at rest, the undriven twin of the run, which "
                "tools/plot/dpd_study.py subtracts to leave the wave alone");
@@ -173,16 +175,20 @@ void add_md_commands(CLI::App& app) {
     // Memory always; work unless --force, or when only LAMMPS inputs are written.
     md::check_md_budget(budget, physical_memory_bytes(), args->force || args->lammps_write_only);
     const std::string out = out_dir_of(args->out, args->deck);
+    const io::FolderOwner owner{io::run_owner("md", args->deck), args->overwrite};
     if (args->lammps || args->lammps_write_only) {
       if (!config.jet && !config.bar)
         throw InputError(
             fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", args->deck));
       if (args->resume) throw InputError("--resume continues mpmx's own MD, not a --lammps run");
-      io::run_staged(out, [&](const std::string& dir) {
-        if (config.jet) run_jet_lammps(config, out, dir, args->lammps_write_only, args->ranks);
-        else run_bar_lammps(args->deck, config, out, dir, args->lammps_write_only, args->ranks);
-        return 0;
-      });
+      io::run_staged(
+          out,
+          [&](const std::string& dir) {
+            if (config.jet) run_jet_lammps(config, out, dir, args->lammps_write_only, args->ranks);
+            else run_bar_lammps(args->deck, config, out, dir, args->lammps_write_only, args->ranks);
+            return 0;
+          },
+          owner);
       return;
     }
     RunControlOptions o;
@@ -190,7 +196,7 @@ void add_md_commands(CLI::App& app) {
     o.resume = args->resume;
     o.stop_after = args->stop_after;
     o.out = out;
-    const auto r = run_resumable(out, args->resume,
+    const auto r = run_resumable(out, args->resume, owner,
                                  [&](const std::string& dir) { return md::run_md(config, dir, deck.table(), o); });
     if (r.interrupted)
       throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx md {} --out {} --resume{}",
