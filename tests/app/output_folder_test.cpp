@@ -127,6 +127,62 @@ dump_every = 20
   EXPECT_EQ(r.status, 2) << r.output;
 }
 
+// A 2-D disk against a wall, recorded every 100 steps into vtk/.
+std::string disk(double end) {
+  return kDir.file("disk.toml", fmt::format(R"([case]
+id = "disk"
+[grid]
+dim = 2
+lower = [0.0, 0.0]
+upper = [1.0, 1.0]
+cells = [20, 20]
+[particles]
+per_cell = [2, 2]
+[[body]]
+shape = "circle"
+center = [0.3, 0.5]
+radius = 0.2
+velocity = [-0.1, 0.0]
+[scheme]
+name = "mpm"
+[material]
+model = "linear_elastic"
+density = 1000.0
+youngs_modulus = 1000.0
+poisson_ratio = 0.3
+[boundary]
+x_lower = {{ type = "fixed" }}
+[time]
+dt = 0.01
+end = {}
+[output]
+every = 100
+)",
+                                            end));
+}
+
+// `--out .` in the user's folder: a rerun of the deck, shorter, replaces the run's
+// vtk/ frames (the earlier run's later frames go) and keeps the user's file in vtk/.
+TEST(OutputFolder, ARerunReplacesOnlyTheFilesMpmxWrote) {
+  const fs::path here = kDir / "dot";
+  fs::create_directories(here / "vtk");
+  std::ofstream(here / "vtk" / "mine.txt") << "mine";
+  std::ofstream(here / "notes.txt") << "mine";
+  const std::string run = fmt::format("cd \"{}\" && \"{}\" run \"{}\" {} --out .", here.string(), MPMX_BINARY, disk(5.0), kRun);
+  ASSERT_EQ(shell(run), 0);
+  std::size_t frames = 0;
+  for (const auto& e : fs::directory_iterator(here / "vtk")) frames += e.path().extension() == ".vtu";
+  ASSERT_GE(frames, 5u);
+  disk(2.0);
+  ASSERT_EQ(shell(run), 0);
+  std::size_t after = 0;
+  for (const auto& e : fs::directory_iterator(here / "vtk")) after += e.path().extension() == ".vtu";
+  EXPECT_LT(after, frames);
+  EXPECT_GE(after, 2u);
+  EXPECT_EQ(slurp(here / "vtk" / "mine.txt"), "mine");
+  EXPECT_EQ(slurp(here / "notes.txt"), "mine");
+}
+
 // Stopped after each step of `stops` in turn (--stop-after: a checkpoint at that step,
 // exit 130), resumed each time, then resumed to the end: the whole run's files.
 void stop_at(const std::vector<int>& stops) {
