@@ -47,7 +47,8 @@ inline std::string physics_of_record(const std::string& json) {
   std::string out;
   for (std::string line; std::getline(in, line);) {
     bool clock = false;
-    for (const char* key : {"\"wall_seconds\"", "\"run_seconds\"", "_per_second\"", "\"threads\"", "\"peak_memory_bytes\""})
+    for (const char* key :
+         {"\"wall_seconds\"", "\"run_seconds\"", "_per_second\"", "\"threads\"", "\"peak_memory_bytes\""})
       clock = clock || line.find(key) != std::string::npos;
     if (!clock) out += line + "\n";
   }

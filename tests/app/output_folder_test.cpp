@@ -168,7 +168,8 @@ TEST(OutputFolder, ARerunReplacesOnlyTheFilesMpmxWrote) {
   fs::create_directories(here / "vtk");
   std::ofstream(here / "vtk" / "mine.txt") << "mine";
   std::ofstream(here / "notes.txt") << "mine";
-  const std::string run = fmt::format("cd \"{}\" && \"{}\" run \"{}\" {} --out .", here.string(), MPMX_BINARY, disk(5.0), kRun);
+  const std::string run =
+      fmt::format("cd \"{}\" && \"{}\" run \"{}\" {} --out .", here.string(), MPMX_BINARY, disk(5.0), kRun);
   ASSERT_EQ(shell(run), 0);
   std::size_t frames = 0;
   for (const auto& e : fs::directory_iterator(here / "vtk")) frames += e.path().extension() == ".vtu";

@@ -31,7 +31,8 @@ RunControl::RunControl(std::string dir, std::string_view kind, const toml::table
 
 void RunControl::resume(std::uint64_t count, const std::function<void(CheckpointIn&)>& read) {
   const std::string path = checkpoint_path(dir_);
-  std::istringstream f(io::read_checked(path, {kind_, kCheckpointVersion, io::text_hash(deck_text_), count}), std::ios::binary);
+  std::istringstream f(io::read_checked(path, {kind_, kCheckpointVersion, io::text_hash(deck_text_), count}),
+                       std::ios::binary);
   CheckpointIn in(f, path, io::kCheckedHeaderBytes);
   if (in.text() != deck_text_)
     throw InputError(fmt::format("{} was written for another deck (the deck changed since); run afresh "

@@ -77,8 +77,9 @@ StagedDir::StagedDir(std::string out, Mode mode, FolderOwner owner)
     const auto held = read_manifest(out_);
     // An owner not said (a caller of the library) is no one's: it neither refuses nor is refused.
     if (held && !held->owner.empty() && !owner_.run.empty() && held->owner != owner_.run && !owner_.overwrite)
-      throw InputError(fmt::format("--out {} holds the results of another run (another deck or command: {}); this is {}: give another --out, "
-                                   "or --overwrite to replace that run's files (only the files mpmx wrote there go)",
+      throw InputError(fmt::format("--out {} holds the results of another run (another deck or command: {}); this "
+                                   "is {}: give another --out, or --overwrite to replace that run's files (only "
+                                   "the files mpmx wrote there go)",
                                    short_path(out_), held->owner, owner_.run));
     if (mode_ == Mode::in_place) {
       // A checkpoint or table a killed run left half-written beside its own.

@@ -197,8 +197,8 @@ TEST(DpdInterrupt, StoppedAgainAndAgainResumesToTheSameFiles) {
     const fs::path cut = kDpdDir / fmt::format("again_{}_{}", deck == rod ? "rod" : "crystal", stops.size());
     std::string resume;
     for (int s : stops) {
-      const auto r =
-          run_cli(fmt::format("dpd '{}' --quiet --no-plot --out '{}' --stop-after {}{}", deck, cut.string(), s, resume));
+      const auto r = run_cli(
+          fmt::format("dpd '{}' --quiet --no-plot --out '{}' --stop-after {}{}", deck, cut.string(), s, resume));
       ASSERT_EQ(r.status, 130) << r.output;
       resume = " --resume";
     }

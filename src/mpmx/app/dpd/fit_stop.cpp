@@ -16,7 +16,8 @@ namespace mpmx::app::dpd {
 
 FitStop::FitStop(std::string deck_file, std::string out, const toml::table& deck_echo, std::string deck_text,
                  std::size_t densities, std::string owner)
-    : deck_file_(std::move(deck_file)), out_(std::move(out)), deck_text_(std::move(deck_text)), owner_(std::move(owner)),
+    : deck_file_(std::move(deck_file)), out_(std::move(out)), deck_text_(std::move(deck_text)),
+      owner_(std::move(owner)),
       densities_(densities), deck_echo_(deck_echo), guard_(true) {
   watcher_ = std::thread([this] {
     while (!done_.load()) {

@@ -2,6 +2,8 @@
 // an MD-only run (issue 3); for a bar deck, optionally its reference through LAMMPS.
 // `--check` does every validation the run does (deck, potential file and its elements,
 // memory and work estimates) and writes nothing; the run creates DIR only after them.
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -78,7 +80,7 @@ void run_jet_lammps(const md::MdConfig& c, const std::string& out, const std::st
   const auto samples = md::read_lammps_bar_stress((dir / md::kLammpsJetStress).string(), c.dt, grid.nx * grid.ny);
   const fs::path csv = fs::path(stage) / "jet_stress_lammps.csv";
   std::ofstream f(csv);
-  if (!f) throw RunError(fmt::format("cannot write {}", csv.string()));
+  if (!f) throw SystemError(fmt::format("cannot write {}: {}", csv.string(), std::strerror(errno)));
   f << "step,time_ps,ix,iy,x_A,y_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n";
   for (const auto& s : samples)
     for (int k = 0; k < grid.nx * grid.ny; ++k) {
@@ -87,7 +89,7 @@ void run_jet_lammps(const md::MdConfig& c, const std::string& out, const std::st
       f << fmt::format("{},{:.6f},{},{},{:.6g},{:.6g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", s.step, s.time_ps,
                        ix, iy, grid.x_centre(ix), grid.y_centre(iy), m[0], m[4], m[8], m[1], m[2], m[5]);
     }
-  if (!f) throw RunError(fmt::format("error writing {}", csv.string()));
+  if (!f) throw SystemError(fmt::format("error writing {}: {}", csv.string(), std::strerror(errno)));
   fmt::print("{} atoms, {} steps through LAMMPS (`{}` in {}) -> {}\n", sys.atoms().size(), c.steps, r.command,
              shown.string(), (fs::path(out) / "jet_stress_lammps.csv").string());
 }

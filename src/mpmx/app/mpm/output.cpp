@@ -81,7 +81,8 @@ void Output::close() {
     const int err = errno;
     const bool closed = std::fclose(*f) == 0;
     *f = nullptr;
-    if (!ok || !closed) throw SystemError(fmt::format("writing {}/{}: {}", dir_, name, std::strerror(ok ? errno : err)));
+    if (!ok || !closed)
+      throw SystemError(fmt::format("writing {}/{}: {}", dir_, name, std::strerror(ok ? errno : err)));
   }
 }
 

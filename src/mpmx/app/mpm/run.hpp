@@ -18,7 +18,7 @@ namespace mpmx::app {
 
 struct RunOptions {
   std::string out_dir;   // "" = write nothing (tests)
-  io::FolderOwner owner;  // who writes out_dir (io/staged_dir.hpp): another run's folder is refused unless it may overwrite
+  io::FolderOwner owner;  // who writes out_dir: another run's folder is refused unless overwrite (io/staged_dir.hpp)
   bool quiet = false;    // no progress line
   bool plot = true;      // call tools/plot when the deck allows and matplotlib is present
   int threads = 0;       // the whole step (0: the MD boxes on all cores, the rest on one)
