@@ -82,10 +82,12 @@ StagedDir::StagedDir(std::string out, Mode mode, FolderOwner owner)
                                    "the files mpmx wrote there go)",
                                    short_path(out_), held->owner, owner_.run));
     if (mode_ == Mode::in_place) {
-      // A checkpoint or table a killed run left half-written beside its own.
-      for (const auto& f : files_under(out_))
-        if (temporary(f) && (!held || held->files.count(f.substr(0, f.size() - 4)) || f == "checkpoint.bin.tmp"))
+      // A file a killed run was writing whole (NAME.tmp of a file of its own): never a result.
+      for (const auto& f : files_under(out_)) {
+        const std::string name = f.substr(0, f.size() - 4);
+        if (temporary(f) && ((held && held->files.count(name)) || name == "checkpoint.bin" || name == "run.json"))
           fs::remove(fs::path(out_) / f, ec);
+      }
       before_ = files_under(out_);
       return;
     }
@@ -148,11 +150,12 @@ void StagedDir::publish() {
 
 void record_written(const std::string& out, const std::string& owner, const std::set<std::string>& files) {
   const auto held = read_manifest(out);
+  const bool other = held && !held->owner.empty() && held->owner != owner;
   RunManifest m{owner, {}};
-  if (held && held->owner == owner) m.files = held->files;
+  if (held && !other) m.files = held->files;
   m.files.insert(files.begin(), files.end());
   write_manifest(out, m);
-  if (held && held->owner != owner)
+  if (other)
     for (const auto& f : held->files)
       if (!files.count(f)) remove_file(out, f);
 }
