@@ -70,7 +70,8 @@ void add_dpd_commands(CLI::App& app) {
   dpd->add_flag("--quiet", args->quiet, "no progress line");
   dpd->add_flag("--overwrite", args->overwrite, kOverwriteHelp);
   dpd->add_flag("--resume", args->resume,
-                "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit)");
+                "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit; refused when "
+                "the deck or a file it reads changed since)");
   // For tests: stop as if interrupted at the first record at or past step N.
   dpd->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   dpd->add_flag("--no-plot", args->no_plot, "no figures (tools/plot/dpd_study.py) after the run");
@@ -113,7 +114,8 @@ void add_dpd_commands(CLI::App& app) {
   fit->add_flag("--check", fargs->check, "validate the deck and exit");
   fit->add_flag("--overwrite", fargs->overwrite, kOverwriteHelp);
   fit->add_flag("--resume", fargs->resume,
-                "continue a stopped fit from OUT/checkpoint.bin (its last finished stage; bit-for-bit)");
+                "continue a stopped fit from OUT/checkpoint.bin (its last finished stage; bit-for-bit; refused when "
+                "the deck or a file it reads changed since)");
   // For tests: stop as if interrupted once so many stages are finished.
   fit->add_option("--stop-after", fargs->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   fit->callback([fargs] {

@@ -145,7 +145,8 @@ void add_md_commands(CLI::App& app) {
   md->add_flag("--quiet", args->quiet, "no progress line");
   md->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   md->add_flag("--resume", args->resume,
-               "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit)");
+               "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit; refused when "
+               "the deck or a file it reads changed since)");
   md->add_flag("--overwrite", args->overwrite, kOverwriteHelp);
   md->add_flag("--still", args->still,
                "rod decks: the flyer released at rest, the undriven twin of the run, which "
