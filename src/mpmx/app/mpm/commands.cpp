@@ -70,7 +70,8 @@ void add_mpm_commands(CLI::App& app) {
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   run->add_flag("--resume", args->resume,
-                "continue from OUT/checkpoint.bin (bit-for-bit; refused when the deck or a file it reads changed since)");
+                "continue from OUT/checkpoint.bin (bit-for-bit; refused when the deck or a file it reads changed "
+                "since)");
   run->add_flag("--overwrite", args->overwrite, kOverwriteHelp);
   run->add_option("--checkpoint-every", args->checkpoint_every, "write OUT/checkpoint.bin every N steps")
       ->check(CLI::NonNegativeNumber);
