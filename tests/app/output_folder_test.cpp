@@ -21,6 +21,7 @@
 #include <fmt/format.h>
 
 #include "app/interrupt_util.hpp"
+#include "app/mpm/disk_on_wall.hpp"
 #include "cli_util.hpp"
 #include "mpmx/io/checked_file.hpp"
 #include "mpmx/io/folder_lock.hpp"
@@ -127,38 +128,11 @@ dump_every = 20
   EXPECT_EQ(r.status, 2) << r.output;
 }
 
-// A 2-D disk against a wall, recorded every 100 steps into vtk/.
-std::string disk(double end) {
-  return kDir.file("disk.toml", fmt::format(R"([case]
-id = "disk"
-[grid]
-dim = 2
-lower = [0.0, 0.0]
-upper = [1.0, 1.0]
-cells = [20, 20]
-[particles]
-per_cell = [2, 2]
-[[body]]
-shape = "circle"
-center = [0.3, 0.5]
-radius = 0.2
-velocity = [-0.1, 0.0]
-[scheme]
-name = "mpm"
-[material]
-model = "linear_elastic"
-density = 1000.0
-youngs_modulus = 1000.0
-poisson_ratio = 0.3
-[boundary]
-x_lower = {{ type = "fixed" }}
-[time]
-dt = 0.01
-end = {}
-[output]
-every = 100
-)",
-                                            end));
+// The 2-D disk against a wall (recorded every 100 steps into vtk/), run to `end`.
+std::string disk(const std::string& end) {
+  std::string t = mpmx::test::kDiskOnWall;
+  t.replace(t.find("end = 5.0"), 9, "end = " + end);
+  return kDir.file("disk.toml", t);
 }
 
 // `--out .` in the user's folder: a rerun of the deck, shorter, replaces the run's
@@ -169,12 +143,12 @@ TEST(OutputFolder, ARerunReplacesOnlyTheFilesMpmxWrote) {
   std::ofstream(here / "vtk" / "mine.txt") << "mine";
   std::ofstream(here / "notes.txt") << "mine";
   const std::string run =
-      fmt::format("cd \"{}\" && \"{}\" run \"{}\" {} --out .", here.string(), MPMX_BINARY, disk(5.0), kRun);
+      fmt::format("cd \"{}\" && \"{}\" run \"{}\" {} --out .", here.string(), MPMX_BINARY, disk("5.0"), kRun);
   ASSERT_EQ(shell(run), 0);
   std::size_t frames = 0;
   for (const auto& e : fs::directory_iterator(here / "vtk")) frames += e.path().extension() == ".vtu";
   ASSERT_GE(frames, 5u);
-  disk(2.0);
+  disk("2.0");
   ASSERT_EQ(shell(run), 0);
   std::size_t after = 0;
   for (const auto& e : fs::directory_iterator(here / "vtk")) after += e.path().extension() == ".vtu";
