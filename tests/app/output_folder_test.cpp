@@ -77,9 +77,11 @@ TEST(OutputFolder, ASecondRunIntoALockedFolderIsRefusedBeforeItWrites) {
     EXPECT_EQ(slurp(out / ".staging" / "energy.csv"), "the first run's");  // its staging untouched
     EXPECT_FALSE(fs::exists(out / "run.json"));
   }
+  EXPECT_FALSE(fs::exists(out / ".mpmx-lock"));  // the lock's file goes with its holder
   const auto r = run_cli(fmt::format("run '{}' {} --out '{}'", kWave, kRun, out.string()));
   EXPECT_EQ(r.status, 0) << r.output;
   EXPECT_FALSE(fs::exists(out / ".staging"));
+  EXPECT_FALSE(fs::exists(out / ".mpmx-lock"));
 }
 
 TEST(OutputFolder, AnotherRunsFolderIsRefusedUnlessOverwriteThenItsFilesAllGo) {

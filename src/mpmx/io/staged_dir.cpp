@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The regular files under `dir`, relative, the staging folder and the manifest aside.
+// The regular files under `dir`, relative, the staging folder, the list and the lock aside.
 std::set<std::string> files_under(const fs::path& dir) {
   std::set<std::string> files;
   std::error_code ec;
@@ -22,7 +22,7 @@ std::set<std::string> files_under(const fs::path& dir) {
   for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
        it.increment(ec)) {
     const std::string rel = fs::relative(it->path(), dir, ec).generic_string();
-    if (rel == ".staging" || rel == kManifestName) {
+    if (rel == ".staging" || rel == kManifestName || rel == FolderLock::kName) {
       if (it->is_directory()) it.disable_recursion_pending();
       continue;
     }

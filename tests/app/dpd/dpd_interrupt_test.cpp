@@ -244,6 +244,7 @@ TEST(DpdInterrupt, FitDpdStopsAtOnceLeavingOutAsItWas) {
   EXPECT_EQ(slurp(out / "earlier.csv"), "an earlier run's table\n");
   EXPECT_TRUE(fs::is_directory(out / ".staging"));
   EXPECT_FALSE(fs::exists(out / "isotherm.csv"));
+  EXPECT_FALSE(fs::exists(out / ".mpmx-lock"));  // gone with the run that held it
 }
 
 // D0 with [elastic] made small: 3 densities of 108 atoms, 108 mesoparticles, 2 rounds.

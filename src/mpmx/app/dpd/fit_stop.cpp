@@ -9,6 +9,7 @@
 
 #include "mpmx/core/exit_codes.hpp"
 #include "mpmx/io/atomic_file.hpp"
+#include "mpmx/io/folder_lock.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/io/staged_dir.hpp"
 
@@ -76,6 +77,8 @@ void FitStop::stop() {
   std::fputs(msg.c_str(), stderr);
   std::fflush(stdout);
   std::fflush(stderr);
+  // _Exit runs no destructor: the folder's lock file goes here, still held (as ~FolderLock).
+  std::filesystem::remove(std::filesystem::path(out_) / io::FolderLock::kName, ec);
   std::_Exit(exit_code::interrupted);
 }
 
