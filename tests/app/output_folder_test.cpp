@@ -252,7 +252,9 @@ TEST(OutputFolder, AWriteTheSystemRefusesIsSaidAndLosesNothing) {
                               MPMX_BINARY, kWave, kRun, done.string(), done.string())),
             1);
   log = slurp(done.string() + ".log");
-  EXPECT_NE(log.find("writing " + (done / ".staging" / "checkpoint.bin").string() + ": "), std::string::npos) << log;
+  EXPECT_NE(log.find("writing " + (done / ".staging" / "checkpoint.bin").string() + ": write failed: "),
+            std::string::npos)
+      << log;
   EXPECT_NE(log.find("File too large"), std::string::npos) << log;
   EXPECT_EQ(snapshot(done), finished);
   // A resumed run the disk stops keeps its checkpoint, and resumes once there is room.

@@ -26,6 +26,8 @@ void AtomicWriter::write(const void* data, std::size_t bytes) {
 }
 
 void AtomicWriter::overwrite(std::size_t offset, std::string_view s) {
+  // The seek flushes what is buffered: a full disk said as the write it is.
+  if (std::fflush(f_) != 0) fail("write failed");
   if (std::fseek(f_, static_cast<long>(offset), SEEK_SET) != 0) fail("seek failed");
   write(s);
   if (std::fseek(f_, 0, SEEK_END) != 0) fail("seek failed");
