@@ -41,11 +41,17 @@ inline int signal_when(const std::string& command, const std::string& table, int
 }
 
 // run.json without the figures of the wall clock and the machine (they differ between
-// any two runs) and without the threads (a resumed run may take another count).
+// any two runs: the continuum's "phases" object of seconds too) and without the threads
+// (a resumed run may take another count).
 inline std::string physics_of_record(const std::string& json) {
   std::istringstream in(json);
   std::string out;
+  bool in_phases = false;
   for (std::string line; std::getline(in, line);) {
+    if (in_phases || line.find("\"phases\"") != std::string::npos) {
+      in_phases = line.find('}') == std::string::npos;
+      continue;
+    }
     bool clock = false;
     for (const char* key :
          {"\"wall_seconds\"", "\"run_seconds\"", "_per_second\"", "\"threads\"", "\"peak_memory_bytes\""})

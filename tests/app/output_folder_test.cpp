@@ -193,6 +193,25 @@ TEST(OutputFolder, StoppedOnceTwiceOrThriceAtAnyStepResumesToTheWholeRun) {
     stop_at(stops);
 }
 
+// The 2-D disk (records every 100 steps into vtk/ and particles.pvd) stopped between
+// records twice, then on one: the whole run's files.
+TEST(OutputFolder, The2DRunStoppedAgainAndAgainResumesToTheWholeRun) {
+  const std::string deck = disk("2.0");
+  const fs::path whole = kDir / "disk_whole", cut = kDir / "disk_cut";
+  auto r = run_cli(fmt::format("run '{}' {} --out '{}'", deck, kRun, whole.string()));
+  ASSERT_EQ(r.status, 0) << r.output;
+  ASSERT_TRUE(fs::exists(whole / "vtk"));
+  std::string resume;
+  for (int s : {50, 60, 100}) {
+    r = run_cli(fmt::format("run '{}' {} --out '{}' --stop-after {}{}", deck, kRun, cut.string(), s, resume));
+    ASSERT_EQ(r.status, 130) << r.output;
+    resume = " --resume";
+  }
+  r = run_cli(fmt::format("run '{}' {} --out '{}' --resume", deck, kRun, cut.string()));
+  ASSERT_EQ(r.status, 0) << r.output;
+  mpmx::test::expect_same_folders(whole, cut);
+}
+
 // GNU timeout sends SIGTERM to the run and then to its process group: the second is the
 // same request, so the run still ends with its checkpoint (exit 130, timeout's 124).
 TEST(OutputFolder, TheTwoSigtermsOfTimeoutLeaveACheckpointThatResumes) {
