@@ -1,6 +1,7 @@
 // mpmx: material point method, molecular dynamics, and their coupling.
 // Every command ends with one exit status from core/exit_codes.hpp, and every message is
 // printed once, here: CLI11's errors, InputError, RunError, Interrupted, and anything else.
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -90,9 +91,10 @@ int run(int argc, char** argv) {
            mpmx::md::eam_isa_summary() + "\nMPI: " + mpmx::ranks::library();
   });
   app.require_subcommand(1);
-  app.footer("Exit status: 0 done, 1 internal error, 2 bad input, 3 run stopped by the physics (partial "
-             "result written), 130 interrupted by Ctrl-C or SIGTERM (a checkpoint written: --resume continues; fit-dpd "
-             "from its last finished stage).");
+  app.footer("Exit status: 0 done, 1 the machine failed (a write refused: disk full, read-only; the earlier results "
+             "kept) or an internal error, 2 bad input (also an --out another run holds or owns), 3 run stopped by the "
+             "physics (partial result written), 130 interrupted by Ctrl-C or SIGTERM (a checkpoint written: --resume "
+             "continues; fit-dpd from its last finished stage; a third signal kills at once).");
   mpmx::app::add_mpm_commands(app);
   mpmx::app::add_md_commands(app);
   mpmx::app::add_dpd_commands(app);
@@ -141,6 +143,10 @@ int run(int argc, char** argv) {
     return finish(code::bad_input, fmt::format("mpmx: input error:\n{}\n", e.what()));
   } catch (const mpmx::RunError& e) {
     return finish(code::stopped, fmt::format("mpmx: run stopped: {}\n", e.what()));
+  } catch (const mpmx::SystemError& e) {
+    // A write the machine refused (disk full, read-only, the folder gone): the earlier
+    // results and the last checkpoint are as they were.
+    return finish(code::internal, fmt::format("mpmx: the file system failed: {}\n", e.what()));
   } catch (const mpmx::Interrupted& e) {
     return finish(code::interrupted, fmt::format("\nmpmx: interrupted: {}\n", e.what()));
   } catch (const std::bad_alloc&) {
@@ -166,6 +172,9 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   mpmx::wait_passively(argc, argv);  // before MPI or OpenMP start: it may restart the process
+  // Past a file size limit (ulimit -f) a write fails with EFBIG and is reported as the
+  // machine's failure, instead of the signal killing the run with no word.
+  std::signal(SIGXFSZ, SIG_IGN);
   mpmx::ranks::Session mpi(argc, argv);  // MPI only when started by an MPI launcher
   return run(argc, argv);
 }

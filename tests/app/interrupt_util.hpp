@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -40,13 +41,20 @@ inline int signal_when(const std::string& command, const std::string& table, int
 }
 
 // run.json without the figures of the wall clock and the machine (they differ between
-// any two runs) and without the threads (a resumed run may take another count).
+// any two runs: the continuum's "phases" object of seconds too) and without the threads
+// (a resumed run may take another count).
 inline std::string physics_of_record(const std::string& json) {
   std::istringstream in(json);
   std::string out;
+  bool in_phases = false;
   for (std::string line; std::getline(in, line);) {
+    if (in_phases || line.find("\"phases\"") != std::string::npos) {
+      in_phases = line.find('}') == std::string::npos;
+      continue;
+    }
     bool clock = false;
-    for (const char* key : {"\"wall_seconds\"", "\"run_seconds\"", "_per_second\"", "\"threads\""})
+    for (const char* key :
+         {"\"wall_seconds\"", "\"run_seconds\"", "_per_second\"", "\"threads\"", "\"peak_memory_bytes\""})
       clock = clock || line.find(key) != std::string::npos;
     if (!clock) out += line + "\n";
   }
@@ -64,6 +72,15 @@ inline std::vector<std::string> files_of(const std::filesystem::path& dir) {
   }
   std::sort(files.begin(), files.end());
   return files;
+}
+
+// Every file under `dir`, the hidden ones too (relative name -> bytes): a folder as it
+// was, to compare with itself after a run that must not touch it.
+inline std::map<std::string, std::string> snapshot(const std::filesystem::path& dir) {
+  std::map<std::string, std::string> m;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) m[std::filesystem::relative(e.path(), dir).string()] = slurp(e.path());
+  return m;
 }
 
 // Every file of the uninterrupted run `whole` is in the resumed run `cut`, the same bytes

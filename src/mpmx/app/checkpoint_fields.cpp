@@ -1,11 +1,13 @@
 #include "mpmx/app/checkpoint_fields.hpp"
 
+#include <filesystem>
 #include <istream>
 #include <ostream>
 
 #include <fmt/format.h>
 
 #include "mpmx/core/binary.hpp"
+#include "mpmx/core/input_files.hpp"
 
 namespace mpmx::app {
 
@@ -34,6 +36,15 @@ void CheckpointOut::marks(const TableMarks& m) {
   for (const auto& [name, bytes] : m) {
     text(name);
     integer(bytes);
+  }
+}
+
+void CheckpointOut::inputs() {
+  const auto& files = input_files();
+  integer(static_cast<std::int64_t>(files.size()));
+  for (const auto& [path, digest] : files) {
+    text(path);
+    integer(static_cast<std::int64_t>(digest));
   }
 }
 
@@ -116,6 +127,26 @@ TableMarks CheckpointIn::marks() {
     m[name] = bytes;
   }
   return m;
+}
+
+void CheckpointIn::check_inputs() {
+  const long long at_count = offset();
+  const std::int64_t count = integer();
+  if (count < 0) throw refuse(at_count, fmt::format("an input file count of {}", count));
+  for (std::int64_t k = 0; k < count; ++k) {
+    const std::string path = text();
+    const auto pinned = static_cast<std::uint64_t>(integer());
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throw InputError(fmt::format("cannot resume from {}: the run read {}, which is no longer there; restore it, "
+                                   "or run afresh without --resume",
+                                   name_, path));
+    if (const std::uint64_t now = file_digest(path); now != pinned)
+      throw InputError(fmt::format("cannot resume from {}: {} changed since the checkpoint was written (digest "
+                                   "{:016x}, now {:016x}); a resumed run on other inputs would mix two runs: restore "
+                                   "the file, or run afresh without --resume",
+                                   name_, path, pinned, now));
+  }
 }
 
 void CheckpointIn::end() {

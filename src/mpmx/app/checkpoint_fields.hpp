@@ -3,7 +3,8 @@
 // integers, texts, number lists and the run's table lengths, written in order and read
 // back without trusting a byte: every count is checked against the bytes left, and a
 // refusal names the file, the byte and the reason (InputError, exit status 2). Every
-// resumable command's checkpoint (`run`, `md`, `dpd`) is made of them.
+// resumable command's checkpoint (`run`, `md`, `dpd`, `fit-dpd`) is made of them: the
+// deck's text, the input files' digests, then the command's own state.
 #include <cstdint>
 #include <iosfwd>
 #include <map>
@@ -30,6 +31,8 @@ class CheckpointOut {
   // Rows of numbers (each row's length first).
   void rows(const std::vector<std::vector<double>>& v);
   void marks(const TableMarks& m);
+  // The input files read so far and their digests (core/input_files.hpp).
+  void inputs();
   std::ostream& stream() { return out_; }
 
  private:
@@ -49,6 +52,9 @@ class CheckpointIn {
   std::vector<std::vector<double>> rows();
   // Table names are refused unless they name a file of the run folder itself.
   TableMarks marks();
+  // The input files the checkpoint pinned: refused (naming the file) when one is gone or
+  // its bytes changed since, for --resume would then mix two runs' inputs.
+  void check_inputs();
   // Refused unless the whole payload was read.
   void end();
   std::istream& stream() { return in_; }

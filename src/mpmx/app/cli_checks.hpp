@@ -23,6 +23,11 @@ CLI::Validator non_empty_path();
 // Every command's --out when none is given: runs/<deck name>.
 std::string out_dir_of(const std::string& out, const std::string& deck);
 
+// The help of every writing command's --overwrite (io/staged_dir.hpp).
+inline constexpr const char* kOverwriteHelp =
+    "replace the results of another run (another deck or command) in --out: that run's files all go, and only "
+    "the files mpmx wrote there (without it such a folder is refused)";
+
 // Every command's --threads: 0 (not given) is every core, and more than the cores is the
 // cores (a thread waiting for a core only slows the others; results are the same on any
 // count, so the count only decides speed).

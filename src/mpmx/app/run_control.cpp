@@ -12,6 +12,9 @@ namespace mpmx::app {
 
 namespace {
 
+// 2: the input files' digests after the deck's text.
+constexpr std::uint32_t kCheckpointVersion = 2;
+
 std::string text_of(const toml::table& deck) {
   std::ostringstream ss;
   ss << deck;
@@ -28,12 +31,14 @@ RunControl::RunControl(std::string dir, std::string_view kind, const toml::table
 
 void RunControl::resume(std::uint64_t count, const std::function<void(CheckpointIn&)>& read) {
   const std::string path = checkpoint_path(dir_);
-  std::istringstream f(io::read_checked(path, {kind_, 1, io::text_hash(deck_text_), count}), std::ios::binary);
+  std::istringstream f(io::read_checked(path, {kind_, kCheckpointVersion, io::text_hash(deck_text_), count}),
+                       std::ios::binary);
   CheckpointIn in(f, path, io::kCheckedHeaderBytes);
   if (in.text() != deck_text_)
     throw InputError(fmt::format("{} was written for another deck (the deck changed since); run afresh "
                                  "without --resume",
                                  path));
+  in.check_inputs();
   read(in);
   TableMarks marks = in.marks();
   in.end();
@@ -45,9 +50,10 @@ bool RunControl::stop_due(std::int64_t step) const {
 }
 
 void RunControl::checkpoint(std::uint64_t count, const std::function<void(CheckpointOut&)>& write) {
-  io::CheckedWriter file(checkpoint_path(dir_), {kind_, 1, io::text_hash(deck_text_), count});
+  io::CheckedWriter file(checkpoint_path(dir_), {kind_, kCheckpointVersion, io::text_hash(deck_text_), count});
   CheckpointOut w(file.stream());
   w.text(deck_text_);
+  w.inputs();
   write(w);
   w.marks(tables_->marks());
   file.commit();
@@ -56,7 +62,8 @@ void RunControl::checkpoint(std::uint64_t count, const std::function<void(Checkp
 
 std::string RunControl::shown_checkpoint() const { return checkpoint_path(o_.out.empty() ? dir_ : o_.out); }
 
-void RunControl::finished() const {
+void RunControl::finished() {
+  tables_->marks();  // a table the disk cut short fails the run here, not silently
   std::error_code ec;
   std::filesystem::remove(checkpoint_path(dir_), ec);
 }

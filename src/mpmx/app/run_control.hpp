@@ -50,8 +50,9 @@ class RunControl {
   bool interrupted() const { return interrupted_; }
   // Where run.json says the checkpoint is (OUT/checkpoint.bin).
   std::string shown_checkpoint() const;
-  // A run that completed removes the checkpoint it resumed from.
-  void finished() const;
+  // A run that completed checks its tables were written whole and removes the checkpoint
+  // it resumed from.
+  void finished();
 
  private:
   std::string dir_, kind_, deck_text_;

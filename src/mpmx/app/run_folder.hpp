@@ -2,7 +2,8 @@
 // Where a resumable run (`run`, `md`, `dpd`) writes: a fresh run in OUT/.staging
 // (io/staged_dir.hpp), moved into OUT once it ends (completed, stopped by the physics or
 // interrupted with its checkpoint); a resumed run where its checkpoint lies (OUT, or the
-// staging folder of a run that was killed before it ended). Under MPI the ranks agree on
+// staging folder of a run that was killed before it ended). Either way the run holds OUT's
+// lock for its life. Under MPI the ranks agree on
 // it after all have looked, before rank 0 (the only writer) touches the folder.
 #include <optional>
 #include <string>
@@ -21,8 +22,9 @@ struct RunFolder {
   std::string dir;
 
   // `out` "": a run that writes nothing (tests). `resume`: OUT's checkpoint must exist.
-  RunFolder(const std::string& out, bool resume);
-  // Moves a staged run's files into OUT (no-op for a run resumed in OUT).
+  // The folder is locked (and its owner checked) until the RunFolder goes.
+  RunFolder(const std::string& out, bool resume, io::FolderOwner owner = {});
+  // Moves a staged run's files into OUT (for a run resumed in OUT: records its new files).
   void publish() {
     if (stage) stage->publish();
   }
@@ -32,8 +34,8 @@ struct RunFolder {
 // it (RunError: a partial result, its message then naming `out`); anything else leaves
 // `out` as it was. One process (md, dpd).
 template <class F>
-auto run_resumable(const std::string& out, bool resume, F&& run) {
-  RunFolder folder(out, resume);
+auto run_resumable(const std::string& out, bool resume, io::FolderOwner owner, F&& run) {
+  RunFolder folder(out, resume, std::move(owner));
   try {
     auto r = run(folder.dir);
     folder.publish();

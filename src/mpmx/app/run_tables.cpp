@@ -1,5 +1,7 @@
 #include "mpmx/app/run_tables.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -20,21 +22,22 @@ std::ofstream& RunTables::open(const std::string& name, std::string_view header)
       throw InputError(fmt::format("cannot resume {}: it holds {} bytes, the checkpoint recorded {}", path,
                                    ec ? 0 : size, it->second));
     fs::resize_file(path, static_cast<std::uintmax_t>(it->second), ec);
-    if (ec) throw RunError(fmt::format("cannot resume {}: {}", path, ec.message()));
+    if (ec) throw SystemError(fmt::format("cannot resume {}: {}", path, ec.message()));
     f.open(path, std::ios::binary | std::ios::app);
   } else {
     f.open(path, std::ios::binary | std::ios::trunc);
     f << header;
   }
-  if (!f) throw RunError(fmt::format("cannot write {}", path));
+  if (!f) throw SystemError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
   return f;
 }
 
 TableMarks RunTables::marks() {
-  TableMarks m;
+  // A table not opened since the resume keeps its checkpoint's length (Output::marks).
+  TableMarks m = resume_;
   for (auto& [name, f] : files_) {
     f.flush();
-    if (!f) throw RunError(fmt::format("error writing {}/{}", dir_, name));
+    if (!f) throw SystemError(fmt::format("writing {}/{}: {}", dir_, name, std::strerror(errno)));
     m[name] = static_cast<std::int64_t>(fs::file_size(fs::path(dir_) / name));
   }
   return m;

@@ -17,7 +17,8 @@ class RunTables {
   explicit RunTables(std::string dir, TableMarks resume = {}) : dir_(std::move(dir)), resume_(std::move(resume)) {}
   // The table `name` of the run folder; `header` starts a fresh one.
   std::ofstream& open(const std::string& name, std::string_view header = {});
-  // Flushes every table and returns their lengths.
+  // Flushes every table and returns their lengths; SystemError (the file, the system's
+  // reason) when a table could not be written whole.
   TableMarks marks();
 
  private:

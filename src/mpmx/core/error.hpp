@@ -17,6 +17,13 @@ class RunError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The machine failed the run: a write refused (disk full, read-only, a folder gone). Not
+// the input's fault nor mpmx's: exit status 1, the file and the system's reason said.
+class SystemError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // Stopped on request (Ctrl-C) after writing a checkpoint: the message says how to resume.
 class Interrupted : public std::runtime_error {
  public:

@@ -1,7 +1,10 @@
 #pragma once
 // Ctrl-C (SIGINT) or SIGTERM asks a run loop to write a checkpoint and stop at its next
-// step boundary; a second signal kills. SIGTERM is what mpirun turns a Ctrl-C into for
-// every rank, what `kill` sends by default and what a batch system's time limit sends.
+// step boundary. A second signal is the same request (GNU `timeout` and batch systems
+// send SIGTERM to the process and then to its group), so the checkpoint ends whole; a
+// third kills at once (the escape from a run that does not reach its next boundary).
+// SIGTERM is what mpirun turns a Ctrl-C into for every rank, what `kill` sends by default
+// and what a batch system's time limit sends.
 // The guard holds the handlers for the loop's life.
 namespace mpmx {
 

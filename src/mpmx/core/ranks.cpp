@@ -117,6 +117,8 @@ Failure current_failure() {
     return {Failure::input, e.what()};
   } catch (const RunError& e) {
     return {Failure::run, e.what()};
+  } catch (const SystemError& e) {
+    return {Failure::system, e.what()};
   } catch (const std::exception& e) {
     return {Failure::internal, e.what()};
   }
@@ -126,6 +128,7 @@ void raise(const Failure& f) {
   switch (f.kind) {
     case Failure::input: throw InputError(f.message);
     case Failure::run: throw RunError(f.message);
+    case Failure::system: throw SystemError(f.message);
     case Failure::internal: break;
   }
   throw std::runtime_error(f.message);

@@ -33,12 +33,12 @@ std::string library();
 
 // An error as it travels between ranks.
 struct Failure {
-  enum Kind : int { input = 1, run = 2, internal = 3 } kind = run;
+  enum Kind : int { input = 1, run = 2, internal = 3, system = 4 } kind = run;
   std::string message;
 };
 // The exception being handled, as a Failure (call it in a catch block).
 Failure current_failure();
-// Throws the error a Failure describes (InputError, RunError, std::runtime_error).
+// Throws the error a Failure describes (InputError, RunError, SystemError, std::runtime_error).
 [[noreturn]] void raise(const Failure& f);
 
 // How long a rank waits for the others in an agreement. `unbounded`: the steps of a run,

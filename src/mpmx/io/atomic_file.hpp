@@ -9,7 +9,7 @@
 namespace mpmx::io {
 
 // A file streamed to `path + ".tmp"` and renamed over `path` on commit(); an error or
-// leaving without commit() removes the temporary. Errors are RunError naming the path,
+// leaving without commit() removes the temporary. Errors are SystemError naming the path,
 // what failed and the system's reason (disk full, no permission).
 class AtomicWriter {
  public:

@@ -102,7 +102,9 @@ std::string_view unframe(std::string_view b, const CheckedKind& k, const std::st
   if (b.substr(kKind, 8) != kind_field(k.kind))
     throw refuse(kKind, fmt::format("a checkpoint of kind '{}', not '{}'", printable(b.substr(kKind, 8)), k.kind));
   if (const auto v = get(b, kVersion, 4); v != k.version)
-    throw refuse(kVersion, fmt::format("format version {}, this mpmx reads version {}", v, k.version));
+    throw refuse(kVersion, fmt::format("format version {}, this mpmx reads version {} (written by another mpmx "
+                                       "version): run afresh without --resume",
+                                       v, k.version));
   const std::uint64_t size = get(b, kSize, 8), held = b.size() - kCheckedHeaderBytes;
   if (size != held)
     throw refuse(kSize, fmt::format("the header announces {} payload bytes, the file holds {}: {}", size, held,

@@ -1,3 +1,4 @@
+#include "mpmx/core/input_files.hpp"
 #include "mpmx/io/deck.hpp"
 
 #include <algorithm>
@@ -453,6 +454,7 @@ Deck Deck::from_file(const std::string& file, std::string_view what) {
   }
   Deck d;
   d.name_ = file;
+  note_input_file(file);  // pinned by a checkpoint (a potential file read as a deck too)
   try {
     d.table_ = std::make_unique<toml::table>(toml::parse_file(file));
   } catch (const toml::parse_error& e) {

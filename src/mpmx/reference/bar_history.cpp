@@ -1,3 +1,4 @@
+#include "mpmx/core/input_files.hpp"
 #include "mpmx/reference/bar_history.hpp"
 
 #include <algorithm>
@@ -18,6 +19,7 @@ BarHistory BarHistory::read(const std::string& path) {
     throw InputError(fmt::format("direct-MD stress history {} cannot be read (run the direct-MD deck "
                                  "first: mpmx md DECK --out DIR writes DIR/bar_stress.csv)",
                                  path));
+  note_input_file(path);  // pinned by a checkpoint
   BarHistory h;
   h.path_ = path;
   std::string line;

@@ -1,3 +1,4 @@
+#include "mpmx/core/input_files.hpp"
 #include "mpmx/reference/jet_history.hpp"
 
 #include <algorithm>
@@ -23,6 +24,7 @@ namespace {
 std::string slurp(const fs::path& p) {
   std::ifstream in(p);
   if (!in) throw InputError(fmt::format("{} cannot be read", p.string()));
+  note_input_file(p.string());  // pinned by a checkpoint
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
@@ -37,6 +39,7 @@ struct Bin {
 std::vector<Bin> read_bins(const fs::path& path) {
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("direct-MD jet bins {} cannot be read", path.string()));
+  note_input_file(path.string());
   std::string line;
   std::getline(in, line);
   if (line.rfind("ix,iy,x_A,y_A,atoms,density_g_cm3,temperature_K,vx_km_s,vy_km_s,sxx_GPa", 0) != 0)

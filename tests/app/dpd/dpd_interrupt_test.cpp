@@ -14,6 +14,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -185,6 +187,25 @@ TEST(DpdInterrupt, TheConcurrentRodResumesToTheSameFiles) {
   resume_and_compare(d, whole, cut);
 }
 
+// Stopped two and three times (in the equilibration, between records, on one): the
+// same files; the concurrent rod twice.
+TEST(DpdInterrupt, StoppedAgainAndAgainResumesToTheSameFiles) {
+  const std::string d = dpd_deck("again.toml", crystal(100)), rod = dpd_deck("again_rod.toml", kConcurrent);
+  const fs::path whole = whole_run(d, "again"), rod_whole = whole_run(rod, "again_rod");
+  for (const auto& [deck, w, stops] : std::vector<std::tuple<std::string, fs::path, std::vector<int>>>{
+           {d, whole, {20, 60}}, {d, whole, {10, 45, 100}}, {rod, rod_whole, {30, 105}}}) {
+    const fs::path cut = kDpdDir / fmt::format("again_{}_{}", deck == rod ? "rod" : "crystal", stops.size());
+    std::string resume;
+    for (int s : stops) {
+      const auto r = run_cli(
+          fmt::format("dpd '{}' --quiet --no-plot --out '{}' --stop-after {}{}", deck, cut.string(), s, resume));
+      ASSERT_EQ(r.status, 130) << r.output;
+      resume = " --resume";
+    }
+    resume_and_compare(deck, w, cut);
+  }
+}
+
 TEST(DpdInterrupt, ADamagedCheckpointIsRefused) {
   const std::string d = dpd_deck("damaged.toml", crystal(100));
   const fs::path cut = kDpdDir / "damaged";
@@ -223,6 +244,7 @@ TEST(DpdInterrupt, FitDpdStopsAtOnceLeavingOutAsItWas) {
   EXPECT_EQ(slurp(out / "earlier.csv"), "an earlier run's table\n");
   EXPECT_TRUE(fs::is_directory(out / ".staging"));
   EXPECT_FALSE(fs::exists(out / "isotherm.csv"));
+  EXPECT_FALSE(fs::exists(out / ".mpmx-lock"));  // gone with the run that held it
 }
 
 // D0 with [elastic] made small: 3 densities of 108 atoms, 108 mesoparticles, 2 rounds.
@@ -302,6 +324,17 @@ TEST(DpdInterrupt, FitDpdResumesFromItsLastStageToTheSameFiles) {
     EXPECT_EQ(physics_of(whole / "run.json"), physics_of(cut / "run.json")) << stage;
     EXPECT_FALSE(fs::exists(cut / "checkpoint.bin"));
     EXPECT_FALSE(fs::exists(cut / ".staging"));
+  }
+  // Stopped after the MD isotherm, then after round 0, then resumed: the same files.
+  {
+    const fs::path cut = kDpdDir / "fit_cut_again";
+    for (const char* step : {"--stop-after 1", "--resume --stop-after 3", "--resume"}) {
+      r = run_cli(fmt::format("fit-dpd '{}' --threads 2 --out '{}' {}", d, cut.string(), step));
+      ASSERT_EQ(r.status, std::string(step) == "--resume" ? 0 : 130) << step << r.output;
+    }
+    for (const char* f : {"isotherm.csv", "tiny_morse.toml"}) EXPECT_EQ(slurp(whole / f), slurp(cut / f)) << f;
+    EXPECT_EQ(physics_of(whole / "run.json"), physics_of(cut / "run.json"));
+    EXPECT_FALSE(fs::exists(cut / "checkpoint.bin"));
   }
   // Another deck's checkpoint, and none at all, are refused with exit 2.
   const fs::path cut = kDpdDir / "fit_cut_other";

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -117,6 +118,26 @@ TEST(MdInterrupt, TheBarStoppedAtARecordResumesToTheSameFiles) {
   const auto r = run_cli(fmt::format("md '{}' --quiet --threads 2 --out '{}' --resume", d, cut.string()));
   ASSERT_EQ(r.status, 0) << r.output;
   mpmx::test::expect_same_folders(whole, cut);
+}
+
+// Stopped two and three times, between records and on one (the bar records every 50
+// steps, the stop comes at the first record at or past the step): the same files.
+TEST(MdInterrupt, TheBarStoppedAgainAndAgainResumesToTheSameFiles) {
+  const std::string d = md_deck("bar_again.toml", kBar);
+  const fs::path whole = kMdDir / "bar_again_whole";
+  ASSERT_EQ(run_cli(fmt::format("md '{}' --quiet --out '{}'", d, whole.string())).status, 0);
+  for (const auto& stops : std::vector<std::vector<int>>{{100, 150}, {20, 130, 550}}) {
+    const fs::path cut = kMdDir / fmt::format("bar_again_{}", stops.size());
+    std::string resume;
+    for (int s : stops) {
+      const auto r = run_cli(fmt::format("md '{}' --quiet --out '{}' --stop-after {}{}", d, cut.string(), s, resume));
+      ASSERT_EQ(r.status, 130) << r.output;
+      resume = " --resume";
+    }
+    const auto r = run_cli(fmt::format("md '{}' --quiet --threads 2 --out '{}' --resume", d, cut.string()));
+    ASSERT_EQ(r.status, 0) << r.output;
+    mpmx::test::expect_same_folders(whole, cut);
+  }
 }
 
 TEST(MdInterrupt, ADamagedCheckpointIsRefused) {

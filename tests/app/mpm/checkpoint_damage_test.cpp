@@ -8,10 +8,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <sys/wait.h>
 
 #include <fmt/format.h>
 
+#include "mpmx/app/checkpoint_fields.hpp"
 #include "mpmx/core/exit_codes.hpp"
 #include "mpmx/io/checked_file.hpp"
 #include "mpmx/app/mpm/checkpoint.hpp"
@@ -126,7 +128,12 @@ TEST(CheckpointDamage, NegativeOrPastTheEndStepIsRefused) {
   const std::string text = deck_text(k.config);
   const auto kind = app::run_checkpoint_kind(text, k.config.cells * k.config.per_cell);
   const std::string payload(io::unframe(k.bytes, kind, k.path));
-  const std::size_t step_at = 8 + text.size() + 8;  // deck text (count + bytes), state magic
+  // After the deck's text and the input files' digests, the state's magic, then the step.
+  std::istringstream fields_in(payload);
+  app::CheckpointIn fields(fields_in, k.path);
+  ASSERT_EQ(fields.text(), text);
+  for (std::int64_t n = fields.integer(); n > 0; --n) fields.text(), fields.integer();
+  const std::size_t step_at = static_cast<std::size_t>(fields.offset()) + 8;
   std::int64_t step = 0;
   std::memcpy(&step, payload.data() + step_at, sizeof step);
   ASSERT_EQ(step, 2);

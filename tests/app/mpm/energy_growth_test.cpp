@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "app/mpm/disk_on_wall.hpp"
 #include "mpm/mpm_test_util.hpp"
 #include "mpmx/core/error.hpp"
 
@@ -16,37 +17,7 @@ namespace {
 // An elastic disk thrown at a fixed wall, as a user writes it from the guide: no
 // update_velocity line. The seed's midpoint form grows its energy without bound here
 // (1.9x by t = 5).
-const char* kDiskOnWall = R"(
-[case]
-id = "disk_on_wall"
-title = "an elastic disk hits a wall"
-[grid]
-dim = 2
-lower = [0.0, 0.0]
-upper = [1.0, 1.0]
-cells = [20, 20]
-[particles]
-per_cell = [2, 2]
-[[body]]
-shape = "circle"
-center = [0.3, 0.5]
-radius = 0.2
-velocity = [-0.1, 0.0]
-[scheme]
-name = "mpm"
-[material]
-model = "linear_elastic"
-density = 1000.0
-youngs_modulus = 1000.0
-poisson_ratio = 0.3
-[boundary]
-x_lower = { type = "fixed" }
-[time]
-dt = 0.01
-end = 5.0
-[output]
-every = 100
-)";
+using test::kDiskOnWall;
 
 app::MpmConfig disk_on_wall(const std::string& extra_time = "", const std::string& update = "") {
   std::string text = kDiskOnWall;

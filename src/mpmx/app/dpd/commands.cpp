@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/io/run_manifest.hpp"
 #include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/deck_kind.hpp"
 #include "mpmx/app/commands.hpp"
@@ -56,7 +57,7 @@ void add_dpd_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
     int threads = 0;  // all cores, as run and md
-    bool check = false, quiet = false, no_plot = false, still = false, force = false, resume = false;
+    bool check = false, quiet = false, no_plot = false, still = false, force = false, resume = false, overwrite = false;
     std::int64_t stop_after = 0;
   };
   auto args = std::make_shared<Args>();
@@ -67,8 +68,10 @@ void add_dpd_commands(CLI::App& app) {
   dpd->add_flag("--check", args->check, "validate the deck, print its work estimate and exit");
   dpd->add_flag("--force", args->force, "run even when the work estimate exceeds about a day");
   dpd->add_flag("--quiet", args->quiet, "no progress line");
+  dpd->add_flag("--overwrite", args->overwrite, kOverwriteHelp);
   dpd->add_flag("--resume", args->resume,
-                "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit)");
+                "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit; refused when "
+                "the deck or a file it reads changed since)");
   // For tests: stop as if interrupted at the first record at or past step N.
   dpd->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   dpd->add_flag("--no-plot", args->no_plot, "no figures (tools/plot/dpd_study.py) after the run");
@@ -88,7 +91,8 @@ void add_dpd_commands(CLI::App& app) {
     o.resume = args->resume;
     o.stop_after = args->stop_after;
     o.out = out;
-    const auto r = run_resumable(out, args->resume, [&](const std::string& dir) {
+    const auto r = run_resumable(out, args->resume, {io::run_owner("dpd", args->deck), args->overwrite},
+                                 [&](const std::string& dir) {
       return dpd::run_dpd(config, dir, deck.table(), threads, o,
                           multiscale::dpd_mpm_mover(config.grid, config.continuum, config.potential, threads));
     });
@@ -108,8 +112,10 @@ void add_dpd_commands(CLI::App& app) {
   fit->add_option("--out", fargs->out, "output directory (default runs/<deck name>, as run)");
   fit->add_option("--threads", fargs->threads, "threads over the densities (default: all cores)");
   fit->add_flag("--check", fargs->check, "validate the deck and exit");
+  fit->add_flag("--overwrite", fargs->overwrite, kOverwriteHelp);
   fit->add_flag("--resume", fargs->resume,
-                "continue a stopped fit from OUT/checkpoint.bin (its last finished stage; bit-for-bit)");
+                "continue a stopped fit from OUT/checkpoint.bin (its last finished stage; bit-for-bit; refused when "
+                "the deck or a file it reads changed since)");
   // For tests: stop as if interrupted once so many stages are finished.
   fit->add_option("--stop-after", fargs->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   fit->callback([fargs] {
@@ -127,14 +133,18 @@ void add_dpd_commands(CLI::App& app) {
         throw InputError(fmt::format("no checkpoint to resume from: {} does not exist", checkpoint));
       from = dpd::read_fit_checkpoint(checkpoint, text.str(), config.density_ratios.size());
     }
-    const auto r = io::run_staged(out, [&](const std::string& dir) {
-      // Stops the fit at once, saving the stages it finished.
-      dpd::FitStop on_signal(fargs->deck, out, deck.table(), text.str(), config.density_ratios.size());
-      return dpd::run_fit(config, dir, deck.table(), threads, from, [&](const dpd::FitProgress& p) {
-        on_signal.keep(p);
-        if (fargs->stop_after > 0 && p.stages() >= fargs->stop_after) on_signal.stop();
-      });
-    });
+    const io::FolderOwner owner{io::run_owner("fit-dpd", fargs->deck), fargs->overwrite};
+    const auto r = io::run_staged(
+        out,
+        [&](const std::string& dir) {
+          // Stops the fit at once, saving the stages it finished.
+          dpd::FitStop on_signal(fargs->deck, out, deck.table(), text.str(), config.density_ratios.size(), owner.run);
+          return dpd::run_fit(config, dir, deck.table(), threads, from, [&](const dpd::FitProgress& p) {
+            on_signal.keep(p);
+            if (fargs->stop_after > 0 && p.stages() >= fargs->stop_after) on_signal.stop();
+          });
+        },
+        owner);
     std::error_code ec;
     std::filesystem::remove(checkpoint, ec);  // the fit is whole: nothing to resume
     fmt::print("morse D0 = {:.6g} eV, alpha = {:.6g} 1/A, r0 = {:.6g} A, rc = {} A; max |P_DPDE - P_MD| = {:.3g} of "

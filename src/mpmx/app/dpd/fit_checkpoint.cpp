@@ -15,7 +15,7 @@ namespace {
 constexpr std::string_view kKind = "fit_dpd";
 
 io::CheckedKind kind_of(const std::string& deck_text, std::size_t densities) {
-  return {kKind, 1, io::text_hash(deck_text), densities};
+  return {kKind, 2, io::text_hash(deck_text), densities};  // 2: the input files' digests
 }
 
 }  // namespace
@@ -31,6 +31,7 @@ void write_fit_checkpoint(const std::string& path, const std::string& deck_text,
   io::CheckedWriter file(path, kind_of(deck_text, densities));
   CheckpointOut w(file.stream());
   w.text(deck_text);
+  w.inputs();
   w.integer(p.md ? 1 : 0);
   if (p.md) {
     std::vector<double> v;
@@ -57,6 +58,7 @@ FitProgress read_fit_checkpoint(const std::string& path, const std::string& deck
     throw InputError(fmt::format("{} was written for another deck (the deck changed since); run afresh without "
                                  "--resume",
                                  path));
+  in.check_inputs();
   // A flag is 0 or 1; a list has the length the deck fixes.
   auto flag = [&] {
     const long long at = in.offset();

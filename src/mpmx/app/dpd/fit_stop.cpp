@@ -9,14 +9,16 @@
 
 #include "mpmx/core/exit_codes.hpp"
 #include "mpmx/io/atomic_file.hpp"
+#include "mpmx/io/folder_lock.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/io/staged_dir.hpp"
 
 namespace mpmx::app::dpd {
 
 FitStop::FitStop(std::string deck_file, std::string out, const toml::table& deck_echo, std::string deck_text,
-                 std::size_t densities)
+                 std::size_t densities, std::string owner)
     : deck_file_(std::move(deck_file)), out_(std::move(out)), deck_text_(std::move(deck_text)),
+      owner_(std::move(owner)),
       densities_(densities), deck_echo_(deck_echo), guard_(true) {
   watcher_ = std::thread([this] {
     while (!done_.load()) {
@@ -57,8 +59,13 @@ void FitStop::stop() {
       std::filesystem::remove(checkpoint, ec);  // an older fit's: not this one's to resume
     }
     io::write_file_atomic((std::filesystem::path(out_) / "run.json").string(), io::json_text(rec));
+    io::record_written(out_, owner_, saved ? std::set<std::string>{"checkpoint.bin", "run.json"}
+                                           : std::set<std::string>{"run.json"});
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "mpmx: %s\n", e.what());
+    // The disk refused the checkpoint: the machine's failure, not an interruption to resume.
+    std::fprintf(stderr, "\nmpmx: the file system failed: %s\n", e.what());
+    std::fflush(stderr);
+    std::_Exit(exit_code::internal);
   }
   const std::string msg =
       saved ? fmt::format("\nmpmx: interrupted: fit-dpd stopped {}; {} keeps the stages finished: continue with: "
@@ -70,6 +77,8 @@ void FitStop::stop() {
   std::fputs(msg.c_str(), stderr);
   std::fflush(stdout);
   std::fflush(stderr);
+  // _Exit runs no destructor: the folder's lock file goes here, still held (as ~FolderLock).
+  std::filesystem::remove(std::filesystem::path(out_) / io::FolderLock::kName, ec);
   std::_Exit(exit_code::interrupted);
 }
 

@@ -22,8 +22,9 @@ namespace mpmx::app::dpd {
 class FitStop {
  public:
   // `deck_text`: the deck's canonical text, `densities` its count (the checkpoint's frame).
+  // `owner`: the run's owner text (io/run_manifest.hpp), for the files it writes into OUT.
   FitStop(std::string deck_file, std::string out, const toml::table& deck_echo, std::string deck_text,
-          std::size_t densities);
+          std::size_t densities, std::string owner);
   ~FitStop();
   FitStop(const FitStop&) = delete;
   FitStop& operator=(const FitStop&) = delete;
@@ -34,7 +35,7 @@ class FitStop {
   [[noreturn]] void stop();
 
  private:
-  std::string deck_file_, out_, deck_text_;
+  std::string deck_file_, out_, deck_text_, owner_;
   std::size_t densities_;
   toml::table deck_echo_;
   std::mutex mutex_;

@@ -2,11 +2,14 @@
 // an MD-only run (issue 3); for a bar deck, optionally its reference through LAMMPS.
 // `--check` does every validation the run does (deck, potential file and its elements,
 // memory and work estimates) and writes nothing; the run creates DIR only after them.
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
 #include <fmt/format.h>
 
+#include "mpmx/io/run_manifest.hpp"
 #include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/deck_kind.hpp"
 #include "mpmx/app/commands.hpp"
@@ -77,7 +80,7 @@ void run_jet_lammps(const md::MdConfig& c, const std::string& out, const std::st
   const auto samples = md::read_lammps_bar_stress((dir / md::kLammpsJetStress).string(), c.dt, grid.nx * grid.ny);
   const fs::path csv = fs::path(stage) / "jet_stress_lammps.csv";
   std::ofstream f(csv);
-  if (!f) throw RunError(fmt::format("cannot write {}", csv.string()));
+  if (!f) throw SystemError(fmt::format("cannot write {}: {}", csv.string(), std::strerror(errno)));
   f << "step,time_ps,ix,iy,x_A,y_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n";
   for (const auto& s : samples)
     for (int k = 0; k < grid.nx * grid.ny; ++k) {
@@ -86,7 +89,7 @@ void run_jet_lammps(const md::MdConfig& c, const std::string& out, const std::st
       f << fmt::format("{},{:.6f},{},{},{:.6g},{:.6g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", s.step, s.time_ps,
                        ix, iy, grid.x_centre(ix), grid.y_centre(iy), m[0], m[4], m[8], m[1], m[2], m[5]);
     }
-  if (!f) throw RunError(fmt::format("error writing {}", csv.string()));
+  if (!f) throw SystemError(fmt::format("error writing {}: {}", csv.string(), std::strerror(errno)));
   fmt::print("{} atoms, {} steps through LAMMPS (`{}` in {}) -> {}\n", sys.atoms().size(), c.steps, r.command,
              shown.string(), (fs::path(out) / "jet_stress_lammps.csv").string());
 }
@@ -128,7 +131,7 @@ void add_md_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
     bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false, resume = false,
-         still = false;
+         still = false, overwrite = false;
     int ranks = 1, threads = 0;  // all cores, as run and dpd
     std::int64_t stop_after = 0;
   };
@@ -142,7 +145,9 @@ void add_md_commands(CLI::App& app) {
   md->add_flag("--quiet", args->quiet, "no progress line");
   md->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   md->add_flag("--resume", args->resume,
-               "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit)");
+               "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit; refused when "
+               "the deck or a file it reads changed since)");
+  md->add_flag("--overwrite", args->overwrite, kOverwriteHelp);
   md->add_flag("--still", args->still,
                "rod decks: the flyer released at rest, the undriven twin of the run, which "
                "tools/plot/dpd_study.py subtracts to leave the wave alone");
@@ -173,16 +178,20 @@ void add_md_commands(CLI::App& app) {
     // Memory always; work unless --force, or when only LAMMPS inputs are written.
     md::check_md_budget(budget, physical_memory_bytes(), args->force || args->lammps_write_only);
     const std::string out = out_dir_of(args->out, args->deck);
+    const io::FolderOwner owner{io::run_owner("md", args->deck), args->overwrite};
     if (args->lammps || args->lammps_write_only) {
       if (!config.jet && !config.bar)
         throw InputError(
             fmt::format("{}: --lammps and --lammps-write-only need a deck with a [bar] or [jet] table", args->deck));
       if (args->resume) throw InputError("--resume continues mpmx's own MD, not a --lammps run");
-      io::run_staged(out, [&](const std::string& dir) {
-        if (config.jet) run_jet_lammps(config, out, dir, args->lammps_write_only, args->ranks);
-        else run_bar_lammps(args->deck, config, out, dir, args->lammps_write_only, args->ranks);
-        return 0;
-      });
+      io::run_staged(
+          out,
+          [&](const std::string& dir) {
+            if (config.jet) run_jet_lammps(config, out, dir, args->lammps_write_only, args->ranks);
+            else run_bar_lammps(args->deck, config, out, dir, args->lammps_write_only, args->ranks);
+            return 0;
+          },
+          owner);
       return;
     }
     RunControlOptions o;
@@ -190,7 +199,7 @@ void add_md_commands(CLI::App& app) {
     o.resume = args->resume;
     o.stop_after = args->stop_after;
     o.out = out;
-    const auto r = run_resumable(out, args->resume,
+    const auto r = run_resumable(out, args->resume, owner,
                                  [&](const std::string& dir) { return md::run_md(config, dir, deck.table(), o); });
     if (r.interrupted)
       throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx md {} --out {} --resume{}",

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -14,6 +15,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
 #include "mpmx/core/units.hpp"
+#include "mpmx/io/atomic_file.hpp"
 #include "mpmx/io/vtk.hpp"
 
 namespace mpmx::app::md {
@@ -26,8 +28,9 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kGPa = units::eV_per_A3_in_GPa;
 
 void write_bins_csv(const std::string& path, const BinFields& f) {
-  std::ofstream csv(path);
-  if (!csv) throw RunError(fmt::format("cannot write {}", path));
+  // Whole or not at all, and a refused write is the machine's failure (SystemError), never
+  // a stop by the physics that would publish a cut table.
+  std::ostringstream csv;
   csv << "ix,iy,x_A,y_A,atoms,density_g_cm3,temperature_K,vx_km_s,vy_km_s,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,"
          "sxz_GPa,syz_GPa\n";
   const BinGrid& g = f.grid;
@@ -40,7 +43,7 @@ void write_bins_csv(const std::string& path, const BinFields& f) {
                          0.1 * f.vx[k], 0.1 * f.vy[k], s[0] * kGPa, s[4] * kGPa, s[8] * kGPa, s[1] * kGPa,
                          s[2] * kGPa, s[5] * kGPa);
     }
-  if (!csv) throw RunError(fmt::format("error writing {}", path));
+  io::write_file_atomic(path, csv.str());
 }
 
 // ParaView image: one point per bin centre (stress GPa, density g/cm^3, T K, v km/s),

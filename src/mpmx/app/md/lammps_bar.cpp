@@ -1,5 +1,7 @@
 #include "mpmx/app/md/lammps_bar.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -37,7 +39,7 @@ void write_lammps_data(const System& sys, const std::string& path, const std::st
   const Atoms a = sys.snapshot();  // positions in the box, on-step velocities
   const auto& mass = sys.type_mass();
   std::ofstream d(path);
-  if (!d) throw RunError(fmt::format("cannot write {}", path));
+  if (!d) throw SystemError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
   d << fmt::format("mpmx {} {}, step {} (atom_style atomic, metal units)\n\n", MPMX_VERSION, title, sys.step());
   d << fmt::format("{} atoms\n{} atom types\n\n", a.size(), mass.size());
   d << fmt::format("0 {:.17g} xlo xhi\n0 {:.17g} ylo yhi\n0 {:.17g} zlo zhi\n\nMasses\n\n", b.lx, b.ly, b.lz);
@@ -48,7 +50,7 @@ void write_lammps_data(const System& sys, const std::string& path, const std::st
   d << "\nVelocities\n\n";
   for (std::size_t i = 0; i < a.size(); ++i)
     d << fmt::format("{} {:.17g} {:.17g} {:.17g}\n", a.id[i], a.vx[i], a.vy[i], a.vz[i]);
-  if (!d) throw RunError(fmt::format("error writing {}", path));
+  if (!d) throw SystemError(fmt::format("error writing {}: {}", path, std::strerror(errno)));
 }
 
 namespace {
@@ -157,7 +159,9 @@ void write_lammps_bar(const Bar& bar, const PotentialSpec& spec, double dt, std:
       "run {}\n",
       sys.options().skin, dt, w.lo, w.hi, w.lo, width, bins, units::eV_per_A3_in_GPa, to_gpa, to_gpa, to_gpa, to_gpa,
       to_gpa, to_gpa, every, every, kLammpsBarStress, every, steps);
-  if (!in) throw RunError(fmt::format("error writing {}", (fs::path(dir) / kLammpsBarInput).string()));
+  if (!in)
+    throw SystemError(
+        fmt::format("error writing {}: {}", (fs::path(dir) / kLammpsBarInput).string(), std::strerror(errno)));
 }
 
 LammpsRun run_lammps(const std::string& dir, int ranks, const std::string& input, const std::string& output) {
@@ -229,7 +233,7 @@ std::vector<BarStressSample> read_lammps_bar_stress(const std::string& path, dou
 void write_bar_stress_csv(const std::string& path, const std::vector<BarStressSample>& samples,
                           const std::vector<double>& centres) {
   std::ofstream csv(path);
-  if (!csv) throw RunError(fmt::format("cannot write {}", path));
+  if (!csv) throw SystemError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
   // The header and number formats of run_bar's bar_stress.csv.
   csv << "step,time_ps,bin,x_A,sxx_GPa,syy_GPa,szz_GPa,sxy_GPa,sxz_GPa,syz_GPa\n";
   for (const auto& s : samples) {
@@ -242,7 +246,7 @@ void write_bar_stress_csv(const std::string& path, const std::vector<BarStressSa
                          centres[b], m[0], m[4], m[8], m[1], m[2], m[5]);
     }
   }
-  if (!csv) throw RunError(fmt::format("error writing {}", path));
+  if (!csv) throw SystemError(fmt::format("error writing {}: {}", path, std::strerror(errno)));
 }
 
 }  // namespace mpmx::app::md

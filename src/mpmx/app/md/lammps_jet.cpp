@@ -1,5 +1,7 @@
 #include "mpmx/app/md/lammps_jet.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -90,7 +92,9 @@ void write_lammps_jet(const System& sys, const JetGeometry& geo, const BinGrid& 
       "thermo {}\n"
       "run {}\n",
       every, steps);
-  if (!in) throw RunError(fmt::format("error writing {}", (fs::path(dir) / kLammpsJetInput).string()));
+  if (!in)
+    throw SystemError(
+        fmt::format("error writing {}: {}", (fs::path(dir) / kLammpsJetInput).string(), std::strerror(errno)));
 }
 
 }  // namespace mpmx::app::md

@@ -120,7 +120,7 @@ std::string run_bar(const MdConfig& c, const Potential& pot, const std::string& 
 // stopped the run ("" when it completed); an interrupted run names its checkpoint.
 void write_record(const MdConfig& c, const Potential& pot, const toml::table& deck_echo,
                   const MdRunSummary& r, toml::table extra, const std::string& out_dir,
-                  const std::string& stopped, const RunControl& control) {
+                  const std::string& stopped, RunControl& control) {
   const char* status = !stopped.empty() ? "stopped" : control.interrupted() ? "interrupted" : "completed";
   toml::table rec{{"version", MPMX_VERSION},
                   {"command", "md"},

@@ -27,7 +27,8 @@ void each_array(Particles<Dim>& p, F&& f) {
 }  // namespace
 
 io::CheckedKind run_checkpoint_kind(const std::string& deck_text, std::size_t points) {
-  return {"mpm_run", 2, io::text_hash(deck_text), points};  // 2: sigma_zz in 2-D, the body force's work
+  // 2: sigma_zz in 2-D, the body force's work; 3: the input files' digests
+  return {"mpm_run", 3, io::text_hash(deck_text), points};
 }
 
 template <int Dim>

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "mpmx/io/run_manifest.hpp"
 #include "mpmx/app/cli_checks.hpp"
 #include "mpmx/app/deck_kind.hpp"
 #include "mpmx/app/commands.hpp"
@@ -48,7 +49,7 @@ using namespace mpm;
 void add_mpm_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
-    bool quiet = false, no_plot = false, resume = false, force = false;
+    bool quiet = false, no_plot = false, resume = false, force = false, overwrite = false;
     int threads = 0, ranks = 1;
     std::int64_t checkpoint_every = 0, stop_after = 0;
     double checkpoint_minutes = 10.0, rebalance_above = 1.2;
@@ -68,7 +69,10 @@ void add_mpm_commands(CLI::App& app) {
                   "on all cores, the rest on one)")
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
-  run->add_flag("--resume", args->resume, "continue from OUT/checkpoint.bin (bit-for-bit)");
+  run->add_flag("--resume", args->resume,
+                "continue from OUT/checkpoint.bin (bit-for-bit; refused when the deck or a file it reads changed "
+                "since)");
+  run->add_flag("--overwrite", args->overwrite, kOverwriteHelp);
   run->add_option("--checkpoint-every", args->checkpoint_every, "write OUT/checkpoint.bin every N steps")
       ->check(CLI::NonNegativeNumber);
   run->add_option("--checkpoint-minutes", args->checkpoint_minutes,
@@ -96,6 +100,7 @@ void add_mpm_commands(CLI::App& app) {
     o.plot = !args->no_plot;
     o.threads = run_threads_of(args->threads);
     o.resume = args->resume;
+    o.owner = {io::run_owner("run", args->deck), args->overwrite};
     o.checkpoint_every = args->checkpoint_every;
     o.stop_after = args->stop_after;
     o.rebalance_above = args->rebalance_above;

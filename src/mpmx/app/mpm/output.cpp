@@ -1,7 +1,10 @@
 #include "mpmx/app/mpm/output.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
+#include <iterator>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -48,16 +51,39 @@ std::FILE* Output::open(const std::string& name, const char* header) {
   if (auto it = resume_.find(name); it != resume_.end()) {
     std::error_code ec;
     std::filesystem::resize_file(path, static_cast<std::uintmax_t>(it->second), ec);
-    if (ec) throw RunError(fmt::format("cannot resume {}: {}", path, ec.message()));
+    if (ec) throw SystemError(fmt::format("cannot resume {}: {}", path, ec.message()));
     std::FILE* f = std::fopen(path.c_str(), "a");
-    if (!f) throw RunError(fmt::format("cannot append to {}", path));
+    if (!f) throw SystemError(fmt::format("cannot append to {}: {}", path, std::strerror(errno)));
     std::fseek(f, 0, SEEK_END);  // so ftell reports the length from the start
+    names_[f] = name;
     return f;
   }
   std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) throw RunError(fmt::format("cannot write {}", path));
-  std::fputs(header, f);
+  if (!f) throw SystemError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+  names_[f] = name;
+  emit(f, header);
   return f;
+}
+
+void Output::emit(std::FILE* f, std::string_view bytes, bool flush) {
+  // A full disk or a vanished folder is the machine's failure, said with the file and the
+  // system's reason; a table left short would otherwise pass for a whole one.
+  if ((!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), f) != bytes.size()) ||
+      (flush && std::fflush(f) != 0))
+    throw SystemError(fmt::format("writing {}/{}: {}", dir_, names_[f], std::strerror(errno)));
+}
+
+void Output::close() {
+  for (std::FILE** f : {&nodes_, &particles_, &energy_, &front_}) {
+    if (!*f) continue;
+    const std::string name = names_[*f];
+    const bool ok = std::fflush(*f) == 0 && !std::ferror(*f);
+    const int err = errno;
+    const bool closed = std::fclose(*f) == 0;
+    *f = nullptr;
+    if (!ok || !closed)
+      throw SystemError(fmt::format("writing {}/{}: {}", dir_, name, std::strerror(ok ? errno : err)));
+  }
 }
 
 void Output::record(const State<1>& s, const NodalFields& nf, const Reference* ref) {
@@ -89,8 +115,7 @@ void Output::record(const State<1>& s, const NodalFields& nf, const Reference* r
       ref_columns(nf.x[i]);
       buf_.push_back('\n');
     }
-    std::fwrite(buf_.data(), 1, buf_.size(), nodes_);
-    std::fflush(nodes_);
+    emit(nodes_, {buf_.data(), buf_.size()}, true);
   }
   if (want_particles_) {
     if (!particles_)
@@ -103,8 +128,7 @@ void Output::record(const State<1>& s, const NodalFields& nf, const Reference* r
       ref_columns(p.x[0][q]);
       buf_.push_back('\n');
     }
-    std::fwrite(buf_.data(), 1, buf_.size(), particles_);
-    std::fflush(particles_);
+    emit(particles_, {buf_.data(), buf_.size()}, true);
   }
 }
 
@@ -112,25 +136,31 @@ void Output::energy(std::int64_t step, double t, double kinetic, double internal
                     double boundary_impulse, double ref_total) {
   if (!energy_)
     energy_ = open("energy.csv", "step,time,kinetic,internal,total,momentum,boundary_impulse,ref_total\n");
-  fmt::print(energy_, "{},{:.10g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},", step, t, kinetic,
-             internal, kinetic + internal, momentum, boundary_impulse);
-  if (std::isfinite(ref_total)) fmt::print(energy_, "{:.12g}", ref_total);
-  std::fputc('\n', energy_);
+  buf_.clear();
+  fmt::format_to(std::back_inserter(buf_), "{},{:.10g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},", step, t, kinetic,
+                 internal, kinetic + internal, momentum, boundary_impulse);
+  if (std::isfinite(ref_total)) fmt::format_to(std::back_inserter(buf_), "{:.12g}", ref_total);
+  buf_.push_back('\n');
+  emit(energy_, {buf_.data(), buf_.size()});
 }
 
 void Output::front(double t, double x, double ref_x) {
   if (!front_) front_ = open("front.csv", "time,front,ref_front\n");
-  fmt::print(front_, "{:.10g},{:.10g},{:.10g}\n", t, x, ref_x);
-  std::fflush(front_);
+  buf_.clear();
+  fmt::format_to(std::back_inserter(buf_), "{:.10g},{:.10g},{:.10g}\n", t, x, ref_x);
+  emit(front_, {buf_.data(), buf_.size()}, true);
 }
 
 Output::Marks Output::marks() {
-  Marks m;
+  // A table this process has not opened yet (a resumed run stopped again before its next
+  // record) keeps the length its checkpoint gave it: left out, the next resume would start
+  // it afresh and lose the records before.
+  Marks m = resume_;
   const std::pair<const char*, std::FILE*> files[] = {
       {"nodes.csv", nodes_}, {"particles.csv", particles_}, {"energy.csv", energy_}, {"front.csv", front_}};
   for (const auto& [name, f] : files) {
     if (!f) continue;
-    std::fflush(f);
+    emit(f, {}, true);
     m[name] = static_cast<std::int64_t>(std::ftell(f));
   }
   return m;

@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <string_view>
 
 #include <fmt/format.h>
 #include <vector>
@@ -37,9 +38,14 @@ class Output {
   void front(double t, double x, double ref_x);
   // Flushes every table and returns their lengths.
   Marks marks();
+  // Closes every table; SystemError when the last bytes could not be written.
+  void close();
 
  private:
   std::FILE* open(const std::string& name, const char* header);
+  // `bytes` to the table `f` (and flushed); SystemError naming it and the system's reason.
+  void emit(std::FILE* f, std::string_view bytes, bool flush = false);
+  std::map<std::FILE*, std::string> names_;
   std::string dir_;
   std::FILE* nodes_ = nullptr;
   std::FILE* particles_ = nullptr;

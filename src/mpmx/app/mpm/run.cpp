@@ -63,7 +63,7 @@ template <int Dim>
 class ContinuumRun {
  public:
   ContinuumRun(const MpmConfig& c, const RunOptions& o, RunResultOf<Dim>& r)
-      : c_(c), o_(o), r_(r), s_(r.state), folder_(o.out_dir, o.resume), schedule_(c), book_(rec_),
+      : c_(c), o_(o), r_(r), s_(r.state), folder_(o.out_dir, o.resume, o.owner), schedule_(c), book_(rec_),
         comparison_(make_comparison<Dim>(c)) {
     if (!o.resume && !o.quiet && ranks::root() && c.material.spec)
       if (const std::string note = c.material.spec->build_note(); !note.empty())
@@ -276,7 +276,8 @@ class ContinuumRun {
     r_.front_speed = book_.front_speed;
     record_run(c_, r_, failure_, checkpoint_path(o_.out_dir), rec_);
     if (!o_.out_dir.empty() && ranks::root()) {
-      out_.reset();  // close the tables before plotting
+      if (out_) out_->close();  // before run.json: a table the disk cut short fails the run
+      out_.reset();
       rec_.write(folder_.dir + "/run.json");
       if (failure_.empty() && !r_.interrupted) std::filesystem::remove(checkpoint_path(folder_.dir));
       folder_.publish();

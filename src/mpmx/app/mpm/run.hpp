@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mpmx/io/staged_dir.hpp"
 #include "mpmx/app/mpm/comparison.hpp"
 #include "mpmx/app/mpm/config.hpp"
 #include "mpmx/app/run_folder.hpp"
@@ -17,6 +18,7 @@ namespace mpmx::app {
 
 struct RunOptions {
   std::string out_dir;   // "" = write nothing (tests)
+  io::FolderOwner owner;  // who writes out_dir: another run's folder is refused unless overwrite (io/staged_dir.hpp)
   bool quiet = false;    // no progress line
   bool plot = true;      // call tools/plot when the deck allows and matplotlib is present
   int threads = 0;       // the whole step (0: the MD boxes on all cores, the rest on one)

@@ -43,6 +43,7 @@ void save_run_checkpoint(const std::string& path, const MpmConfig& c, const mpm:
   std::ostream& f = file ? file->stream() : nowhere;
   CheckpointOut w(f);
   w.text(deck_text(c));
+  w.inputs();
   save_state(w, s);
   for (const double* v : carried(carry, book)) w.number(*v);
   w.integer(static_cast<std::int64_t>(book.errors.size()));
@@ -70,6 +71,7 @@ Output::Marks load_run_checkpoint(const std::string& path, const MpmConfig& c, m
     throw InputError(fmt::format("{} was written for another deck (the deck changed since); run afresh "
                                  "without --resume",
                                  path));
+  in.check_inputs();
   load_state(in, s);
   // A checkpoint is written before the last step, never at or past it.
   if (!c.cfl_dt && s.step >= c.steps())

@@ -1,3 +1,4 @@
+#include "mpmx/core/input_files.hpp"
 #include "mpmx/md/potential/eam_file.hpp"
 
 #include <algorithm>
@@ -34,6 +35,7 @@ class Cursor {
       throw InputError(fmt::format("{}: is a directory, not an EAM potential file", path_));
     std::ifstream in(path_);
     if (!in) throw InputError(fmt::format("{}: cannot open EAM potential file", path_));
+    note_input_file(path_);  // pinned by a checkpoint
     std::string line;
     while (std::getline(in, line)) lines_.push_back(line);
     if (lines_.empty()) throw InputError(fmt::format("{}: the EAM potential file is empty", path_));
