@@ -10,6 +10,7 @@
 
 #include "mpmx/app/dpd/budget.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/core/units.hpp"
 
@@ -292,7 +293,7 @@ DpdConfig read_dpd_config(io::Deck& deck) {
   auto root = deck.root();
 
   auto cs = root.table("case");
-  c.id = cs.string("id");
+  c.id = escape_controls(cs.string("id"));  // printed on progress and result lines
   c.title = cs.string("title", "");
   c.seed_ref = cs.string("seed", "");
 

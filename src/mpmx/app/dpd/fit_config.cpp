@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/md/potential/registry.hpp"
@@ -19,7 +20,7 @@ FitConfig read_fit_config(io::Deck& deck) {
   const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
   auto root = deck.root();
   auto cs = root.table("case");
-  c.id = cs.string("id");
+  c.id = escape_controls(cs.string("id"));  // printed on progress and result lines
   c.title = cs.string("title", "");
   c.seed_ref = cs.string("seed", "");
 

@@ -10,6 +10,7 @@
 #include <fmt/ranges.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/app/mpm/bodies.hpp"
 #include "mpmx/app/mpm/materials.hpp"
@@ -173,7 +174,7 @@ Body read_body(Section s, int dim, const material::Context& ctx, std::size_t num
 // [case]: the id, title, seed section and units.
 void read_case(Section& root, MpmConfig& c) {
   Section cs = root.table("case");
-  c.id = cs.string("id");
+  c.id = escape_controls(cs.string("id"));  // printed on progress and result lines
   c.title = cs.string("title", "");
   c.seed = cs.string("seed", "");
   c.units = cs.string("units", "consistent units");
