@@ -1,0 +1,23 @@
+#pragma once
+// What an atom of metal-unit MD can physically be, for refusing inputs that cannot be
+// right before anything is computed with them: a mass from the lightest atom (hydrogen,
+// 1.008 amu, with room below for isotopes-made-up tests) to beyond the heaviest (about
+// 300 amu) with room for coarse "atoms", and the shortest distance two atoms of a
+// crystal may start at (no bond is shorter than about 0.74 A, H2; metals 2-3 A).
+#include <string>
+
+#include <fmt/format.h>
+
+namespace mpmx::md {
+
+inline constexpr double kMinAtomMass = 0.5;     // amu
+inline constexpr double kMaxAtomMass = 1000.0;  // amu
+inline constexpr double kMinBondLength = 1.0;   // Angstrom: a crystal's nearest neighbours
+
+// "" when `mass` (amu) is an atom's, else why not (for a message after "mass = ...: ").
+inline std::string atom_mass_problem(double mass) {
+  if (mass >= kMinAtomMass && mass <= kMaxAtomMass) return {};
+  return fmt::format("an atom's mass lies in [{}, {}] amu (metal units)", kMinAtomMass, kMaxAtomMass);
+}
+
+}  // namespace mpmx::md
