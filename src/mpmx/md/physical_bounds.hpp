@@ -1,9 +1,9 @@
 #pragma once
 // What an atom of metal-unit MD can physically be, for refusing inputs that cannot be
-// right before anything is computed with them: a mass from the lightest atom (hydrogen,
-// 1.008 amu, with room below for isotopes-made-up tests) to beyond the heaviest (about
-// 300 amu) with room for coarse "atoms", and the shortest distance two atoms of a
-// crystal may start at (no bond is shorter than about 0.74 A, H2; metals 2-3 A).
+// right before anything is computed with them: a mass from below the lightest atom
+// (hydrogen, 1.008 amu) to beyond the heaviest (about 300 amu), with room for a coarse
+// "atom" of a few, and the shortest distance two atoms of a crystal may start at (no bond
+// is shorter than about 0.74 A, H2's; metals' neighbours are 2-3 A apart).
 #include <string>
 
 #include <fmt/format.h>

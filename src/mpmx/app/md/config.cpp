@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/md/physical_bounds.hpp"
 
 namespace mpmx::app::md {
 
@@ -16,11 +17,23 @@ namespace {
 
 constexpr std::int64_t kMax64 = std::numeric_limits<std::int64_t>::max();
 
+// An fcc lattice constant whose nearest neighbours (a / sqrt 2 apart) are no closer than
+// a bond can be (md/physical_bounds.hpp): 0.1 A put 2 million neighbours inside copper's
+// cutoff, so that `check` alone took 90 s and 11.7 GB to time the box.
+void check_fcc_constant(io::Section& s, std::string_view key, double a) {
+  const double nn = a / std::sqrt(2.0);
+  s.check(!(a > 0) || nn >= mpmx::md::kMinBondLength, key,
+          fmt::format("fcc nearest neighbours would be {:.4g} A apart (constant / sqrt 2), closer than any bond "
+                      "({} A): the atoms would start inside each other",
+                      nn, mpmx::md::kMinBondLength));
+}
+
 // [lattice]: the fcc crystal and its initial strain.
 void read_lattice(io::Section& lat, MdConfig& c) {
   lat.choice("type", {"fcc"}, "fcc");
   c.lattice_constant = lat.number("constant");
   lat.positive("constant", c.lattice_constant);
+  check_fcc_constant(lat, "constant", c.lattice_constant);
   const auto cells = lat.integers("cells", 1, 1000);  // unit cells along x, y, z
   if (cells.size() == 3 || cells.size() == 1) {
     for (int d = 0; d < 3; ++d) c.cells[d] = static_cast<int>(cells[cells.size() == 3 ? d : 0]);
@@ -74,6 +87,7 @@ void read_run(io::Section& run, bool jet, MdConfig& c) {
 void read_scan(io::Section& scan, MdConfig& c) {
   c.scan_from = scan.number("lattice_from");
   scan.positive("lattice_from", c.scan_from);
+  check_fcc_constant(scan, "lattice_from", c.scan_from);
   c.scan_to = scan.number("lattice_to");
   scan.check(c.scan_to > c.scan_from, "lattice_to", "must exceed lattice_from");
   c.scan_points = scan.integer_int("points", 41, 3, 100000);
