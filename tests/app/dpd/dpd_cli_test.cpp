@@ -211,6 +211,10 @@ TEST(DpdCli, BadDecksNameKeyValueAndReason) {
       {"dt = 0.005", "dt = -0.005", "'run.dt' = -0.005: must be positive"},
       // Issue 31: a skin of 1000 A ran out of memory building the lists.
       {"dt = 0.005", "dt = 0.005\nskin = 1000.0", "'run.skin' = 1000: must lie in [0, "},
+      // Issue 45: a cutoff past half a periodic box met particles through two images and
+      // their own, and heated the fluid to 1e29 K.
+      {"cells = [4, 4, 4]", "cells = [4, 3, 4]",
+       "box: the pair cutoff 12 A exceeds half the periodic length along y (21.69 A)"},
   };
   for (const BadCase& c : cases) {
     std::string text = kGoodDpdDeck;

@@ -34,7 +34,7 @@ id = "t"
 file = "fitted.toml"
 [[block]]
 constant = 7.23
-cells = [2, 2, 2]
+cells = [4, 4, 4]  # twice the 12 A cutoff: a periodic box DPD can run
 mass = 508.368
 [dpd]
 gamma = 0.2

@@ -252,6 +252,23 @@ void read_dpd_params(io::Section& dp, double rc, DpdConfig& c) {
   p.seed = static_cast<std::uint64_t>(seed);
 }
 
+// The pair forces' reach on every periodic axis: at most half the box, so that a particle
+// meets each other particle through one image at most and never its own (whose random
+// force, drawn per image, no dissipation balances: a cutoff of 60 A in a 79 A box heated
+// a fluid to 1e29 K).
+void check_reach_in_box(io::Section& root, const DpdConfig& c) {
+  const double reach = std::max(cutoff(c.potential), c.params.cutoff);
+  static const char* axes[3] = {"x", "y", "z"};
+  for (int d = 0; d < 3; ++d)
+    if (c.domain.periodic[d] && !(reach <= 0.5 * c.domain.length(d))) {
+      root.error(fmt::format("box: the pair cutoff {:.6g} A exceeds half the periodic length along {} ({:.6g} A): "
+                             "a particle would meet another through two images or itself; make the box at least "
+                             "{:.6g} A along {} or the axis open (\"f\")",
+                             reach, axes[d], c.domain.length(d), 2 * reach, axes[d]));
+      return;
+    }
+}
+
 // [equilibrate] and [run].
 void read_run(io::Section& root, DpdConfig& c) {
   const DpdParams& p = c.params;
@@ -320,6 +337,7 @@ DpdConfig read_dpd_config(io::Deck& deck) {
   auto dp = root.table("dpd");
   read_dpd_params(dp, rc, c);
   read_run(root, c);
+  check_reach_in_box(root, c);
   read_analysis(root, c, group_names);
   read_coupling(root, c);
   check_memory(root, c);
