@@ -230,6 +230,24 @@ TEST(DpdCli, BadDecksNameKeyValueAndReason) {
   }
 }
 
+// A figure of a thermo row that is not finite stops the run (exit 3) naming it, its step
+// and time, with the row written and run.json saying "stopped" (issue 45: a run at 1e29 K
+// stopped with no run.json).
+TEST(DpdCli, NonFiniteFigureStopsWithRunJson) {
+  std::string text = kGoodDpdDeck;
+  text.replace(text.find("mass = 508.368"), 14, "mass = 508.368\nvelocity = [1e300, 0.0, 0.0]");
+  const fs::path d = deck("inf.toml", text);
+  const fs::path out = dir() / "inf_out";
+  fs::remove_all(out);
+  const Result r = run_cli("dpd " + d.string() + " --out " + out.string() + " --quiet");
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(r.output.find("DPD step 0 (t = 0 ps): the kinetic energy (eV) is inf"), std::string::npos) << r.output;
+  const std::string json = slurp(out / "run.json");
+  EXPECT_NE(json.find("\"status\" : \"stopped\""), std::string::npos) << json;
+  EXPECT_NE(json.find("the kinetic energy (eV) is inf"), std::string::npos) << json;
+  EXPECT_TRUE(fs::exists(out / "thermo.csv"));
+}
+
 TEST(DpdCli, ExampleDecksValidate) {
   for (const char* name : {"D_dpd_equilibrium.toml", "D_dpde_cu_nve.toml"}) {
     const Result r = run_cli(std::string("dpd ") + MPMX_SOURCE_DIR + "/examples/" + name + " --check");
