@@ -215,6 +215,10 @@ TEST(DpdCli, BadDecksNameKeyValueAndReason) {
       // their own, and heated the fluid to 1e29 K.
       {"cells = [4, 4, 4]", "cells = [4, 3, 4]",
        "box: the pair cutoff 12 A exceeds half the periodic length along y (21.69 A)"},
+      // 4e6 particles 0.21 A apart: 1.4e6 neighbours each, 87 TB of pairs (the estimate
+      // per particle alone said 6 GB and let the run find out).
+      {"constant = 7.23\ncells = [4, 4, 4]", "constant = 0.3\ncells = [100, 100, 100]",
+       "4e+06 particles (2.73e+12 pairs within cutoff + skin) need about"},
   };
   for (const BadCase& c : cases) {
     std::string text = kGoodDpdDeck;

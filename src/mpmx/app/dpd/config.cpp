@@ -78,11 +78,14 @@ void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>&
 }
 
 // The run's memory, roughly: per particle its fields and its share of the neighbour list
-// and pair-force buffer (about 1.5 KiB at the seed's 12 Angstrom cutoff and density), and
-// the grid's node fields; refused with the figure when it exceeds the machine's memory.
+// and pair-force buffer (about 1.5 KiB at the seed's 12 Angstrom cutoff and density, 49
+// pairs a particle within cutoff + skin), or per pair 32 bytes (list, owner and sweep
+// slots, force buffer) where the blocks are denser than the seed's (a constant of 0.5 A
+// under a 12 A cutoff: 150,000 pairs a particle); and the grid's node fields; refused
+// with the figure when it exceeds the machine's memory.
 void check_memory(io::Section& root, const DpdConfig& c) {
   const double particles = block_particles(c);
-  double bytes = 1536.0 * particles;
+  double bytes = std::max(1536.0 * particles, 32.0 * block_pairs(c));
   if (c.grid.cell > 0) {
     double nodes = 1;
     const double size[3] = {c.domain.box.lx, c.domain.box.ly, c.domain.box.lz};
@@ -100,8 +103,10 @@ void check_memory(io::Section& root, const DpdConfig& c) {
   const double have = static_cast<double>(physical_memory_bytes());
   if (have > 0)
     root.check(bytes <= 0.8 * have, "block",
-               fmt::format("{:.3g} particles{} need about {}, more than 80% of this machine's {}", particles,
-                           c.grid.cell > 0 ? " and their grid" : "", format_bytes(bytes), format_bytes(have)));
+               fmt::format("{:.3g} particles ({:.3g} pairs within cutoff + skin){} need about {}, more than 80% of "
+                           "this machine's {}",
+                           particles, block_pairs(c), c.grid.cell > 0 ? " and their grid" : "", format_bytes(bytes),
+                           format_bytes(have)));
 }
 
 // [grid] and [continuum].
