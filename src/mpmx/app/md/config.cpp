@@ -17,15 +17,9 @@ namespace {
 
 constexpr std::int64_t kMax64 = std::numeric_limits<std::int64_t>::max();
 
-// An fcc lattice constant whose nearest neighbours (a / sqrt 2 apart) are no closer than
-// a bond can be (md/physical_bounds.hpp): 0.1 A put 2 million neighbours inside copper's
-// cutoff, so that `check` alone took 90 s and 11.7 GB to time the box.
+// An fcc lattice constant whose atoms start no closer than a bond (md/physical_bounds.hpp).
 void check_fcc_constant(io::Section& s, std::string_view key, double a) {
-  const double nn = a / std::sqrt(2.0);
-  s.check(!(a > 0) || nn >= mpmx::md::kMinBondLength, key,
-          fmt::format("fcc nearest neighbours would be {:.4g} A apart (constant / sqrt 2), closer than any bond "
-                      "({} A): the atoms would start inside each other",
-                      nn, mpmx::md::kMinBondLength));
+  if (const std::string why = mpmx::md::fcc_constant_problem(a); !why.empty()) s.check(false, key, why);
 }
 
 // [lattice]: the fcc crystal and its initial strain.
