@@ -186,3 +186,14 @@ TEST(MdConfigPhysical, MassesOutsideAnAtomsAreRefused) {
         << msg;
   }
 }
+
+// Step counts whose sum the run's counter cannot hold are refused, not wrapped (issue 45).
+TEST(MdConfigHostile, StepSumsPastAnInt64AreRefused) {
+  const std::string t = lj_deck("3", "1000") + "[thermal]\nrelax_steps = 9223372036854775000\n";
+  const std::string msg = error(t);
+  EXPECT_NE(msg.find("key 'thermal.relax_steps' = 9223372036854775000: plus run.steps is more steps than a run "
+                     "can count"),
+            std::string::npos)
+      << msg;
+  EXPECT_EQ(error(lj_deck("3", "1000") + "[thermal]\nrelax_steps = 9223372036854774807\n"), "(no error)");
+}

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/app/dpd/budget.hpp"
+#include "mpmx/core/checked_count.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/file_text.hpp"
 #include "mpmx/core/machine.hpp"
@@ -295,6 +296,9 @@ void read_run(io::Section& root, DpdConfig& c) {
   if (c.equilibrate)
     eq.check(c.berendsen.tau >= c.dt, "tau", fmt::format("must be at least the time step run.dt = {} ps", c.dt));
   c.steps = run.integer("steps", 0, kMaxSteps);
+  // The run counts its steps from the start of the equilibration.
+  eq.check(checked_sum(c.equilibrate ? c.equilibrate_steps : 0, c.steps).has_value(), "steps",
+           "plus run.steps is more steps than a run can count (2^63 - 1)");
   // The system advances thermo steps at a time in an int.
   c.thermo = run.integer("thermo", 100, 1, std::numeric_limits<int>::max());
   c.dump_every = run.integer("dump_every", 0, 0, kMaxSteps);

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/core/checked_count.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/physical_bounds.hpp"
 
@@ -245,6 +246,11 @@ MdConfig read_md_config(io::Deck& deck) {
   }
   auto rod = root.optional_table("rod");
   if (rod.present()) read_rod(root, rod, bar.present() || jet.present(), c);
+  // The run counts its steps from the start, relaxation or equilibration included.
+  th.check(checked_sum(c.relax_steps, c.steps).has_value(), "relax_steps",
+           "plus run.steps is more steps than a run can count (2^63 - 1)");
+  rod.check(checked_sum(c.rod_equilibrate_steps, c.steps).has_value(), "equilibrate_steps",
+            "plus run.steps is more steps than a run can count (2^63 - 1)");
   deck.finish();
   return c;
 }
