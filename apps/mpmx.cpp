@@ -53,9 +53,12 @@ const char* unknown_command(CLI::App& app, int argc, char** argv) {
 
 // Under MPI: an error every rank agreed on is printed once, by rank 0, and every rank
 // exits with its status; an error only this rank saw is printed with the rank's number
-// and ends the whole job (the other ranks would wait for it for ever).
-int finish(int code, const std::string& message) {
+// and ends the whole job (the other ranks would wait for it for ever). Control characters
+// a message still holds (from a deck, a path, a file) are escaped here, the last step
+// before the terminal; its own line breaks stay.
+int finish(int code, const std::string& text) {
   namespace ranks = mpmx::ranks;
+  const std::string message = mpmx::escape_controls(text, true);
   if (ranks::size() == 1 || ranks::failure_agreed()) {
     if (ranks::root()) fmt::print(stderr, "{}", message);
     return code;

@@ -108,6 +108,43 @@ TEST(FileMessages, QuoteExcerptEscapesAndCuts) {
   EXPECT_EQ(quote_excerpt(std::string(100, 'x'), 4), "'xxxx'... (100 bytes)");
 }
 
+// Text a user gave is shown, never obeyed (issue 45): control characters and NUL in a
+// deck's strings, keys and paths are escaped in every message and progress line, and a
+// NUL no longer cuts a message short.
+TEST(FileMessages, EscapeControlsEscapesControlCharactersOnly) {
+  EXPECT_EQ(escape_controls(std::string("a\x1b[2J\0b\n\t\x7f", 10)), "a\\x1b[2J\\x00b\\x0a\\x09\\x7f");
+  EXPECT_EQ(escape_controls("line\n\tnext", true), "line\n\tnext");
+  EXPECT_EQ(escape_controls("Kupfer \xc3\xa9 \xe2\x84\xab"), "Kupfer \xc3\xa9 \xe2\x84\xab");  // UTF-8 stays
+  EXPECT_EQ(short_path(std::string("a\0b", 3)), "a\\x00b");
+}
+
+TEST(FileMessages, ControlCharactersInACaseIdAreEscaped) {
+  std::ifstream in(a1());
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.replace(text.find("id = \"A1\""), 9, "id = \"A1\\u001b[31mRED\\u0000x\\ny\"");
+  const auto deck = test::scratch_file("esc_id.toml", text);
+  auto r = test::run_cli("check " + deck.string());
+  EXPECT_EQ(r.status, exit_code::done) << r.output;
+  EXPECT_HAS(r.output, "case A1\\x1b[31mRED\\x00x\\x0ay,");
+  EXPECT_TRUE(printable(r.output)) << r.output;
+  // A key written with control characters, named in the unknown-key message.
+  text.replace(text.find("[case]"), 6, "[case]\n\"k\\u001b]0;title\\u0007\" = 1");
+  r = test::run_cli("check " + test::scratch_file("esc_key.toml", text).string());
+  EXPECT_EQ(r.status, exit_code::bad_input) << r.output;
+  EXPECT_HAS(r.output, "k\\x1b]0;title\\x07");
+  EXPECT_TRUE(printable(r.output)) << r.output;
+}
+
+TEST(FileMessages, ANulInAPotentialFileNameDoesNotCutTheMessage) {
+  const auto deck = test::scratch_file("nul_file.toml", "[potential]\nstyle = \"eam\"\nfile = \"Cu\\u0000.eam\\u001b[2J\"\n"
+                                                        "[lattice]\nconstant = 3.615\ncells = [3, 3, 3]\n[run]\n"
+                                                        "dt = 0.001\nsteps = 1\n");
+  const auto r = test::run_cli("md " + deck.string() + " --check");
+  EXPECT_EQ(r.status, exit_code::bad_input) << r.output;
+  EXPECT_HAS(r.output, "potential file 'Cu\\x00.eam\\x1b[2J' not found (tried: ");
+  EXPECT_TRUE(printable(r.output)) << r.output;
+}
+
 // The standing wave's velocity is zero everywhere at t = 0.5 and its strain at t = 1: the
 // errors there are against the wave's size over the run, not against rounding (1e16).
 TEST(FileMessages, ErrorWhereTheSolutionIsZeroIsScaledByTheRun) {

@@ -1,11 +1,16 @@
 // The EAM potential files (funcfl .eam, setfl .eam.alloy, Finnis-Sinclair .eam.fs; the
 // first byte picks the format), read and, when they read, made into the potential the MD
-// uses for their first element (the splines of every table).
+// uses for their first element (the splines of every table). A file that reads describes
+// a potential (issue 45): masses an atom's, spacings finite and positive, the density grid
+// finite; anything else is a reader that let a damaged file through, and aborts.
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 
 #include "fuzz_util.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/potential/eam_file.hpp"
+#include "mpmx/md/physical_bounds.hpp"
 #include "mpmx/md/potential/potential.hpp"
 
 namespace mpmx::fuzz {
@@ -17,6 +22,9 @@ inline int eam(const std::uint8_t* data, std::size_t size) {
   const std::string path = fuzz::as_file(names[data[0] % 3], fuzz::view(data + 1, size - 1));
   try {
     const md::EamTables t = md::read_eam(path);
+    for (const double m : t.masses)
+      if (!(m >= md::kMinAtomMass && m <= md::kMaxAtomMass)) std::abort();
+    if (!(t.dr > 0 && t.drho > 0 && std::isfinite(t.rhomax) && t.cut / t.dr >= 10)) std::abort();
     if (t.elements.empty()) return 0;
     md::EamSpec spec;
     spec.file = path;

@@ -31,12 +31,18 @@ std::string read_text(const std::string& p) {
   return ss.str();
 }
 
-// The Mishin Cu file with line `line` (1-based) replaced.
-std::string cu_with_line(int line, const std::string& text) {
-  std::istringstream in(read_text(kCuMishin));
+// A file's text with line `line` (1-based) replaced.
+std::string with_line(const std::string& path, int line, const std::string& text) {
+  std::istringstream in(read_text(path));
   std::string out, l;
   for (int n = 1; std::getline(in, l); ++n) out += (n == line ? text : l) + "\n";
   return out;
+}
+
+// The Mishin Cu file (setfl) and Debian's Cu_u3.eam (funcfl) with a line replaced.
+std::string cu_with_line(int line, const std::string& text) { return with_line(kCuMishin, line, text); }
+std::string u3_with_line(int line, const std::string& text) {
+  return with_line(kLammpsPotentials + "Cu_u3.eam", line, text);
 }
 
 std::string error_of(const std::string& path) {
@@ -165,4 +171,56 @@ TEST(EamFileHostile, EmptyFileAndDirectoryAreNamed) {
   std::filesystem::create_directories(dir);
   msg = error_of(dir.string());
   EXPECT_NE(msg.find("Dir.eam.alloy: is a directory"), std::string::npos) << msg;
+}
+
+// Tables that parse but describe no potential (issue 45): refused on the header line with
+// the value and the reason, not run (dr = 1e-300 ran with no interaction at all, drho =
+// 1e300 gave -1.20 eV/atom for -3.54, mass = 1e-300 an infinite temperature).
+TEST(EamFileDamaged, TablesThatEndBeforeTheCutoffAreRefused) {
+  auto msg = error_of(scratch_file("u3_dr.eam", u3_with_line(3, "500 5.01e-04 500 1e-300 4.95")));
+  EXPECT_NE(msg.find("u3_dr.eam:3: nr * dr = 500 * 1e-300 = 5e-298 A ends before the cutoff 4.95 A"),
+            std::string::npos)
+      << msg;
+  // One interval short of the cutoff (LAMMPS's files reach it exactly or beyond).
+  msg = error_of(scratch_file("u3_short.eam", u3_with_line(3, "500 5.01e-04 500 0.0098 4.95")));
+  EXPECT_NE(msg.find("u3_short.eam:3: nr * dr = 500 * 0.0098 = 4.9 A ends before the cutoff 4.95 A"),
+            std::string::npos)
+      << msg;
+  msg = error_of(scratch_file("Cu_dr.eam.alloy", cu_with_line(5, "10001 0.000164 10001 0.0001 5.50679")));
+  EXPECT_NE(msg.find("Cu_dr.eam.alloy:5: nr * dr = 10001 * 0.0001 = 1.0001 A ends before the cutoff 5.50679 A"),
+            std::string::npos)
+      << msg;
+}
+
+TEST(EamFileDamaged, DegenerateSpacingsAreRefused) {
+  // Five intervals below the cutoff: nothing is tabulated.
+  auto msg = error_of(scratch_file("u3_coarse.eam", u3_with_line(3, "500 5.01e-04 500 1.0 4.95")));
+  EXPECT_NE(msg.find("u3_coarse.eam:3: dr = 1 A leaves 4.95 grid intervals below the cutoff 4.95 A: at least 10"),
+            std::string::npos)
+      << msg;
+  msg = error_of(scratch_file("u3_drho.eam", u3_with_line(3, "500 1e300 500 0.01 4.95")));
+  EXPECT_NE(msg.find("u3_drho.eam:3: drho = 1e+300 is coarser than the largest density one neighbour brings "
+                     "beyond 1 A"),
+            std::string::npos)
+      << msg;
+  msg = error_of(scratch_file("Cu_drho.eam.alloy", cu_with_line(5, "10001 1e300 10001 0.0009 5.50679")));
+  EXPECT_NE(msg.find("Cu_drho.eam.alloy:5: drho = 1e+300 is coarser"), std::string::npos) << msg;
+  // Finnis-Sinclair: every rho_ij(r) table counts (CuZr_mm's header, drho changed).
+  const std::string fs_text =
+      with_line(kLammpsPotentials + "CuZr_mm.eam.fs", 5, "10000 1e300 10000 0.00076 7.6");
+  msg = error_of(scratch_file("CuZr_drho.eam.fs", fs_text));
+  EXPECT_NE(msg.find("CuZr_drho.eam.fs:5: drho = 1e+300 is coarser"), std::string::npos) << msg;
+}
+
+TEST(EamFileDamaged, MassesOutsideAnAtomsAreRefused) {
+  auto msg = error_of(scratch_file("u3_mass.eam", u3_with_line(2, "29 1e-300 3.615 FCC")));
+  EXPECT_NE(msg.find("u3_mass.eam:2: mass = 1e-300 amu: an atom's mass lies in [0.5, 1000] amu"), std::string::npos)
+      << msg;
+  msg = error_of(scratch_file("Cu_mass.eam.alloy", cu_with_line(6, "29 5000 3.615 fcc")));
+  EXPECT_NE(msg.find("Cu_mass.eam.alloy:6: mass = 5000 amu of element Cu: an atom's mass lies in [0.5, 1000]"),
+            std::string::npos)
+      << msg;
+  // The bounds themselves are an atom's.
+  EXPECT_NO_THROW(read_eam(scratch_file("u3_light.eam", u3_with_line(2, "1 0.5 3.615 FCC"))));
+  EXPECT_NO_THROW(read_eam(scratch_file("u3_heavy.eam", u3_with_line(2, "29 1000 3.615 FCC"))));
 }

@@ -44,7 +44,7 @@ def main(run_dir):
     ax.set_xlabel(units.label("cell size dx", "length"))
     ax.set_ylabel("L2 error (relative)")
     case = run.get("deck", {}).get("case", {})
-    head = f"{case.get('id', '')}: {case.get('title', 'convergence')}".strip(": ")
+    head = plot_units.shown(f"{case.get('id', '')}: {case.get('title', 'convergence')}".strip(": "))
     # Wrapped to the axes' width: a long case title is otherwise cut at the figure's edge.
     ax.set_title("\n".join(textwrap.wrap(f"{head}, grid convergence", 60)), fontsize=10)
     ax.grid(True, which="both", alpha=0.3)

@@ -88,3 +88,9 @@ class Units:
         """What a figure without named units should say about them: the deck's own text
         (e.g. 'dimensionless (E = rho0 = 1, c = 1)'), or ''."""
         return "" if self.name or not self.text else f"units: {self.text}"
+
+
+def shown(text):
+    """Text from a deck (case id, title) for a figure: control characters written \\xNN,
+    as mpmx prints them (matplotlib's missing-glyph warnings would echo them raw)."""
+    return "".join(c if ord(c) >= 0x20 and ord(c) != 0x7F else f"\\x{ord(c):02x}" for c in str(text))

@@ -366,7 +366,7 @@ def main(argv=None):
             try:
                 with open(run_json) as f:
                     c = json.load(f).get("deck", {}).get("case", {})
-                case = f"{c.get('id', '')}: {c.get('title', '')}".strip(": ")
+                case = plot_units.shown(f"{c.get('id', '')}: {c.get('title', '')}".strip(": "))
             except (OSError, ValueError):
                 pass
         time = frames[0][0]

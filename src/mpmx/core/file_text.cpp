@@ -56,8 +56,20 @@ std::string file_problem(const fs::path& path, std::string_view what) {
 
 std::string short_path(const std::string& path) {
   constexpr std::size_t kEnds = 60;
-  if (path.size() <= 3 * kEnds) return path;
-  return fmt::format("{}...{} ({} characters)", path.substr(0, kEnds), path.substr(path.size() - kEnds), path.size());
+  if (path.size() <= 3 * kEnds) return escape_controls(path);
+  return fmt::format("{}...{} ({} characters)", escape_controls(path.substr(0, kEnds)),
+                     escape_controls(path.substr(path.size() - kEnds)), path.size());
+}
+
+std::string escape_controls(std::string_view text, bool keep_line_breaks) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if ((c >= 0x20 && c != 0x7f) || (keep_line_breaks && (c == '\n' || c == '\t'))) out += ch;
+    else out += fmt::format("\\x{:02x}", c);
+  }
+  return out;
 }
 
 std::string escape_unprintable(std::string_view text) {

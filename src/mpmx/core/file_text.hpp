@@ -18,8 +18,15 @@ std::string path_problem(const std::filesystem::path& path, const std::error_cod
 // folder, is too long, cannot be read. `what` names it in the sentence ("deck file").
 std::string file_problem(const std::filesystem::path& path, std::string_view what);
 
-// A path for a message: whole when short, else its first and last characters and its length.
+// A path for a message (control characters escaped): whole when short, else its first and
+// last characters and its length.
 std::string short_path(const std::string& path);
+
+// `text` safe to print: each control character (bytes 0-31 and 127: NUL, ESC, newline...)
+// written \xNN, other bytes (UTF-8 included) as they are. `keep_line_breaks` keeps '\n'
+// and '\t' (a whole message of several lines). Every text a user gave (deck strings,
+// keys, paths) passes through it before it reaches a terminal or a message.
+std::string escape_controls(std::string_view text, bool keep_line_breaks = false);
 
 // `text` with each byte outside printable ASCII written \xNN.
 std::string escape_unprintable(std::string_view text);

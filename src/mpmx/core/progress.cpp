@@ -5,12 +5,14 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/core/machine.hpp"
 
 namespace mpmx {
 
 Progress::Progress(std::string label, std::int64_t total, bool quiet, std::int64_t from)
-    : label_(std::move(label)), total_(total), from_(from), active_(!quiet), terminal_(isatty(fileno(stderr))),
+    : label_(escape_controls(label)),  // a case id from a deck: shown, never obeyed by the terminal
+      total_(total), from_(from), active_(!quiet), terminal_(isatty(fileno(stderr))),
       start_(clock::now()), last_(start_) {}
 
 void Progress::show_rate(double items, std::string unit) {

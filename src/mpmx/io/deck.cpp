@@ -44,8 +44,10 @@ std::string type_name(const toml::node& n) {
   }
 }
 
+// A key's dotted path, for messages and the known-key set: a key written with control
+// characters (TOML allows "a\u001b" = 1) is shown escaped.
 std::string join_path(const std::string& prefix, std::string_view key) {
-  return prefix.empty() ? std::string(key) : prefix + "." + std::string(key);
+  return prefix.empty() ? escape_controls(key) : prefix + "." + escape_controls(key);
 }
 
 constexpr std::int64_t kMin64 = std::numeric_limits<std::int64_t>::min();
@@ -99,7 +101,7 @@ std::string describe(const toml::node& node) {
     for (std::size_t i = 0; i < a->size(); ++i) os << (i ? ", " : "") << describe(*a->get(i));
     os << ']';
   } else if (auto s = node.value<std::string>(); s && node.is_string()) {
-    os << '"' << *s << '"';
+    os << '"' << escape_controls(*s) << '"';  // a deck's text never reaches a terminal raw
   } else if (node.is_floating_point()) {
     os << fmt::format("{}", node.as_floating_point()->get());
   } else if (node.is_integer()) {
@@ -304,7 +306,8 @@ std::string Section::choice(std::string_view key, const std::vector<std::string>
   if (n && n->is_string() && std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
     std::string list;
     for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-    deck_->add_key_error(n, key_path(key), fmt::format("key '{}' = \"{}\": not one of {}", key_path(key), v, list));
+    deck_->add_key_error(n, key_path(key),
+                         fmt::format("key '{}' = \"{}\": not one of {}", key_path(key), escape_controls(v), list));
     return allowed.front();
   }
   return n ? v : allowed.front();
@@ -497,10 +500,11 @@ bool Deck::add_key_error(const toml::node* where, const std::string& key_path, s
 }
 
 void Deck::add_error(const toml::node* where, std::string message) {
+  // Escaped whole: the deck's name and what a file the deck names said are a user's text too.
   if (where && where->source().begin.line > 0)
-    errors_.push_back(fmt::format("{}:{}: {}", name_, where->source().begin.line, message));
+    errors_.push_back(escape_controls(fmt::format("{}:{}: {}", name_, where->source().begin.line, message), true));
   else
-    errors_.push_back(fmt::format("{}: {}", name_, message));
+    errors_.push_back(escape_controls(fmt::format("{}: {}", name_, message), true));
 }
 
 void Deck::collect_unknown(const toml::table& t, const std::string& prefix) {

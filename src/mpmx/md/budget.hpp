@@ -36,7 +36,9 @@ double box_bytes(const double n[3], double a, double reach);
 
 // Atom-steps a second of a periodic fcc box of cells^3 cells of lattice constant `a` on
 // this core, timed for about a tenth of a second after ten steps that build its lists:
-// what a budget scales a run's work by, measured rather than typed in.
+// what a budget scales a run's work by, measured rather than typed in. 0 (the caller takes
+// kMdAtomStepsPerSecond) when the box would hold more than kMaxTimedPairs pairs.
+inline constexpr double kMaxTimedPairs = 2e6;  // a 500-atom copper box holds 19,000
 double measure_atom_steps_per_second(const Potential& pot, const SystemOptions& options, double a, int cells,
                                      double temperature, std::uint64_t seed, double dt);
 

@@ -211,6 +211,14 @@ TEST(DpdCli, BadDecksNameKeyValueAndReason) {
       {"dt = 0.005", "dt = -0.005", "'run.dt' = -0.005: must be positive"},
       // Issue 31: a skin of 1000 A ran out of memory building the lists.
       {"dt = 0.005", "dt = 0.005\nskin = 1000.0", "'run.skin' = 1000: must lie in [0, "},
+      // Issue 45: a cutoff past half a periodic box met particles through two images and
+      // their own, and heated the fluid to 1e29 K.
+      {"cells = [4, 4, 4]", "cells = [4, 3, 4]",
+       "box: the pair cutoff 12 A exceeds half the periodic length along y (21.69 A)"},
+      // 4e6 particles 0.21 A apart: 1.4e6 neighbours each, 87 TB of pairs (the estimate
+      // per particle alone said 6 GB and let the run find out).
+      {"constant = 7.23\ncells = [4, 4, 4]", "constant = 0.3\ncells = [100, 100, 100]",
+       "4e+06 particles (2.73e+12 pairs within cutoff + skin) need about"},
   };
   for (const BadCase& c : cases) {
     std::string text = kGoodDpdDeck;
@@ -224,6 +232,24 @@ TEST(DpdCli, BadDecksNameKeyValueAndReason) {
     EXPECT_NE(r.output.find(c.expect), std::string::npos) << "expected '" << c.expect << "' in:\n" << r.output;
     EXPECT_FALSE(fs::exists(out)) << c.to;
   }
+}
+
+// A figure of a thermo row that is not finite stops the run (exit 3) naming it, its step
+// and time, with the row written and run.json saying "stopped" (issue 45: a run at 1e29 K
+// stopped with no run.json).
+TEST(DpdCli, NonFiniteFigureStopsWithRunJson) {
+  std::string text = kGoodDpdDeck;
+  text.replace(text.find("mass = 508.368"), 14, "mass = 508.368\nvelocity = [1e300, 0.0, 0.0]");
+  const fs::path d = deck("inf.toml", text);
+  const fs::path out = dir() / "inf_out";
+  fs::remove_all(out);
+  const Result r = run_cli("dpd " + d.string() + " --out " + out.string() + " --quiet");
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_NE(r.output.find("DPD step 0 (t = 0 ps): the kinetic energy (eV) is inf"), std::string::npos) << r.output;
+  const std::string json = slurp(out / "run.json");
+  EXPECT_NE(json.find("\"status\" : \"stopped\""), std::string::npos) << json;
+  EXPECT_NE(json.find("the kinetic energy (eV) is inf"), std::string::npos) << json;
+  EXPECT_TRUE(fs::exists(out / "thermo.csv"));
 }
 
 TEST(DpdCli, ExampleDecksValidate) {
@@ -270,7 +296,9 @@ TEST(DpdCli, WorkBeyondADayIsRefusedUnlessForced) {
   ASSERT_NE(at, std::string::npos);
   const auto steps = text.find("steps = ", at);
   ASSERT_NE(steps, std::string::npos);
-  text.replace(steps, text.find('\n', steps) - steps, "steps = 9223372036854775807");
+  // The most a run counts with its 40 equilibration steps (2^63 - 1 in all; one more is
+  // refused as a count, not as work).
+  text.replace(steps, text.find('\n', steps) - steps, "steps = 9223372036854775767");
   const fs::path d = deck("forever.toml", text);
   for (const std::string flags : {"", " --check"}) {
     const fs::path out = dir() / "forever_out";

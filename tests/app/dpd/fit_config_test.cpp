@@ -34,7 +34,7 @@ id = "t"
 file = "fitted.toml"
 [[block]]
 constant = 7.23
-cells = [2, 2, 2]
+cells = [4, 4, 4]  # twice the 12 A cutoff: a periodic box DPD can run
 mass = 508.368
 [dpd]
 gamma = 0.2
@@ -186,4 +186,9 @@ TEST(FitConfig, IntegersAndLatticeConstantAreBounded) {
   }
   const std::string e = error_of("lattice_constant = 3.61", "lattice_constant = 1e-300");
   EXPECT_NE(e.find("key 'md.lattice_constant' = 1e-300: must lie in [0.5, 100] Angstrom"), std::string::npos) << e;
+  // Within that range, atoms closer than a bond (issue 45).
+  const std::string close = error_of("lattice_constant = 3.61", "lattice_constant = 1.2");
+  EXPECT_NE(close.find("key 'md.lattice_constant' = 1.2: fcc nearest neighbours would be 0.8485 A apart"),
+            std::string::npos)
+      << close;
 }

@@ -86,3 +86,16 @@ TEST(MdBudget, JetBinsBeyondTheAtomsAreRefused) {
   const std::string e = budget_error(estimate_md(md_config_of(text), 5.0), 0, false);
   EXPECT_NE(e.find("jet.bins: 1e+07 bins for 2.802e+04 atoms"), std::string::npos) << e;
 }
+
+// A box a few angstrom across under a cutoff of hundreds: the ghost layer would span more
+// periodic images than the neighbour list tracks, which the run found only at its start
+// (exit 3, nothing written); now the estimate refuses it with the figure (issue 45).
+TEST(MdBudget, ACutoffAcrossTooManyBoxLengthsIsRefused) {
+  auto c = md_config_of(lj_deck("1", "10"));
+  auto msg = budget_error(estimate_md(c, 500.0), 0, false);
+  EXPECT_NE(msg.find("lattice.cells: the potential's cutoff plus run.skin reaches 138.6 times across the box's "
+                     "shortest edge: at most 100 periodic images"),
+            std::string::npos)
+      << msg;
+  EXPECT_EQ(budget_error(estimate_md(c, 5.0), 0, false), "");
+}

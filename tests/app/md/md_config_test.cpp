@@ -24,17 +24,19 @@ using mpmx::test::lj_deck;
 using mpmx::test::md_config_of;
 using mpmx::test::scratch_file;
 
+// What the reader says of a deck, or "(no error)".
+std::string error(const std::string& text) {
+  try {
+    md_config_of(text);
+  } catch (const mpmx::InputError& e) {
+    return std::string(e.what());
+  }
+  return std::string("(no error)");
+}
+
 }  // namespace
 
 TEST(MdConfigHostile, IntegersAreRangeCheckedNotWrapped) {
-  auto error = [](const std::string& text) {
-    try {
-      md_config_of(text);
-    } catch (const mpmx::InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
-  };
   std::string t = lj_deck("5", "10");
   t += "[scan]\nlattice_from = 3.5\nlattice_to = 3.7\npoints = 4294967299\n";
   auto msg = error(t);
@@ -84,14 +86,6 @@ TEST(MdConfigHostile, NanVelocityGradientIsRefusedAtReadTime) {
 
 TEST(MdConfigHostile, PotentialFileIsParsedAndItsElementsCheckedAtReadTime) {
   const std::string empty = scratch_file("Empty2.eam.alloy", "");
-  auto error = [](const std::string& text) {
-    try {
-      md_config_of(text);
-    } catch (const mpmx::InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("(no error)");
-  };
   const std::string eam = "[potential]\nstyle = \"eam\"\nfile = \"FILE\"\nelements = [ELEMENTS]\n"
                           "[lattice]\nconstant = 3.615\ncells = [3]\n[run]\ndt = 0.001\nsteps = 10\n";
   auto deck = [&](const std::string& file, const std::string& elements) {
@@ -159,4 +153,47 @@ dt = 0.001
   const std::string half = error_of("", "cells = [400, 200, 3]\npiston_cells = 40\nnotch_depth_nm = 36.0\n"
                                         "bins = [8, 4]\nduration_ps = 1.005\nrecord_every_ps = 1.005\nscale = 0.1\n");
   EXPECT_TRUE(has(half, "jet.duration_ps") && has(half, "100.5") && has(half, "not a whole number")) << half;
+}
+
+// Inputs that cannot be an atom's crystal (issue 45): refused by the reader with the key,
+// the value and the reason, so that `check` and the run both stop with exit 2.
+TEST(MdConfigPhysical, AtomsCloserThanABondAreRefused) {
+  std::string t = lj_deck("3", "10");
+  t.replace(t.find("constant = 3.615"), 16, "constant = 0.1");
+  auto msg = error(t);
+  EXPECT_NE(msg.find("key 'lattice.constant' = 0.1: fcc nearest neighbours would be 0.07071 A apart (constant / "
+                     "sqrt 2), closer than any bond (1 A)"),
+            std::string::npos)
+      << msg;
+  // The bound itself: nearest neighbours exactly 1 A apart are a crystal.
+  t = lj_deck("3", "10");
+  t.replace(t.find("constant = 3.615"), 16, "constant = 1.4143");
+  EXPECT_EQ(error(t), "(no error)");
+  t = lj_deck("3", "10") + "[scan]\nlattice_from = 1.2\nlattice_to = 3.7\n";
+  msg = error(t);
+  EXPECT_NE(msg.find("key 'scan.lattice_from' = 1.2: fcc nearest neighbours would be 0.8485 A apart"),
+            std::string::npos)
+      << msg;
+}
+
+TEST(MdConfigPhysical, MassesOutsideAnAtomsAreRefused) {
+  for (const std::string mass : {"1e-300", "0.4", "1001.5"}) {
+    std::string t = lj_deck("3", "10");
+    t.replace(t.find("mass = 63.5"), 11, "mass = " + mass);
+    const auto msg = error(t);
+    EXPECT_NE(msg.find("key 'potential.mass' = " + mass + ": an atom's mass lies in [0.5, 1000] amu"),
+              std::string::npos)
+        << msg;
+  }
+}
+
+// Step counts whose sum the run's counter cannot hold are refused, not wrapped (issue 45).
+TEST(MdConfigHostile, StepSumsPastAnInt64AreRefused) {
+  const std::string t = lj_deck("3", "1000") + "[thermal]\nrelax_steps = 9223372036854775000\n";
+  const std::string msg = error(t);
+  EXPECT_NE(msg.find("key 'thermal.relax_steps' = 9223372036854775000: plus run.steps is more steps than a run "
+                     "can count"),
+            std::string::npos)
+      << msg;
+  EXPECT_EQ(error(lj_deck("3", "1000") + "[thermal]\nrelax_steps = 9223372036854774807\n"), "(no error)");
 }

@@ -201,3 +201,24 @@ TEST(MpmPreflight, CheckAndRunAgree) {
 }
 
 }  // namespace
+
+// `check` bounded for every deck (issue 45): a count too large is refused from the counts,
+// before a point is placed or a step counted. Before, per_cell = 10^6 in 2-D placed points
+// for the rate timing for minutes, and dt = "cfl" to 1e300 printed -9223372036854775808 steps.
+TEST(MpmPreflight, AMillionPointsPerCellAxisIsRefusedFromTheCounts) {
+  std::string text = grid_deck(2, 20, 1);
+  text.replace(text.find("per_cell = [1, 1]"), 17, "per_cell = 1000000");
+  const std::string why = mpm_refusal(text, 24ull << 30);
+  EXPECT_HAS(why, "particles.per_cell and grid.cells: 4e+14 points");
+  EXPECT_HAS(why, "more than this machine's 24 GiB");
+}
+
+TEST(MpmPreflight, StepCountsPastWhatARunCountsAreRefused) {
+  std::string text = grid_deck(2, 10, 2);
+  text.replace(text.find("end = 1e-2"), 10, "end = 1e300");
+  EXPECT_HAS(mpm_refusal(text), "key 'time.end' = 1e+300: is 1e+303 steps of dt = 0.001: more than the 1e+15");
+  text.replace(text.find("dt = 1e-3"), 9, "dt = \"cfl\"");
+  const std::string why = mpm_refusal(text);
+  EXPECT_HAS(why, "key 'time.end' = 1e+300: is ");
+  EXPECT_HAS(why, "(the CFL condition's at the start): more than the 1e+15 a run may take");
+}

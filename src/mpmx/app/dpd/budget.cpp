@@ -1,5 +1,8 @@
 #include "mpmx/app/dpd/budget.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "mpmx/app/dpd/particle_rate.hpp"
@@ -12,6 +15,19 @@ double block_particles(const DpdConfig& c) {
   for (const auto& b : c.blocks)
     particles += b.fcc ? 4.0 * b.cells[0] * b.cells[1] * b.cells[2] : static_cast<double>(b.count);
   return particles;
+}
+
+double block_pairs(const DpdConfig& c) {
+  const double reach = std::max(cutoff(c.potential), c.params.cutoff) + c.skin;
+  const double sphere = (4.0 / 3.0) * M_PI * reach * reach * reach;
+  double pairs = 0;
+  for (const auto& b : c.blocks) {
+    const double n = b.fcc ? 4.0 * b.cells[0] * b.cells[1] * b.cells[2] : static_cast<double>(b.count);
+    const double density = b.fcc ? 4.0 / (b.constant * b.constant * b.constant)
+                                  : n / (b.size[0] * b.size[1] * b.size[2]);
+    pairs += 0.5 * n * std::min(n, sphere * density);  // a block holds no more neighbours than particles
+  }
+  return pairs;
 }
 
 DpdBudget estimate_dpd(const DpdConfig& c) {

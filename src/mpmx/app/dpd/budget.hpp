@@ -27,6 +27,9 @@ struct DpdBudget {
 };
 
 double block_particles(const DpdConfig& c);
+// Pairs within cutoff + skin, from the counts: each block's particles at its own density
+// (fcc 4 / a^3, a random fill its count over its volume), as the neighbour list will hold.
+double block_pairs(const DpdConfig& c);
 DpdBudget estimate_dpd(const DpdConfig& c);
 // Throws InputError when the work exceeds a day, unless `force`.
 void check_dpd_work(const DpdBudget& b, bool force);

@@ -9,7 +9,9 @@
 #include <fmt/format.h>
 
 #include "mpmx/app/dpd/budget.hpp"
+#include "mpmx/core/checked_count.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/core/units.hpp"
 
@@ -77,11 +79,14 @@ void read_analysis(io::Section& root, DpdConfig& c, const std::set<std::string>&
 }
 
 // The run's memory, roughly: per particle its fields and its share of the neighbour list
-// and pair-force buffer (about 1.5 KiB at the seed's 12 Angstrom cutoff and density), and
-// the grid's node fields; refused with the figure when it exceeds the machine's memory.
+// and pair-force buffer (about 1.5 KiB at the seed's 12 Angstrom cutoff and density, 49
+// pairs a particle within cutoff + skin), or per pair 32 bytes (list, owner and sweep
+// slots, force buffer) where the blocks are denser than the seed's (a constant of 0.5 A
+// under a 12 A cutoff: 150,000 pairs a particle); and the grid's node fields; refused
+// with the figure when it exceeds the machine's memory.
 void check_memory(io::Section& root, const DpdConfig& c) {
   const double particles = block_particles(c);
-  double bytes = 1536.0 * particles;
+  double bytes = std::max(1536.0 * particles, 32.0 * block_pairs(c));
   if (c.grid.cell > 0) {
     double nodes = 1;
     const double size[3] = {c.domain.box.lx, c.domain.box.ly, c.domain.box.lz};
@@ -99,8 +104,10 @@ void check_memory(io::Section& root, const DpdConfig& c) {
   const double have = static_cast<double>(physical_memory_bytes());
   if (have > 0)
     root.check(bytes <= 0.8 * have, "block",
-               fmt::format("{:.3g} particles{} need about {}, more than 80% of this machine's {}", particles,
-                           c.grid.cell > 0 ? " and their grid" : "", format_bytes(bytes), format_bytes(have)));
+               fmt::format("{:.3g} particles ({:.3g} pairs within cutoff + skin){} need about {}, more than 80% of "
+                           "this machine's {}",
+                           particles, block_pairs(c), c.grid.cell > 0 ? " and their grid" : "", format_bytes(bytes),
+                           format_bytes(have)));
 }
 
 // [grid] and [continuum].
@@ -251,6 +258,23 @@ void read_dpd_params(io::Section& dp, double rc, DpdConfig& c) {
   p.seed = static_cast<std::uint64_t>(seed);
 }
 
+// The pair forces' reach on every periodic axis: at most half the box, so that a particle
+// meets each other particle through one image at most and never its own (whose random
+// force, drawn per image, no dissipation balances: a cutoff of 60 A in a 79 A box heated
+// a fluid to 1e29 K).
+void check_reach_in_box(io::Section& root, const DpdConfig& c) {
+  const double reach = std::max(cutoff(c.potential), c.params.cutoff);
+  static const char* axes[3] = {"x", "y", "z"};
+  for (int d = 0; d < 3; ++d)
+    if (c.domain.periodic[d] && !(reach <= 0.5 * c.domain.length(d))) {
+      root.error(fmt::format("box: the pair cutoff {:.6g} A exceeds half the periodic length along {} ({:.6g} A): "
+                             "a particle would meet another through two images or itself; make the box at least "
+                             "{:.6g} A along {} or the axis open (\"f\")",
+                             reach, axes[d], c.domain.length(d), 2 * reach, axes[d]));
+      return;
+    }
+}
+
 // [equilibrate] and [run].
 void read_run(io::Section& root, DpdConfig& c) {
   const DpdParams& p = c.params;
@@ -272,6 +296,9 @@ void read_run(io::Section& root, DpdConfig& c) {
   if (c.equilibrate)
     eq.check(c.berendsen.tau >= c.dt, "tau", fmt::format("must be at least the time step run.dt = {} ps", c.dt));
   c.steps = run.integer("steps", 0, kMaxSteps);
+  // The run counts its steps from the start of the equilibration.
+  eq.check(checked_sum(c.equilibrate ? c.equilibrate_steps : 0, c.steps).has_value(), "steps",
+           "plus run.steps is more steps than a run can count (2^63 - 1)");
   // The system advances thermo steps at a time in an int.
   c.thermo = run.integer("thermo", 100, 1, std::numeric_limits<int>::max());
   c.dump_every = run.integer("dump_every", 0, 0, kMaxSteps);
@@ -292,7 +319,7 @@ DpdConfig read_dpd_config(io::Deck& deck) {
   auto root = deck.root();
 
   auto cs = root.table("case");
-  c.id = cs.string("id");
+  c.id = escape_controls(cs.string("id"));  // printed on progress and result lines
   c.title = cs.string("title", "");
   c.seed_ref = cs.string("seed", "");
 
@@ -319,6 +346,7 @@ DpdConfig read_dpd_config(io::Deck& deck) {
   auto dp = root.table("dpd");
   read_dpd_params(dp, rc, c);
   read_run(root, c);
+  check_reach_in_box(root, c);
   read_analysis(root, c, group_names);
   read_coupling(root, c);
   check_memory(root, c);

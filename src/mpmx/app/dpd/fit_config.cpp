@@ -7,8 +7,10 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/io/run_record.hpp"
+#include "mpmx/md/physical_bounds.hpp"
 #include "mpmx/md/potential/registry.hpp"
 
 namespace mpmx::app::dpd {
@@ -19,7 +21,7 @@ FitConfig read_fit_config(io::Deck& deck) {
   const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
   auto root = deck.root();
   auto cs = root.table("case");
-  c.id = cs.string("id");
+  c.id = escape_controls(cs.string("id"));  // printed on progress and result lines
   c.title = cs.string("title", "");
   c.seed_ref = cs.string("seed", "");
 
@@ -29,6 +31,8 @@ FitConfig read_fit_config(io::Deck& deck) {
   c.lattice_constant = md.number("lattice_constant");
   md.check(c.lattice_constant >= 0.5 && c.lattice_constant <= 100, "lattice_constant",
            "must lie in [0.5, 100] Angstrom (an atomic crystal's)");
+  if (const std::string why = md::fcc_constant_problem(c.lattice_constant); !why.empty())
+    md.check(false, "lattice_constant", why);
   c.md.cells = md.integer_int("cells", 5, 2, 40);  // fcc cells per edge
   c.md.temperature = md.number("temperature");
   md.positive("temperature", c.md.temperature);

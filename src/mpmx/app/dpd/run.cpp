@@ -14,6 +14,7 @@
 
 #include "mpmx/app/dpd/dump.hpp"
 #include "mpmx/app/dpd/preflight.hpp"
+#include "mpmx/app/reported_quantities.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
 #include "mpmx/dpd/cna.hpp"
@@ -91,6 +92,15 @@ class Thermo {
       out_ << fmt::format(",{:.10g},{:.10g},{:.10g}", f[0], f[1], f[2]);
     }
     out_ << "\n";
+    // The row is written as it is (the last of a stopped run), then the run stops.
+    const std::string why = first_non_finite(
+        s.step(), s.time(), "ps",
+        {{"the potential energy (eV)", s.potential_energy()}, {"the kinetic energy (eV)", s.kinetic_energy()},
+         {"the internal energy (eV)", s.internal_energy()}, {"the temperature (K)", s.temperature()},
+         {"the internal temperature (K)", s.internal_temperature()}, {"the pressure (GPa)", s.pressure_gpa()},
+         {"stress xx (GPa)", st[0]}, {"stress yy (GPa)", st[4]}, {"stress zz (GPa)", st[8]},
+         {"stress xy (GPa)", st[1]}, {"stress xz (GPa)", st[2]}, {"stress yz (GPa)", st[5]}});
+    if (!why.empty()) throw RunError("DPD " + why);
   }
 
  private:
@@ -223,12 +233,17 @@ class DpdRun {
     fs::create_directories(dir_);
     thermo_.emplace(control_.tables(), sys_);
     if (c_.dump_every > 0) dump_ = &control_.tables().open("dump.lammpstrj");
-    if (phase_ == kEquilibrate) {
-      if (c_.equilibrate && c_.equilibrate_steps > 0) phase("equilibrate", c_.equilibrate_steps, &c_.berendsen);
-      if (!control_.interrupted()) begin_run();
-    }
     double run_seconds = 0;
-    if (!control_.interrupted()) run_seconds = phase("run", c_.steps, nullptr);
+    try {
+      if (phase_ == kEquilibrate) {
+        if (c_.equilibrate && c_.equilibrate_steps > 0) phase("equilibrate", c_.equilibrate_steps, &c_.berendsen);
+        if (!control_.interrupted()) begin_run();
+      }
+      if (!control_.interrupted()) run_seconds = phase("run", c_.steps, nullptr);
+    } catch (const RunError& e) {
+      // Stopped by the physics: run.json says so and why, with the figures as they are.
+      stopped_ = e.what();
+    }
     return finish(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), run_seconds);
   }
 
@@ -397,9 +412,14 @@ class DpdRun {
                                     {"interior_fcc_fraction_start", r.fcc_start},
                                     {"interior_fcc_fraction_end", r.fcc_end}});
     }
+    if (!stopped_.empty()) {
+      rec.insert_or_assign("status", "stopped");
+      rec.insert("error", stopped_);
+    }
     std::ostringstream os;
     os << toml::json_formatter{rec} << '\n';
     io::write_file_atomic((std::filesystem::path(dir_) / "run.json").string(), os.str());
+    if (!stopped_.empty()) throw RunError(fmt::format("{} (partial results in {})", stopped_, dir_));
     if (!r.interrupted) control_.finished();
     return r;
   }
@@ -422,6 +442,7 @@ class DpdRun {
   double tsum_ = 0;  // kinetic temperature summed over the run's thermo rows
   std::int64_t tcount_ = 0;
   std::int64_t run_from_ = 0;  // the run phase's steps before this process
+  std::string stopped_;        // why the physics stopped the run ("" while it runs)
   std::vector<double> row_step_, row_energy_, row_kinetic_;  // the run's rows, for the drift
 };
 

@@ -1,5 +1,6 @@
 #include "mpmx/app/md/budget.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -31,6 +32,7 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
     b.size_key = "lattice.cells";
   }
   b.atoms = std::round(4.0 * n[0] * n[1] * n[2] * filled);
+  b.images = reach / (std::min({n[0], n[1], n[2]}) * a);
   // Locals plus ghosts: the box grown by the reach on every side (an upper bound: the
   // bar's x has vacuum instead of images).
   const double density = 4.0 / (a * a * a);
@@ -57,6 +59,10 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
 }
 
 void check_md_budget(const MdBudget& b, std::uint64_t memory_bytes, bool force) {
+  if (!(b.images <= kMaxImages))
+    throw InputError(fmt::format("{}: the potential's cutoff plus run.skin reaches {:.4g} times across the box's "
+                                 "shortest edge: at most {} periodic images are tracked; make the box larger",
+                                 b.size_key, b.images, kMaxImages));
   // More bins than atoms leaves most of them empty and writes a table per record no
   // reader wants (1e6 bins for 350 atoms: 859 MB).
   if (b.bins > 0 && b.bins > b.atoms)

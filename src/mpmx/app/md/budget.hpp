@@ -23,7 +23,12 @@ struct MdBudget {
   std::string work_key;    // "run.steps" or "thermal.relax_steps + run.steps"
   double bins = 0;         // a jet's bins (0: none)
   double output_bytes = 0; // a jet's bin tables and images over every record (about 230 bytes a bin)
+  double images = 0;       // cutoff + skin over the shortest box edge: the periodic images a ghost layer spans
 };
+
+// The most box lengths the forces may reach across (particles/neighbor.cpp stores an
+// atom's image in 8 bits, up to 127; the rest is room for the box's strain).
+inline constexpr double kMaxImages = 100;
 
 // `cutoff`: the potential's (Potential::cutoff()).
 MdBudget estimate_md(const MdConfig& c, double cutoff);

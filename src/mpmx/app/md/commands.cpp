@@ -114,7 +114,7 @@ void check_md(const std::string& path, bool force, bool lammps = false) {
   if (!measured) rate = md::kMdAtomStepsPerSecond;
   fmt::print("{}: ok (md deck: {:.4g} atoms, {} steps, about {} of memory, {:.3g} atom-steps, about {:.3g} h on one "
              "core at {:.3g} atom-steps/s ({}))\n",
-             path, budget.atoms, config.steps + (config.rod ? config.rod_equilibrate_steps : 0),
+             path, budget.atoms, config.steps + (config.rod ? config.rod_equilibrate_steps : 0),  // checked at read
              format_bytes(budget.bytes), budget.atom_steps,
              budget.atom_steps / rate / 3600.0, rate,
              measured ? "a box of its potential timed on this core just now" : "a typical figure");

@@ -8,7 +8,9 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/core/checked_count.hpp"
 #include "mpmx/core/error.hpp"
+#include "mpmx/md/physical_bounds.hpp"
 
 namespace mpmx::app::md {
 
@@ -16,11 +18,17 @@ namespace {
 
 constexpr std::int64_t kMax64 = std::numeric_limits<std::int64_t>::max();
 
+// An fcc lattice constant whose atoms start no closer than a bond (md/physical_bounds.hpp).
+void check_fcc_constant(io::Section& s, std::string_view key, double a) {
+  if (const std::string why = mpmx::md::fcc_constant_problem(a); !why.empty()) s.check(false, key, why);
+}
+
 // [lattice]: the fcc crystal and its initial strain.
 void read_lattice(io::Section& lat, MdConfig& c) {
   lat.choice("type", {"fcc"}, "fcc");
   c.lattice_constant = lat.number("constant");
   lat.positive("constant", c.lattice_constant);
+  check_fcc_constant(lat, "constant", c.lattice_constant);
   const auto cells = lat.integers("cells", 1, 1000);  // unit cells along x, y, z
   if (cells.size() == 3 || cells.size() == 1) {
     for (int d = 0; d < 3; ++d) c.cells[d] = static_cast<int>(cells[cells.size() == 3 ? d : 0]);
@@ -74,6 +82,7 @@ void read_run(io::Section& run, bool jet, MdConfig& c) {
 void read_scan(io::Section& scan, MdConfig& c) {
   c.scan_from = scan.number("lattice_from");
   scan.positive("lattice_from", c.scan_from);
+  check_fcc_constant(scan, "lattice_from", c.scan_from);
   c.scan_to = scan.number("lattice_to");
   scan.check(c.scan_to > c.scan_from, "lattice_to", "must exceed lattice_from");
   c.scan_points = scan.integer_int("points", 41, 3, 100000);
@@ -237,6 +246,11 @@ MdConfig read_md_config(io::Deck& deck) {
   }
   auto rod = root.optional_table("rod");
   if (rod.present()) read_rod(root, rod, bar.present() || jet.present(), c);
+  // The run counts its steps from the start, relaxation or equilibration included.
+  th.check(checked_sum(c.relax_steps, c.steps).has_value(), "relax_steps",
+           "plus run.steps is more steps than a run can count (2^63 - 1)");
+  rod.check(checked_sum(c.rod_equilibrate_steps, c.steps).has_value(), "equilibrate_steps",
+            "plus run.steps is more steps than a run can count (2^63 - 1)");
   deck.finish();
   return c;
 }

@@ -12,6 +12,7 @@
 
 #include "mpmx/app/md/dump.hpp"
 #include "mpmx/app/md/run.hpp"
+#include "mpmx/app/reported_quantities.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
 #include "mpmx/core/units.hpp"
@@ -217,9 +218,10 @@ std::string run_jet(const MdConfig& c, const Potential& pot, const std::string& 
     const double pe = sys.potential_energy() / n, ke = sys.kinetic_energy() / n;
     thermo << fmt::format("{},{:.6f},{:.12g},{:.12g},{:.12g},{:.6g}\n", sys.step(), sys.time(), pe, ke, pe + ke,
                           sys.temperature());
-    if (!std::isfinite(pe) || !std::isfinite(ke))
-      stopped = fmt::format("step {}: the state went non-finite (potential energy {} eV/atom, kinetic {} eV/atom)",
-                            sys.step(), pe, ke);
+    stopped = first_non_finite(sys.step(), sys.time(), "ps",
+                               {{"the potential energy (eV/atom)", pe},
+                                {"the kinetic energy (eV/atom)", ke},
+                                {"the temperature (K)", sys.temperature()}});
   };
   if (!control.resuming()) {
     record();

@@ -10,6 +10,7 @@
 
 #include "mpmx/app/md/dump.hpp"
 #include "mpmx/app/md/run.hpp"
+#include "mpmx/app/reported_quantities.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
 #include "mpmx/md/rod.hpp"
@@ -68,9 +69,11 @@ std::string run_rod(const MdConfig& c, const Potential& pot, const std::string& 
                           tracks ? "run" : "equilibrate", pe, ke, pe + ke, sys.temperature_after(nf),
                           flyer_vx(sys, nf));
     thermo.flush();  // a long run can be followed as it goes
-    if (!std::isfinite(pe) || !std::isfinite(ke))
-      stopped = fmt::format("step {}: the state went non-finite (potential energy {} eV/atom, kinetic {} eV/atom)",
-                            sys.step(), pe, ke);
+    stopped = first_non_finite(sys.step(), sys.time(), "ps",
+                               {{"the potential energy (eV/atom)", pe},
+                                {"the kinetic energy (eV/atom)", ke},
+                                {"the target's temperature (K)", sys.temperature_after(nf)},
+                                {"the flyer's velocity (A/ps)", flyer_vx(sys, nf)}});
   };
   auto save_rest = [&](CheckpointOut& w) {
     w.integer(tracks ? 1 : 0);

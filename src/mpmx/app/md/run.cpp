@@ -12,6 +12,7 @@
 #include "mpmx/app/md/dump.hpp"
 #include "mpmx/app/md/jet_run.hpp"
 #include "mpmx/app/md/rod_run.hpp"
+#include "mpmx/app/reported_quantities.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
 #include "mpmx/io/run_record.hpp"
@@ -32,21 +33,25 @@ void advance_steps(System& s, std::int64_t steps, const Mat3& gradient, double d
   }
 }
 
-bool finite(const Mat3& m) {
-  for (double v : m)
-    if (!std::isfinite(v)) return false;
-  return true;
-}
-
-// The message of a run the physics stopped, or "" while every figure is finite.
-std::string non_finite_state(const System& s, double pe_per_atom) {
+// The message of a run the physics stopped, or "" while every figure a thermo row and
+// run.json report is finite.
+std::string non_finite_state(const System& s) {
+  const double n = static_cast<double>(s.atoms().size());
   const Mat3 st = s.stress_gpa();
-  if (std::isfinite(pe_per_atom) && finite(st) && std::isfinite(s.box().lx) && std::isfinite(s.box().ly) &&
-      std::isfinite(s.box().lz))
-    return {};
-  return fmt::format("step {}: the state went non-finite (potential energy {} eV/atom, stress xx {} GPa, box "
-                     "{} x {} x {} A): the time step or the deformation may be too large",
-                     s.step(), pe_per_atom, st[0], s.box().lx, s.box().ly, s.box().lz);
+  const auto& b = s.box();
+  return first_non_finite(s.step(), s.time(), "ps",
+                          {{"the potential energy (eV/atom)", s.potential_energy() / n},
+                           {"the kinetic energy (eV/atom)", s.kinetic_energy() / n},
+                           {"the temperature (K)", s.temperature()},
+                           {"stress xx (GPa)", st[0]},
+                           {"stress yy (GPa)", st[4]},
+                           {"stress zz (GPa)", st[8]},
+                           {"stress xy (GPa)", st[1]},
+                           {"stress xz (GPa)", st[2]},
+                           {"stress yz (GPa)", st[5]},
+                           {"the box length x (A)", b.lx},
+                           {"the box length y (A)", b.ly},
+                           {"the box length z (A)", b.lz}});
 }
 
 toml::array matrix(const Mat3& m) {
@@ -97,7 +102,7 @@ std::string run_bar(const MdConfig& c, const Potential& pot, const std::string& 
     bar.advance(static_cast<int>(chunk), c.dt);  // bar_every <= INT_MAX (config)
     done += chunk;
     rows();
-    stopped = non_finite_state(bar.system(), bar.system().potential_energy());
+    stopped = non_finite_state(bar.system());
     if (!stopped.empty()) break;
     if (done < c.steps && stop_md_at(control, bar.system(), {})) break;
   }
@@ -185,7 +190,7 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   auto row = [&] {
     const Mat3 s = sys.stress_gpa();
     const double pe = sys.potential_energy() / n, ke = sys.kinetic_energy() / n;
-    stopped = non_finite_state(sys, pe);
+    stopped = non_finite_state(sys);
     csv << fmt::format("{},{:.6f},{:.12g},{:.12g},{:.12g},{:.6g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.8g},{:.12g},{:.12g},{:.12g}\n",
                        sys.step(), sys.time(), pe, ke, pe + ke, sys.temperature(), s[0], s[4], s[8], s[1], s[2],
                        s[5], sys.box().lx, sys.box().ly, sys.box().lz);

@@ -109,8 +109,10 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
   const material::PointCost cost = c.material.spec ? c.material.spec->point_cost(c.dt) : material::PointCost{};
   MpmBudget b = estimate_levels(c, ranks, cost, 0.0);
   // The continuum's own work long enough to matter: timed for this deck on this machine.
+  // Not for a deck the memory check refuses anyway: timing builds a copy of it.
   const double continuum = b.seconds - b.md_atom_steps / std::max(b.md_rate, 1.0) / b.ranks;
-  if (continuum > kTimeRateAboveSeconds) {
+  const double memory = static_cast<double>(physical_memory_bytes());
+  if (continuum > kTimeRateAboveSeconds && (memory <= 0 || b.bytes <= memory)) {
     const MpmBudget l0 = c.convergence_levels > 1 ? estimate_level(c, ranks, cost, 0.0) : b;  // the deck's grid
     if (const double rate = measure_point_steps_per_second(c, l0.points, l0.subpoints, l0.nodes); rate > 0)
       b = estimate_levels(c, ranks, cost, rate);

@@ -142,15 +142,18 @@ void add_mpm_commands(CLI::App& app) {
     // the deck may be meant for a cluster, and `run` asks for --force itself.
     const MpmPreflight pre = preflight_mpm(cfg, args->ranks, physical_memory_bytes(), true);
     const MpmBudget& budget = pre.budget;
+    const std::string steps =
+        cfg.cfl_dt ? fmt::format("about {} (dt from the CFL condition at the start)", cfg.steps())
+                   : fmt::format("{}", cfg.steps());
     if (cfg.dim == 1) {
       fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", args->deck, cfg.id, cfg.cells,
-                 cfg.per_cell, cfg.steps(), mpm::scheme_name(cfg.scheme.scheme));
+                 cfg.per_cell, steps, mpm::scheme_name(cfg.scheme.scheme));
     } else {
       std::vector<int> cells(cfg.cells_all.begin(), cfg.cells_all.begin() + cfg.dim),
           per(cfg.per_cell_all.begin(), cfg.per_cell_all.begin() + cfg.dim);
       fmt::print("{}: ok (case {}, {}-D, {} cells, {} points per cell, {} bodies, {} steps, scheme {}, material {})\n",
                  args->deck, cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), cfg.bodies.size(),
-                 cfg.steps(), mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
+                 steps, mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
     }
     fmt::print("  estimate: about {} of memory, {:.3g} hours of work on one core{}{}{}\n", format_bytes(budget.bytes),
                budget.seconds / 3600.0,

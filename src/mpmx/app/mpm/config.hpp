@@ -4,17 +4,23 @@
 #include <cmath>
 #include <memory>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include <toml++/toml.h>
 
+#include "mpmx/core/checked_count.hpp"
 #include "mpmx/material/model.hpp"
 #include "mpmx/mpm/bcs.hpp"
 #include "mpmx/mpm/profile.hpp"
 #include "mpmx/mpm/shape/scheme.hpp"
 
 namespace mpmx::app {
+
+// The most steps a continuum deck may take (time.end / time.dt): 1e15 is 30 years at a
+// microsecond a step, and far inside what an int64 step counter and a double time hold.
+inline constexpr double kMaxSteps = 1e15;
 
 using mpm::Boundaries;
 using mpm::Profile;
@@ -120,7 +126,9 @@ struct MpmConfig {
   toml::table deck;                // the deck as written, echoed into run.json
   std::string deck_path;
 
-  std::int64_t steps() const { return static_cast<std::int64_t>(std::llround(end / dt)); }
+  // end / dt (with dt = "cfl", the first step's dt): the deck refuses more than kMaxSteps,
+  // so that the count never wraps.
+  std::int64_t steps() const { return rounded_count(end / dt).value_or(std::numeric_limits<std::int64_t>::max()); }
   double dx() const { return (upper - lower) / cells; }
 };
 

@@ -10,6 +10,7 @@
 #include <fmt/ranges.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/app/mpm/bodies.hpp"
 #include "mpmx/app/mpm/materials.hpp"
@@ -173,7 +174,7 @@ Body read_body(Section s, int dim, const material::Context& ctx, std::size_t num
 // [case]: the id, title, seed section and units.
 void read_case(Section& root, MpmConfig& c) {
   Section cs = root.table("case");
-  c.id = cs.string("id");
+  c.id = escape_controls(cs.string("id"));  // printed on progress and result lines
   c.title = cs.string("title", "");
   c.seed = cs.string("seed", "");
   c.units = cs.string("units", "consistent units");
@@ -474,7 +475,14 @@ void check_time_step(Section& t, MpmConfig& c, double cfl_limit) {
               fmt::format("exceeds the CFL limit cfl_limit * dx / (c + v) = {} * {} / {} = {} (c the wave speed, v "
                           "the fastest point's speed: a body's velocity plus |angular_velocity| x radius)",
                           cfl_limit, dx_min, cs_max, limit));
-    if (!c.cfl_dt && std::abs(c.dt * std::llround(c.end / c.dt) - c.end) > 1e-9 * c.end)
+    // A count the run's step counter holds, before anything rounds it (1e300 / dt wrapped
+    // to -9223372036854775808 steps); with dt = "cfl" the first step's dt gives its size.
+    const double steps = c.end / c.dt;
+    if (!(steps <= kMaxSteps))
+      t.check(false, "end",
+              fmt::format("is {:.4g} steps of dt = {:.4g}{}: more than the {:.0e} a run may take", steps, c.dt,
+                          c.cfl_dt ? " (the CFL condition's at the start)" : "", kMaxSteps));
+    else if (!c.cfl_dt && std::abs(c.dt * static_cast<double>(c.steps()) - c.end) > 1e-9 * c.end)
       t.check(false, "end", fmt::format("is not a whole number of steps of dt = {}", c.dt));
     if (const std::string why = mat.spec ? mat.spec->time_step_problem(c.dt) : ""; !why.empty())
       t.check(false, "dt", why);

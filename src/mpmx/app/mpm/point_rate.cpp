@@ -15,6 +15,7 @@ namespace {
 
 // Below the 8,192 points from which a run steps on threads: the figure is one core's.
 constexpr double kPoints = 4000, kNodes = 20000;
+constexpr double kMostPointsBuilt = 1e6;  // the coarse copy's whole grid filled: an upper bound
 constexpr double kSeconds = 0.1;
 constexpr int kMostSteps = 2000;
 
@@ -50,6 +51,13 @@ double measure_point_steps_per_second(const MpmConfig& c, double points, double 
                              std::pow(kNodes / nodes, 1.0 / c.dim)});
   for (int d = 0; d < c.dim; ++d) r.cells_all[d] = std::max(2, static_cast<int>(std::lround(c.cells_all[d] * f)));
   r.cells = c.dim == 1 ? std::max(2, static_cast<int>(std::lround(c.cells * f))) : r.cells_all[0];
+  // The copy's points from the counts, before it is built: a grid of two cells still
+  // holds per_cell^D points a cell (per_cell = 10^6 in 2-D: 10^12, minutes of placing).
+  double coarse = subpoints;
+  for (int d = 0; d < c.dim; ++d)
+    coarse *= static_cast<double>(c.dim == 1 ? r.cells : r.cells_all[d]) *
+              static_cast<double>(c.dim == 1 ? c.per_cell : c.per_cell_all[d]);
+  if (!(coarse <= kMostPointsBuilt)) return 0.0;
   try {
     switch (c.dim) {
       case 1: return time_steps<1>(r);

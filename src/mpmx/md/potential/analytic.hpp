@@ -1,7 +1,9 @@
 #pragma once
 // The keys the analytic potentials' [potential] tables share (lj, sutton_chen): the
-// energy scale epsilon (eV), the cutoff (Angstrom) and the atoms' mass (amu), each positive.
+// energy scale epsilon (eV), the cutoff (Angstrom), each positive, and the atoms' mass
+// (amu), an atom's (md/physical_bounds.hpp).
 #include "mpmx/core/table.hpp"
+#include "mpmx/md/physical_bounds.hpp"
 
 namespace mpmx::md {
 
@@ -11,7 +13,7 @@ inline void read_analytic_scale(Table& t, double& epsilon, double& cutoff, doubl
   cutoff = t.number("cutoff");
   t.positive("cutoff", cutoff);
   mass = t.number("mass");
-  t.positive("mass", mass);
+  if (const std::string why = atom_mass_problem(mass); !why.empty()) t.check(false, "mass", why);
 }
 
 }  // namespace mpmx::md

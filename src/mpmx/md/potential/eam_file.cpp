@@ -14,6 +14,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/file_text.hpp"
+#include "mpmx/md/physical_bounds.hpp"
 
 namespace mpmx::md {
 
@@ -127,8 +128,8 @@ class Cursor {
   int line_no_ = 0;
 };
 
-// "nrho drho nr dr cut" header line of all three formats.
-void read_grid(Cursor& c, EamTables& t) {
+// "nrho drho nr dr cut" header line of all three formats; returns its line number.
+int read_grid(Cursor& c, EamTables& t) {
   const auto text = c.line("'nrho drho nr dr cutoff'");
   const auto w = c.words(text);
   const int ln = c.line_no();
@@ -144,6 +145,41 @@ void read_grid(Cursor& c, EamTables& t) {
   if (!(t.drho > 0)) c.fail(ln, fmt::format("drho = {}: expected a positive spacing", t.drho));
   if (!(t.dr > 0)) c.fail(ln, fmt::format("dr = {}: expected a positive spacing", t.dr));
   if (!(t.cut > 0)) c.fail(ln, fmt::format("cutoff = {}: expected a positive cutoff", t.cut));
+  return ln;
+}
+
+// Tables that parse can still describe no potential: a grid that ends before the cutoff
+// (pairs beyond it would read the last entry: dr = 1e-300 ran with no interaction at
+// all), too few points below the cutoff to tabulate anything, or a density grid so coarse
+// that every density a crystal has falls in its first interval (drho = 1e300 gave -1.20
+// eV/atom for copper's -3.54). `rho` are the density tables on the r grid (1-based).
+// Debian's lammps-data files have nr * dr from 1.0 to 1.9 times the cutoff (many exactly
+// equal), at least 400 points below it, and drho at most 0.026 of the largest density
+// one neighbour brings beyond 1 A: the limits below leave them far inside.
+constexpr double kMinIntervalsBelowCutoff = 10;
+
+void check_tables_reach(const Cursor& c, int ln, const EamTables& grid, const std::vector<std::vector<double>>& rho) {
+  const double reach = grid.nr * grid.dr;
+  if (!(reach >= grid.cut * (1.0 - 1e-9)))
+    c.fail(ln, fmt::format("nr * dr = {} * {} = {:.6g} A ends before the cutoff {:.6g} A: the tables do not cover the "
+                           "distances the potential acts over",
+                           grid.nr, grid.dr, reach, grid.cut));
+  if (!(grid.cut / grid.dr >= kMinIntervalsBelowCutoff))
+    c.fail(ln, fmt::format("dr = {} A leaves {:.3g} grid intervals below the cutoff {:.6g} A: at least {} are "
+                           "needed to tabulate the functions",
+                           grid.dr, grid.cut / grid.dr, grid.cut, kMinIntervalsBelowCutoff));
+  double peak = 0;  // the largest density one neighbour brings at a bond's length or more
+  for (const auto& f : rho)
+    for (int m = 1; m <= grid.nr && m < static_cast<int>(f.size()); ++m) {
+      const double r = (m - 1) * grid.dr;
+      if (r >= kMinBondLength && r <= grid.cut) peak = std::max(peak, std::abs(f[m]));
+    }
+  if (peak > 0 && !(grid.drho <= peak))
+    c.fail(ln, fmt::format("drho = {} is coarser than the largest density one neighbour brings beyond {} A ({:.6g}): "
+                           "every density a crystal has would fall in the first intervals of F(rho)",
+                           grid.drho, kMinBondLength, peak));
+  if (!std::isfinite((grid.nrho - 1) * grid.drho))
+    c.fail(ln, fmt::format("nrho * drho = {} * {} is not a finite density", grid.nrho, grid.drho));
 }
 
 // The values a header promises must be in the file before big tables are sized by them:
@@ -169,7 +205,8 @@ double read_mass(Cursor& c, const std::string& element) {
     c.fail(ln, fmt::format("expected 'atomic-number mass ...' for element {}", element));
   c.to_number(w[0], "atomic number", ln);
   const double m = c.to_number(w[1], "mass", ln);
-  if (!(m > 0)) c.fail(ln, fmt::format("mass = {}: expected a positive mass", m));
+  if (const std::string why = atom_mass_problem(m); !why.empty())
+    c.fail(ln, fmt::format("mass = {} amu{}: {}", m, element.starts_with("of ") ? "" : " of element " + element, why));
   return m;
 }
 
@@ -194,13 +231,14 @@ EamTables read_funcfl(const std::string& path) {
   c.line("a comment line");
   const double mass = read_mass(c, "of the funcfl file");
   EamTables file;  // the file's own grid
-  read_grid(c, file);
+  const int grid_line = read_grid(c, file);
   check_values_left(c, c.line_no(), static_cast<double>(file.nrho) + 2.0 * file.nr,
                     fmt::format("nrho = {} and nr = {}", file.nrho, file.nr));
   std::vector<double> frho = one_based(file.nrho), zr = one_based(file.nr), rhor = one_based(file.nr);
   c.grab(file.nrho, &frho[1], "F(rho)");
   c.grab(file.nr, &zr[1], "Z(r)");
   c.grab(file.nr, &rhor[1], "rho(r)");
+  check_tables_reach(c, grid_line, file, {rhor});
 
   // LAMMPS file2array for funcfl: the common grid (here one file) and 4-point
   // Lagrange interpolation onto it.
@@ -262,7 +300,7 @@ EamTables read_setfl_or_fs(const std::string& path, bool fs) {
         c.fail(ln, fmt::format("element name {} is not a name: at most {} printable characters",
                                quote_excerpt(e), kMaxElementName));
   }
-  read_grid(c, t);
+  const int grid_line = read_grid(c, t);
   t.rhomax = (t.nrho - 1) * t.drho;
   const int n = static_cast<int>(t.elements.size());
   {
@@ -290,6 +328,7 @@ EamTables read_setfl_or_fs(const std::string& path, bool fs) {
       t.z2r.push_back(one_based(t.nr));
       c.grab(t.nr, &t.z2r.back()[1], fmt::format("r*phi(r) of {}-{}", t.elements[i], t.elements[j]));
     }
+  check_tables_reach(c, grid_line, t, t.rhor);
   // Density at an atom of element i due to a neighbour of element j (LAMMPS
   // type2rhor[j][i]): setfl uses j's function, fs the function listed under j for i.
   t.rhor_index.assign(n * n, 0);
