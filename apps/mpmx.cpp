@@ -3,6 +3,7 @@
 // printed once, here: CLI11's errors, InputError, RunError, Interrupted, and anything else.
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -90,8 +91,11 @@ int run(int argc, char** argv) {
   // With the vector paths of the 1-D and MD kernels (those built in, those this machine
   // runs, the one taken) and the MPI library the ranks use.
   app.set_version_flag("--version", [] {
+    const char* wait = std::getenv("OMP_WAIT_POLICY");
     return std::string("mpmx ") + MPMX_VERSION + "\n" + mpmx::isa_summary() + "\n" +
-           mpmx::md::eam_isa_summary() + "\nMPI: " + mpmx::ranks::library();
+           mpmx::md::eam_isa_summary() + "\nMPI: " + mpmx::ranks::library() +
+           "\nOpenMP: idle threads wait " + (wait ? std::string("as OMP_WAIT_POLICY=") + wait + " says" :
+                                                   std::string("as GOMP_SPINCOUNT says"));
   });
   app.require_subcommand(1);
   app.footer("Exit status: 0 done, 1 the machine failed (a write refused: disk full, read-only; the earlier results "

@@ -82,7 +82,7 @@ EOF
   fi
 }
 
-echo "multiscale_boxes: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $cores cores; $("$build/mpmx" --version | sed -n 's/.*chosen: //p')" >&2
+echo "multiscale_boxes: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $cores cores; $("$build/mpmx" --version | sed -n 's/.*chosen: //p' | sort -u | paste -sd, -)" >&2
 jet jet_d1 double 1
 jet jet_d2 double 2
 jet jet_m1 mixed 1

@@ -20,8 +20,9 @@ struct CliResult {
   std::string output;  // stdout and stderr together
 };
 
-inline CliResult run_cli(const std::string& args) {
-  const std::string cmd = std::string(MPMX_BINARY) + " " + args + " 2>&1";
+// The program under `prefix` (an `env ...` that changes its environment, or "").
+inline CliResult run_cli_env(const std::string& prefix, const std::string& args) {
+  const std::string cmd = prefix + (prefix.empty() ? "" : " ") + std::string(MPMX_BINARY) + " " + args + " 2>&1";
   CliResult r{-1, {}};
   FILE* p = popen(cmd.c_str(), "r");
   if (!p) return r;
@@ -31,6 +32,8 @@ inline CliResult run_cli(const std::string& args) {
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return r;
 }
+
+inline CliResult run_cli(const std::string& args) { return run_cli_env("", args); }
 
 inline std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p);

@@ -75,6 +75,22 @@ TEST(Cli, HelpAndVersionExitZero) {
   EXPECT_NE(v.output.find("\nMPI: "), std::string::npos) << v.output;  // the library, or "none"
 }
 
+// libgomp's spinning waits would take a busy core's time from the thread they wait for:
+// mpmx restarts itself with OMP_WAIT_POLICY=passive unless the user chose a policy.
+TEST(Cli, IdleThreadsSleepUnlessTheUserChoseOtherwise) {
+  auto version = [](const std::string& env) {
+    return mpmx::test::run_cli_env(env, "--version").output;
+  };
+  EXPECT_NE(version("env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT").find("OMP_WAIT_POLICY=passive says"),
+            std::string::npos);
+  EXPECT_NE(version("env OMP_WAIT_POLICY=active").find("OMP_WAIT_POLICY=active says"), std::string::npos);
+  EXPECT_NE(version("env -u OMP_WAIT_POLICY GOMP_SPINCOUNT=1000").find("as GOMP_SPINCOUNT says"), std::string::npos);
+  // The restarted program reads its arguments as the first did.
+  const auto r = mpmx::test::run_cli_env("env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT", "run --threads -1 " + kDeck);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("--threads: -1 is negative"), std::string::npos) << r.output;
+}
+
 TEST(Cli, ThreadsAreBoundedByTheMachine) {
   const unsigned hw = std::max(1u, std::thread::hardware_concurrency());
   const auto r = mpmx_cli("run --threads 100000 " + kDeck + " --out " + ::testing::TempDir() + "cli_threads");
