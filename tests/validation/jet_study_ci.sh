@@ -5,7 +5,10 @@
 #   tests/validation/jet_study_ci.sh SOURCE_DIR BUILD_DIR WORK
 #
 # Then its table: every row of Table 7.1 and both baselines there with an eq. 7.12 error,
-# the DDMP-MD rows with fewer atom-steps than one box per point, and the figures written.
+# the DDMP-MD rows with fewer atom-steps than one box per point, and the figures written;
+# and every row's eq. 7.12 recomputed from its particle output and the direct MD's bins by
+# tools/check_eq712.py (not the run's code), agreeing with run.json to four digits; that
+# check is shown to fail on a figure 1e-3 off and on bins 1% off.
 set -euo pipefail
 src=$1 build=$2 work=$3
 rm -rf "$work"
@@ -13,6 +16,7 @@ mkdir -p "$work/scripts" "$work/tools"
 cp -r "$src/examples" "$work/examples"
 cp "$src/scripts/jet-study" "$work/scripts/"
 cp -r "$src/tools/plot" "$work/tools/plot"
+cp "$src/tools/check_eq712.py" "$work/tools/"
 "$work/scripts/jet-study" --scale tiny --threads 2 --build "$build"
 /usr/bin/python3 - "$work/runs/jet_study_tiny" <<'PY'
 import csv, math, os, sys
@@ -43,3 +47,34 @@ if bad:
     print("jet_study_ci: " + "; ".join(bad), file=sys.stderr)
     sys.exit(1)
 PY
+study=$work/runs/jet_study_tiny md=$work/runs/J1_direct_md_tiny
+check=$work/tools/check_eq712.py
+for row in "$study"/J[234]_*/; do
+  /usr/bin/python3 "$check" "${row%/}" --md "$md"
+done
+# The check must be able to fail: a copy of the J2 row whose run.json's pooled figure is
+# off by 1e-3 (beyond four digits), and a copy of the direct MD with every sxx 1% larger.
+row=$(ls -d "$study"/J2_*/ | head -1)
+row=${row%/}
+bad=$work/check_eq712_bad
+rm -rf "$bad" && mkdir -p "$bad/run" "$bad/md/bins"
+ln -s "$row/particles.pvd" "$row/vtk" "$bad/run/"
+/usr/bin/python3 - "$row/run.json" "$bad/run/run.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+r["errors"]["stress_vs_direct_md"] *= 1 + 1e-3
+json.dump(r, open(sys.argv[2], "w"))
+PY
+expect_fail() {
+  local rc=0
+  /usr/bin/python3 "$check" "$1" --md "$2" >/dev/null 2>&1 || rc=$?
+  [ "$rc" = 1 ] || { echo "jet_study_ci: check_eq712.py on $3 exited $rc, not 1" >&2; exit 1; }
+}
+expect_fail "$bad/run" "$md" "a pooled figure 1e-3 off"
+cp "$md/run.json" "$md/md_bins.pvd" "$bad/md/"
+for f in "$md"/bins/*.csv; do
+  awk -F, -v OFS=, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "sxx_GPa") c = i; print; next }
+                    { $c = $c * 1.01; print }' "$f" >"$bad/md/bins/$(basename "$f")"
+done
+expect_fail "$row" "$bad/md" "bins with sxx 1% larger"
+echo "jet_study_ci: eq. 7.12 recomputed for every row; the check catches a perturbed figure and perturbed bins"
