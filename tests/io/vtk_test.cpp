@@ -268,6 +268,18 @@ bool any_tmp_in(const fs::path& dir) {
   return false;
 }
 
+// A write the system refuses is the machine's failure (SystemError: exit 1, the file and
+// the system's reason), not a stop by the physics.
+std::string system_error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const mpmx::SystemError& e) {
+    return e.what();
+  }
+  return "(no SystemError)";
+}
+
+// A file mpmx cannot use (damaged): a RunError naming it.
 std::string run_error_of(const std::function<void()>& f) {
   try {
     f();
@@ -401,24 +413,24 @@ TEST(Vtk, WritesAtomicallyAndOverwrites) {
   // A rename that fails (the target is a directory) throws and leaves no temporary.
   fs::create_directories(dir / "blocked.vtu");
   const std::string msg =
-      run_error_of([&] { vtk::write_points(dir / "blocked.vtu", lattice_points(1), {}); });
+      system_error_of([&] { vtk::write_points(dir / "blocked.vtu", lattice_points(1), {}); });
   EXPECT_NE(msg.find((dir / "blocked.vtu").string()), std::string::npos) << msg;
   EXPECT_FALSE(any_tmp_in(dir));
   EXPECT_TRUE(fs::is_directory(dir / "blocked.vtu"));
 }
 
-TEST(Vtk, MissingDirectoryThrowsRunErrorNamingPath) {
+TEST(Vtk, MissingDirectoryThrowsSystemErrorNamingPath) {
   const TempDir tmp;
   const fs::path& root = tmp.path;
   const fs::path dir = root / "no" / "such" / "dir";
   const std::string p = (dir / "p.vtu").string(), g = (dir / "g.vti").string(),
                     s = (dir / "s.pvd").string();
-  std::string msg = run_error_of([&] { vtk::write_points(p, lattice_points(2), {}); });
+  std::string msg = system_error_of([&] { vtk::write_points(p, lattice_points(2), {}); });
   EXPECT_NE(msg.find(p), std::string::npos) << msg;
-  msg = run_error_of([&] { vtk::write_image(g, {1, 1, 1}, {0, 0, 0}, {1, 1, 1}, {}); });
+  msg = system_error_of([&] { vtk::write_image(g, {1, 1, 1}, {0, 0, 0}, {1, 1, 1}, {}); });
   EXPECT_NE(msg.find(g), std::string::npos) << msg;
   vtk::Series series(s);
-  msg = run_error_of([&] { series.add(1.0, "x.vtu"); });
+  msg = system_error_of([&] { series.add(1.0, "x.vtu"); });
   EXPECT_NE(msg.find(s), std::string::npos) << msg;
   EXPECT_TRUE(series.entries().empty()) << "a failed add is not listed";
   EXPECT_FALSE(fs::exists(root / "no"));
