@@ -332,6 +332,17 @@ TEST(Cli, CaseAndItsUnitsInEveryDeckKind) {
     EXPECT_NE(r.output.find("'case.units' = \"nm_ps_GPa\": this kind of deck is in metal units"), std::string::npos)
         << r.output;
   }
+  for (const std::string name : {"D_dpd_equilibrium.toml", "D0_md_to_dpd_fit.toml"}) {
+    const std::string text = mpmx::test::slurp(kExamples + name);
+    const std::string in_si = deck_file("cli_si_" + name, replaced(text, "[case]\n", "[case]\nunits = \"SI\"\n"));
+    const auto r = mpmx_cli("check " + in_si);
+    EXPECT_EQ(r.status, 2) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find("'case.units' = \"SI\": this kind of deck is in metal units"), std::string::npos)
+        << r.output;
+    const std::string in_metal =
+        deck_file("cli_metal_" + name, replaced(text, "[case]\n", "[case]\nunits = \"metal\"\n"));
+    EXPECT_EQ(mpmx_cli("check " + in_metal).status, 0) << name;
+  }
   const std::string a1 = mpmx::test::slurp(kDeck);
   ASSERT_NE(a1.find("units = \"dimensionless"), std::string::npos);
   for (const std::string units : {"nm_ps_Gpa", "consistent units", "furlongs"}) {
