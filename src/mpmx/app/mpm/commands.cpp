@@ -138,6 +138,11 @@ void add_mpm_commands(CLI::App& app) {
   run->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
   run->callback([args, run] {
     if (args->check) {
+      if (ranks::size() > 1) {  // every rank would print the same check
+        ranks::mark_agreed();   // the same command line on every rank
+        throw InputError("run --check runs as one process: without mpirun, or `mpmx check --ranks N DECK` for the "
+                         "estimate over N ranks");
+      }
       require_deck_kind(args->deck, DeckKind::continuum);
       say_ignored_by_check(*run);
       return check_continuum(args->deck, args->force, 1);
