@@ -1,12 +1,17 @@
 // The command line (issue 17): one exit-code table for every command (0 done, 1
 // internal, 2 bad input, 3 stopped by the physics, 130 interrupted), unknown commands
 // and flags named, bounded --threads, finite numbers, a non-empty --out, and each
-// message printed once.
+// message printed once; the common options on every command, a deck given to the wrong
+// command, [case] and its units in every deck kind, the unit slips `check` warns of, a
+// funcfl file's element, and what the run says of itself (the axis, step and time a point
+// left the grid by; the steps a dt = "cfl" run and a resumed md run took).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 #include <thread>
 
@@ -235,4 +240,259 @@ TEST(Cli, CheckTakesEveryKindOfDeck) {
     EXPECT_NE(r.output.find(c.says), std::string::npos) << c.deck << "\n" << r.output;
     EXPECT_EQ(r.output.find("is missing"), std::string::npos) << c.deck << "\n" << r.output;
   }
+}
+
+namespace {
+
+const std::string kExamples = std::string(MPMX_SOURCE_DIR) + "/examples/";
+
+// A deck written to the test's temporary folder; its path.
+std::string deck_file(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// A text with every `from` in it replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+// A 108-atom Cu box, 200 steps: an md deck that runs in a moment.
+const std::string kSmallMd = R"([potential]
+style = "eam"
+file = "Cu_mishin1.eam.alloy"
+elements = ["Cu"]
+
+[lattice]
+type = "fcc"
+constant = 3.615
+cells = [3, 3, 3]
+
+[thermal]
+temperature = 300.0
+seed = 12345
+
+[run]
+dt = 0.001
+steps = 200
+ensemble = "nve"
+thermo = 50
+)";
+
+}  // namespace
+
+// -o/--out, -j/--threads, --resume, -q/--quiet, --no-plot and --check on every command:
+// accepted, and where one cannot apply, said to be ignored (one line each), never refused.
+TEST(Cli, EveryCommandTakesTheCommonOptions) {
+  const std::string out = ::testing::TempDir() + "cli_common_options";
+  const std::string common = " -o " + out + " -j 1 --resume -q --no-plot --check";
+  for (const std::string& cmd : {"run " + kDeck, "md " + kMdDeck, "dpd " + kExamples + "D_dpd_equilibrium.toml",
+                                 "fit-dpd " + kExamples + "D0_md_to_dpd_fit.toml", "check " + kDeck}) {
+    const auto r = mpmx_cli(cmd + common);
+    EXPECT_EQ(r.status, 0) << cmd << "\n" << r.output;
+    EXPECT_NE(r.output.find(": ok ("), std::string::npos) << cmd << "\n" << r.output;
+    for (const char* option : {"--out", "--threads", "--resume", "--quiet", "--no-plot"})
+      EXPECT_EQ(count(r.output, fmt::format(": {} ignored: a check", option)), 1u) << cmd << "\n" << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << cmd;
+  }
+  // The new user's command line: an md run with -o and -j, the short forms `run` takes.
+  const auto r = mpmx_cli("md " + kMdDeck + " -o " + out + " -j 1 -q --no-plot");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("mpmx md: --no-plot ignored: md draws no figures"), std::string::npos) << r.output;
+  const std::string json = mpmx::test::slurp(out + "/run.json");
+  EXPECT_NE(json.find("\"case\" : \"M1_cu_energy_vs_lattice\""), std::string::npos) << json;
+  std::filesystem::remove_all(out);
+}
+
+// A deck given to the wrong command: one sentence naming the command that runs it (exit 2),
+// not the keys that command's reader does not know; `check` says the command too.
+TEST(Cli, DeckOfAnotherKindNamesItsCommand) {
+  struct Case {
+    std::string command, deck, kind, runs_it;
+  };
+  for (const Case& c : {Case{"run", kMdDeck, "an md deck", "mpmx md"},
+                        Case{"md", kDeck, "a continuum deck", "mpmx run"},
+                        Case{"dpd", kExamples + "D0_md_to_dpd_fit.toml", "a fit-dpd deck", "mpmx fit-dpd"},
+                        Case{"fit-dpd", kExamples + "D_dpd_equilibrium.toml", "a dpd deck", "mpmx dpd"},
+                        Case{"run", kExamples + "D_dpd_equilibrium.toml", "a dpd deck", "mpmx dpd"}}) {
+    const auto r = mpmx_cli(c.command + " " + c.deck + " -o " + ::testing::TempDir() + "cli_wrong_command");
+    EXPECT_EQ(r.status, 2) << c.command << " " << c.deck << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.deck + " is " + c.kind), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("run it with `" + c.runs_it + " " + c.deck + "`, not `mpmx " + c.command + "`"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("unknown key"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("is missing"), std::string::npos) << r.output;
+  }
+  const auto r = mpmx_cli("check " + kMdDeck);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("md deck: run it with `mpmx md " + kMdDeck + "`"), std::string::npos) << r.output;
+}
+
+// [case] in every deck kind, and one rule for case.units: a known system by name, or
+// "dimensionless ..." for a continuum deck; md, dpd and fit-dpd decks are in metal units.
+TEST(Cli, CaseAndItsUnitsInEveryDeckKind) {
+  const std::string potential = "file = \"/usr/share/lammps/potentials/Cu_mishin1.eam.alloy\"";
+  const std::string md = replaced(kSmallMd, "file = \"Cu_mishin1.eam.alloy\"", potential);
+  {
+    const auto r = mpmx_cli("check " + deck_file("cli_md_case.toml", "[case]\nid = \"cu108\"\ntitle = \"a box\"\n"
+                                                                       "seed = \"x\"\nunits = \"metal\"\n\n" + md));
+    EXPECT_EQ(r.status, 0) << r.output;
+  }
+  {
+    const auto r = mpmx_cli("md --check " + deck_file("cli_md_units.toml", "[case]\nunits = \"nm_ps_GPa\"\n\n" + md));
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("'case.units' = \"nm_ps_GPa\": this kind of deck is in metal units"), std::string::npos)
+        << r.output;
+  }
+  for (const std::string name : {"D_dpd_equilibrium.toml", "D0_md_to_dpd_fit.toml"}) {
+    const std::string text = mpmx::test::slurp(kExamples + name);
+    const std::string in_si = deck_file("cli_si_" + name, replaced(text, "[case]\n", "[case]\nunits = \"SI\"\n"));
+    const auto r = mpmx_cli("check " + in_si);
+    EXPECT_EQ(r.status, 2) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find("'case.units' = \"SI\": this kind of deck is in metal units"), std::string::npos)
+        << r.output;
+    const std::string in_metal =
+        deck_file("cli_metal_" + name, replaced(text, "[case]\n", "[case]\nunits = \"metal\"\n"));
+    EXPECT_EQ(mpmx_cli("check " + in_metal).status, 0) << name;
+  }
+  const std::string a1 = mpmx::test::slurp(kDeck);
+  ASSERT_NE(a1.find("units = \"dimensionless"), std::string::npos);
+  for (const std::string units : {"nm_ps_Gpa", "consistent units", "furlongs"}) {
+    const std::string text = std::regex_replace(a1, std::regex("units = \"[^\"]*\""), "units = \"" + units + "\"");
+    const auto r = mpmx_cli("check " + deck_file("cli_units.toml", text));
+    EXPECT_EQ(r.status, 2) << units << "\n" << r.output;
+    EXPECT_NE(r.output.find("'case.units' = \"" + units + "\": not a known unit system: give one of nm_ps_GPa, "
+                            "mm_us_GPa, metal, SI, or \"dimensionless\""),
+              std::string::npos)
+        << r.output;
+  }
+  for (const std::string units : {"nm_ps_GPa", "SI", "dimensionless", "dimensionless (c = 1)"}) {
+    const std::string text = std::regex_replace(a1, std::regex("units = \"[^\"]*\""), "units = \"" + units + "\"");
+    EXPECT_EQ(mpmx_cli("check " + deck_file("cli_units.toml", text)).status, 0) << units;
+  }
+}
+
+// `check` warns (exit 0) of a velocity, density or modulus no solid has in the deck's
+// units, naming the likely slip; the same deck in the right units gets no warning.
+TEST(Cli, CheckWarnsOfUnitSlips) {
+  const std::string deck = R"([case]
+id = "slip"
+units = "nm_ps_GPa"
+
+[grid]
+upper = 20.0
+cells = 20
+
+[particles]
+per_cell = 2
+
+[scheme]
+name = "mpm"
+
+[material]
+model = "linear_elastic"
+youngs_modulus = 169.878e9
+density = 8935.577
+
+[initial.velocity]
+profile = "uniform"
+value = 1000.0
+
+[boundary]
+left = { type = "fixed" }
+right = { type = "fixed" }
+
+[time]
+dt = 0.0001
+end = 0.001
+)";
+  const auto r = mpmx_cli("check " + deck_file("cli_slips.toml", deck));
+  EXPECT_EQ(r.status, 0) << r.output;
+  for (const char* slip : {"warning: [material] density = 8935.58 in nm_ps_GPa is 8.94e+06 kg/m^3, far above",
+                           ": kg/m^3 typed for g/cm^3? (8.93558 would be 8.94e+03 kg/m^3)",
+                           "warning: [material] uniaxial modulus = 1.69878e+11 in nm_ps_GPa is 1.7e+20 Pa",
+                           ": Pa typed for GPa? (169.878 would be 1.7e+11 Pa)",
+                           "warning: initial.velocity = 1000 in nm_ps_GPa is 1e+06 m/s",
+                           ": m/s typed for km/s? (1 would be 1e+03 m/s)"})
+    EXPECT_NE(r.output.find(slip), std::string::npos) << slip << "\n" << r.output;
+  const std::string right =
+      replaced(replaced(replaced(deck, "169.878e9", "169.878"), "8935.577", "8.935577"), "1000.0", "1.0");
+  const auto ok = mpmx_cli("check " + deck_file("cli_no_slips.toml", right));
+  EXPECT_EQ(ok.status, 0) << ok.output;
+  EXPECT_EQ(ok.output.find("warning"), std::string::npos) << ok.output;
+}
+
+// A funcfl file names no element: its line 2's atomic number must be the deck's element's.
+TEST(Cli, FuncflElementMustMatchTheFile) {
+  const std::string ni = "/usr/share/lammps/potentials/Ni_u3.eam";
+  if (!std::filesystem::exists(ni)) GTEST_SKIP() << ni << " is not installed";
+  const std::string md = replaced(kSmallMd, "file = \"Cu_mishin1.eam.alloy\"", "file = \"" + ni + "\"");
+  const auto r = mpmx_cli("md --check " + deck_file("cli_funcfl_cu.toml", md));
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("element 'Cu' (atomic number 29) is not that of " + ni +
+                          ", whose line 2 gives atomic number 28 (Ni)"),
+            std::string::npos)
+      << r.output;
+  const auto bad = mpmx_cli("md --check " + deck_file("cli_funcfl_xx.toml", replaced(md, "[\"Cu\"]", "[\"cu\"]")));
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("'cu' is not an element symbol"), std::string::npos) << bad.output;
+  const auto ok = mpmx_cli("md --check " + deck_file("cli_funcfl_ni.toml", replaced(md, "[\"Cu\"]", "[\"Ni\"]")));
+  EXPECT_EQ(ok.status, 0) << ok.output;
+}
+
+// A point that leaves the grid is named with its axis, the step and the time (exit 3).
+TEST(Cli, LeftTheGridNamesAxisStepAndTime) {
+  std::string deck = mpmx::test::slurp(kExamples + "N3_two_disks_ddmp.toml");
+  deck = replaced(deck, "velocity = [0.1, 0.1]", "velocity = [0.0, 2.0]");
+  const std::string out = ::testing::TempDir() + "cli_left_grid";
+  const auto r = mpmx_cli("run " + deck_file("cli_left_grid.toml", deck) + " -o " + out + " -q --no-plot --overwrite");
+  EXPECT_EQ(r.status, 3) << r.output;
+  EXPECT_TRUE(std::regex_search(r.output, std::regex(R"(left the grid \(y = [0-9.e+-]+, more than a cell past the )"
+                                                     R"(grid's upper y end\) in step [0-9]+ \(t = [0-9.e+-]+\))")))
+      << r.output;
+  std::filesystem::remove_all(out);
+}
+
+// With dt = "cfl" the progress line counts the steps run, its total marked an estimate
+// ("~"), and its "done" says the steps the summary says.
+TEST(Cli, CflProgressCountsTheStepsRun) {
+  if (std::system("script --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "no `script` to give the run a terminal";
+  std::string deck = mpmx::test::slurp(kExamples + "N3_two_disks_ddmp.toml");
+  deck = replaced(replaced(deck, "dt = 0.01", "dt = \"cfl\""), "end = 3.5", "end = 0.5");
+  const std::string out = ::testing::TempDir() + "cli_cfl_progress";
+  // script(1) gives the run a terminal, where the progress line and its "done" are drawn.
+  const std::string cmd = "script -qec '" + std::string(MPMX_BINARY) + " run " + deck_file("cli_cfl.toml", deck) +
+                          " -o " + out + " --no-plot --overwrite' /dev/null 2>&1";
+  Result r{-1, {}};
+  if (FILE* p = popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    while (std::fgets(buf, sizeof buf, p)) r.output += buf;
+    r.status = pclose(p);
+  }
+  EXPECT_EQ(r.status, 0) << r.output;
+  std::smatch done, summary;
+  ASSERT_TRUE(std::regex_search(r.output, done, std::regex(R"(: done, ([0-9]+) steps in)"))) << r.output;
+  ASSERT_TRUE(std::regex_search(r.output, summary, std::regex(R"(N3: ([0-9]+) steps in)"))) << r.output;
+  EXPECT_EQ(done[1], summary[1]) << r.output;
+  EXPECT_EQ(mpmx::test::json_number(mpmx::test::slurp(out + "/run.json"), "steps"), std::stod(summary[1])) << r.output;
+  std::filesystem::remove_all(out);
+}
+
+// After md --resume the summary's time and rate are this invocation's: it says its steps.
+TEST(Cli, ResumedMdSaysTheStepsItRan) {
+  const std::string deck = deck_file(
+      "cli_md_resume.toml",
+      replaced(kSmallMd, "file = \"Cu_mishin1.eam.alloy\"", "file = \"/usr/share/lammps/potentials/Cu_mishin1.eam.alloy\""));
+  const std::string out = ::testing::TempDir() + "cli_md_resume";
+  std::filesystem::remove_all(out);
+  const auto stop = mpmx_cli("md " + deck + " -o " + out + " -q -j 1 --stop-after 100");
+  ASSERT_EQ(stop.status, 130) << stop.output;
+  const auto r = mpmx_cli("md " + deck + " -o " + out + " -q -j 1 --resume");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("108 atoms, 200 steps (100 of them now, after --resume), "), std::string::npos) << r.output;
+  std::filesystem::remove_all(out);
 }

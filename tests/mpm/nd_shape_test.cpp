@@ -8,6 +8,8 @@
 #include <cmath>
 #include <random>
 
+#include <fmt/format.h>
+
 #include "mpmx/core/error.hpp"
 #include "mpmx/mpm/shape/axis.hpp"
 #include "mpmx/mpm/shape/ddmp.hpp"
@@ -101,6 +103,16 @@ void check_threads_and_off_grid(const Case& c) {
     } catch (const mpmx::RunError& e) {
       EXPECT_NE(std::string(e.what()).find("particle 431 left the grid"), std::string::npos) << e.what();
     }
+  }
+  // The axis a point left by is named ("y = ", "z = "), not called x.
+  p.x[0][431] = 0.5 * (g.lower[0] + g.upper[0]);
+  try {
+    eval(g, p, two);
+    ADD_FAILURE() << "no error for a point past the last axis";
+  } catch (const mpmx::RunError& e) {
+    const std::string want = fmt::format("particle 517 left the grid ({} = {}, more than a cell past the grid's upper {} end)",
+                                         Dim == 2 ? 'y' : 'z', past, Dim == 2 ? 'y' : 'z');
+    EXPECT_NE(std::string(e.what()).find(want), std::string::npos) << e.what();
   }
 }
 

@@ -95,6 +95,20 @@ void apply_shared_checks(CLI::App& app) {
   for (CLI::App* sub : app.get_subcommands({})) apply_shared_checks(*sub);
 }
 
+void say_ignored(const CLI::App& command, std::initializer_list<IgnoredOption> options) {
+  for (const IgnoredOption& o : options)
+    if (const CLI::Option* given = command.get_option_no_throw(o.name); given && given->count() > 0)
+      fmt::print(stderr, "mpmx {}: {} ignored: {}\n", command.get_name(), o.name, o.reason);
+}
+
+void say_ignored_by_check(const CLI::App& command) {
+  say_ignored(command, {{"--out", "a check writes nothing"},
+                        {"--threads", "a check runs nothing"},
+                        {"--resume", "a check runs nothing"},
+                        {"--quiet", "a check draws no progress line"},
+                        {"--no-plot", "a check draws no figures"}});
+}
+
 std::string out_dir_of(const std::string& out, const std::string& deck) {
   return out.empty() ? "runs/" + std::filesystem::path(deck).stem().string() : out;
 }

@@ -4,6 +4,7 @@
 // range, non-empty paths. CLI11 validators, so a bad value is a CLI::ValidationError
 // (exit code 2) before any command runs.
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -44,6 +45,19 @@ int threads_for(int threads, double items, double per_thread);
 // would fork only for the step's short loops (a 500-atom box ran 19x slower on 2 threads
 // than on one while another program held a core).
 inline constexpr double kAtomsPerMdThread = 4096;
+
+// The options every command takes: -o/--out, -j/--threads, --resume, -q/--quiet,
+// --no-plot and --check, so that a command line written for one command works with
+// another. The rule: an option that cannot apply to a command (`check --out`, `md
+// --no-plot`: md draws no figures) is accepted and said to be ignored, with the reason,
+// one line on stderr; it never changes what the command does.
+struct IgnoredOption {
+  const char* name;    // "--no-plot"
+  const char* reason;  // "md draws no figures"
+};
+void say_ignored(const CLI::App& command, std::initializer_list<IgnoredOption> options);
+// What `--check` (and `mpmx check`) ignores: --out, --threads, --resume, --quiet, --no-plot.
+void say_ignored_by_check(const CLI::App& command);
 
 // The shared policy, applied by main() to every command once all are registered: any
 // option named --threads, --checkpoint-minutes, --checkpoint-every or --out gets the

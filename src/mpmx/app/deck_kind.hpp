@@ -16,6 +16,14 @@ enum class DeckKind { continuum, md, dpd, fit_dpd, potential };
 // continuum deck (whose reader names what is wrong).
 DeckKind deck_kind(const std::string& path);
 const char* deck_kind_name(DeckKind kind);
+// The command that runs a deck of `kind` ("run", "md", "dpd", "fit-dpd"; "" for a potential file).
+const char* deck_command(DeckKind kind);
+
+// Every running command's first step: a deck whose tables show another kind is refused
+// with one sentence naming the command that runs it (InputError, exit 2), before its
+// reader would list the keys it does not know. A file TOML cannot read, or one of no
+// evident kind, is left to the command's reader, which names what is wrong.
+void require_deck_kind(const std::string& deck, DeckKind kind);
 
 // A command's check of a deck: prints its estimate, throws InputError on what its run
 // would refuse. `force`: a work estimate over a day is said, not refused.
@@ -23,7 +31,8 @@ using DeckCheck = std::function<void(const std::string& deck, bool force)>;
 void register_deck_check(DeckKind kind, DeckCheck check);
 
 // `check`'s dispatch: true when the deck is of another kind than continuum and that
-// kind's check ran; a potential file is refused with a sentence saying what it is.
+// kind's check ran (and then said which command runs it); a potential file is refused
+// with a sentence saying what it is.
 bool check_deck_of_another_kind(const std::string& deck, bool force);
 
 }  // namespace mpmx::app

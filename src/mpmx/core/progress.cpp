@@ -1,5 +1,7 @@
 #include "mpmx/core/progress.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <unistd.h>
 
@@ -21,17 +23,26 @@ void Progress::show_rate(double items, std::string unit) {
 }
 
 void Progress::update(std::int64_t done) {
+  show(done, total_ > 0 ? static_cast<double>(done) / total_ : 1.0, false);
+}
+
+void Progress::update(std::int64_t done, double fraction) { show(done, fraction, true); }
+
+void Progress::show(std::int64_t done, double frac, bool estimated) {
   if (!active_) return;
   const auto now = clock::now();
   if (now - last_ < (terminal_ ? std::chrono::milliseconds(300) : std::chrono::milliseconds(60000))) return;
   last_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  const double frac = total_ > 0 ? static_cast<double>(done) / total_ : 1.0;
+  // An estimated total follows the steps the run has taken per fraction of it done.
+  const std::int64_t total =
+      estimated && frac > 0 ? std::max(done, static_cast<std::int64_t>(std::llround(done / frac))) : total_;
   const double rate = done > from_ ? (done - from_) / elapsed : 0.0;
-  const double eta = rate > 0 ? (total_ - done) / rate : 0.0;
+  const double eta = rate > 0 ? (total - done) / rate : 0.0;
   const std::string shown_rate = unit_.empty() ? "" : fmt::format("  {:.3g} {}/s", items_ * rate, unit_);
-  fmt::print(stderr, "{}{}: {:5.1f}%  step {}/{}{}  elapsed {}  ETA {}{}", terminal_ ? "\r" : "", label_,
-             100.0 * frac, done, total_, shown_rate, format_duration(elapsed), format_duration(eta), terminal_ ? "   " : "\n");
+  fmt::print(stderr, "{}{}: {:5.1f}%  step {}/{}{}{}  elapsed {}  ETA {}{}", terminal_ ? "\r" : "", label_,
+             100.0 * frac, done, estimated ? "~" : "", total, shown_rate, format_duration(elapsed),
+             format_duration(eta), terminal_ ? "   " : "\n");
   std::fflush(stderr);
 }
 

@@ -15,12 +15,17 @@ class Progress {
   // Also show the rate of `items` x steps a second (an MD box's atoms: "atom-steps").
   void show_rate(double items, std::string unit);
   void update(std::int64_t done);
+  // A run whose step count is not known ahead (dt = "cfl"): `fraction` of it is done
+  // (its time over its end time); the line shows the steps run and "~" the total
+  // estimated from the fraction, and finish(done) says the steps actually run.
+  void update(std::int64_t done, double fraction);
   void finish();
   // A run that stopped early (a state gone non-finite): the steps it did.
   void finish(std::int64_t done);
 
  private:
   using clock = std::chrono::steady_clock;
+  void show(std::int64_t done, double fraction, bool estimated);
   std::string label_;
   std::int64_t total_, from_;
   double items_ = 0;

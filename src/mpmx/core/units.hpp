@@ -55,4 +55,18 @@ inline std::string unit_system_names() {
   return s;
 }
 
+// The one rule for case.units in every deck kind: a known system's name, or, for a
+// continuum deck in units of its own, "dimensionless" (alone or followed by what sets the
+// scale: "dimensionless (E = rho0 = 1)"). A free description is refused, since a slip
+// ("nm_ps_Gpa") would otherwise pass as one. "" when `units` follows the rule, else why not.
+inline std::string case_units_problem(std::string_view units) {
+  if (unit_system(units)) return {};
+  constexpr std::string_view free = "dimensionless";
+  if (units.substr(0, free.size()) == free &&
+      (units.size() == free.size() || units[free.size()] == ' ' || units[free.size()] == '('))
+    return {};
+  return "not a known unit system: give one of " + unit_system_names() +
+         ", or \"dimensionless\" (followed by what sets the scale, e.g. \"dimensionless (E = rho0 = 1)\")";
+}
+
 }  // namespace mpmx::units

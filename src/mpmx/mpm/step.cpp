@@ -2,9 +2,12 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "mpmx/mpm/mass_distribution.hpp"
 #include "mpmx/mpm/musl.hpp"
 #include "mpmx/mpm/points.hpp"
+#include "mpmx/mpm/shape/hat.hpp"
 #include "mpmx/mpm/solve.hpp"
 #include "mpmx/mpm/tensor_viscosity.hpp"
 #include "mpmx/mpm/transfer.hpp"
@@ -61,8 +64,10 @@ void step_stencil(State<Dim>& s, double dt) {
   clock.lap(Phase::material);
 }
 
+namespace {
+
 template <int Dim>
-void step(State<Dim>& s, double dt) {
+void step_body(State<Dim>& s, double dt) {
   if constexpr (Dim > 1) {
     step_stencil(s, dt);
   } else {
@@ -102,6 +107,17 @@ void step(State<Dim>& s, double dt) {
       return;
     }
     finish(s, dt);
+  }
+}
+
+}  // namespace
+
+template <int Dim>
+void step(State<Dim>& s, double dt) {
+  try {
+    step_body(s, dt);
+  } catch (const shape::LeftGrid& e) {  // thrown before the clock moves: this step, from this time
+    throw RunError(fmt::format("{} in step {} (t = {:.6g})", e.what(), s.step + 1, s.time));
   }
 }
 

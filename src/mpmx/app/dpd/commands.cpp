@@ -62,12 +62,12 @@ void add_dpd_commands(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   dpd->add_option("deck", args->deck, "DPD deck (TOML)")->required();
-  dpd->add_option("--out", args->out, "output directory (default runs/<deck name>, as run)");
-  dpd->add_option("--threads", args->threads,
+  dpd->add_option("--out,-o", args->out, "output directory (default runs/<deck name>, as run)");
+  dpd->add_option("--threads,-j", args->threads,
                   "OpenMP threads (default: all cores, as run and md; results are the same for any count)");
   dpd->add_flag("--check", args->check, "validate the deck, print its work estimate and exit");
   dpd->add_flag("--force", args->force, "run even when the work estimate exceeds about a day");
-  dpd->add_flag("--quiet", args->quiet, "no progress line");
+  dpd->add_flag("--quiet,-q", args->quiet, "no progress line");
   dpd->add_flag("--overwrite", args->overwrite, kOverwriteHelp);
   dpd->add_flag("--resume", args->resume,
                 "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit; refused when "
@@ -78,8 +78,12 @@ void add_dpd_commands(CLI::App& app) {
   dpd->add_flag("--still", args->still,
                 "the rigid groups (flyer, grips) start at rest: the undriven twin of the run, which "
                 "tools/plot/dpd_study.py subtracts to leave the wave alone");
-  dpd->callback([args] {
-    if (args->check) return check_dpd(args->deck, args->force);
+  dpd->callback([args, dpd] {
+    require_deck_kind(args->deck, DeckKind::dpd);
+    if (args->check) {
+      say_ignored_by_check(*dpd);
+      return check_dpd(args->deck, args->force);
+    }
     auto deck = io::Deck::from_file(args->deck);
     dpd::DpdConfig config = dpd::read_dpd_config(deck);
     config.still = args->still;
@@ -109,17 +113,24 @@ void add_dpd_commands(CLI::App& app) {
   auto* fit = app.add_subcommand("fit-dpd", "Fit a DPD pair potential to an MD isotherm (D0: MD to DPD)");
   auto fargs = std::make_shared<Args>();
   fit->add_option("deck", fargs->deck, "fit deck (TOML)")->required();
-  fit->add_option("--out", fargs->out, "output directory (default runs/<deck name>, as run)");
-  fit->add_option("--threads", fargs->threads, "threads over the densities (default: all cores)");
+  fit->add_option("--out,-o", fargs->out, "output directory (default runs/<deck name>, as run)");
+  fit->add_option("--threads,-j", fargs->threads, "threads over the densities (default: all cores)");
   fit->add_flag("--check", fargs->check, "validate the deck and exit");
+  fit->add_flag("--quiet,-q", fargs->quiet, "no progress line");
+  fit->add_flag("--no-plot", fargs->no_plot, "ignored: fit-dpd draws no figures (accepted as every command takes it)");
   fit->add_flag("--overwrite", fargs->overwrite, kOverwriteHelp);
   fit->add_flag("--resume", fargs->resume,
                 "continue a stopped fit from OUT/checkpoint.bin (its last finished stage; bit-for-bit; refused when "
                 "the deck or a file it reads changed since)");
   // For tests: stop as if interrupted once so many stages are finished.
   fit->add_option("--stop-after", fargs->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
-  fit->callback([fargs] {
-    if (fargs->check) return check_fit(fargs->deck, false);
+  fit->callback([fargs, fit] {
+    require_deck_kind(fargs->deck, DeckKind::fit_dpd);
+    if (fargs->check) {
+      say_ignored_by_check(*fit);
+      return check_fit(fargs->deck, false);
+    }
+    say_ignored(*fit, {{"--no-plot", "fit-dpd draws no figures"}});
     auto deck = io::Deck::from_file(fargs->deck);
     const dpd::FitConfig config = dpd::read_fit_config(deck);
     const std::string out = out_dir_of(fargs->out, fargs->deck);
@@ -139,7 +150,7 @@ void add_dpd_commands(CLI::App& app) {
         [&](const std::string& dir) {
           // Stops the fit at once, saving the stages it finished.
           dpd::FitStop on_signal(fargs->deck, out, deck.table(), text.str(), config.density_ratios.size(), owner.run);
-          return dpd::run_fit(config, dir, deck.table(), threads, from, [&](const dpd::FitProgress& p) {
+          return dpd::run_fit(config, dir, deck.table(), threads, fargs->quiet, from, [&](const dpd::FitProgress& p) {
             on_signal.keep(p);
             if (fargs->stop_after > 0 && p.stages() >= fargs->stop_after) on_signal.stop();
           });

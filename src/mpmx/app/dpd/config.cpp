@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/app/case_table.hpp"
 #include "mpmx/app/dpd/budget.hpp"
 #include "mpmx/core/checked_count.hpp"
 #include "mpmx/core/error.hpp"
@@ -318,10 +319,10 @@ DpdConfig read_dpd_config(io::Deck& deck) {
   c.deck_file = deck.name();
   auto root = deck.root();
 
-  auto cs = root.table("case");
-  c.id = escape_controls(cs.string("id"));  // printed on progress and result lines
-  c.title = cs.string("title", "");
-  c.seed_ref = cs.string("seed", "");
+  const CaseTable cs = read_case_table(root, deck.name(), true, "metal");
+  c.id = cs.id;  // printed on progress and result lines
+  c.title = cs.title;
+  c.seed_ref = cs.seed;
 
   c.potential = read_potential(root.table("potential"), std::filesystem::path(deck.name()).parent_path().string());
   const double rc = cutoff(c.potential);

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/app/case_table.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/file_text.hpp"
 #include "mpmx/core/units.hpp"
@@ -20,10 +21,10 @@ FitConfig read_fit_config(io::Deck& deck) {
   c.deck_file = deck.name();
   const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
   auto root = deck.root();
-  auto cs = root.table("case");
-  c.id = escape_controls(cs.string("id"));  // printed on progress and result lines
-  c.title = cs.string("title", "");
-  c.seed_ref = cs.string("seed", "");
+  const CaseTable cs = read_case_table(root, deck.name(), true, "metal");
+  c.id = cs.id;  // printed on progress and result lines
+  c.title = cs.title;
+  c.seed_ref = cs.seed;
 
   auto md = root.table("md");
   io::Section pot = md.table("potential");

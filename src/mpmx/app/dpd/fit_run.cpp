@@ -30,7 +30,7 @@ double fcc_density(double mass, double a) { return 4 * mass * 1.66053906660 / (a
 }  // namespace
 
 FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads,
-                      const FitProgress& from, const std::function<void(const FitProgress&)>& keep) {
+                      bool quiet, const FitProgress& from, const std::function<void(const FitProgress&)>& keep) {
   namespace fs = std::filesystem;
   fs::create_directories(out_dir);
   const auto t0 = std::chrono::steady_clock::now();
@@ -43,7 +43,7 @@ FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml
                                  c.deck_file));
   // A resumed fit starts after its last finished stage.
   int done = from.stages();
-  Progress progress("fit-dpd stages", stages, false, done);
+  Progress progress("fit-dpd stages", stages, quiet, done);
   FitProgress now = from;
   auto finished = [&] {
     progress.update(++done);

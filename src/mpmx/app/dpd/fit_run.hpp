@@ -24,9 +24,9 @@ struct FitRunSummary {
   double wall_seconds = 0;
 };
 
-// `from`: the stages a stopped fit finished (empty: a fresh fit); `keep` is given the
+// `quiet`: no progress line. `from`: the stages a stopped fit finished (empty: a fresh fit); `keep` is given the
 // stages finished so far after each (for the checkpoint a signal writes).
 FitRunSummary run_fit(const FitConfig& c, const std::string& out_dir, const toml::table& deck_echo, int threads,
-                      const FitProgress& from = {}, const std::function<void(const FitProgress&)>& keep = {});
+                      bool quiet = false, const FitProgress& from = {}, const std::function<void(const FitProgress&)>& keep = {});
 
 }  // namespace mpmx::app::dpd

@@ -131,18 +131,19 @@ void add_md_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
     bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false, resume = false,
-         still = false, overwrite = false;
+         still = false, overwrite = false, no_plot = false;
     int ranks = 1, threads = 0;  // all cores, as run and dpd
     std::int64_t stop_after = 0;
   };
   auto args = std::make_shared<Args>();
   md->add_option("deck", args->deck, "MD deck (TOML)")->required();
-  md->add_option("--threads", args->threads,
+  md->add_option("--threads,-j", args->threads,
                  "OpenMP threads over the atoms (default: all cores, as run and dpd; results are the same for any count)");
-  md->add_option("--out", args->out, "output directory (default runs/<deck name>, as run)");
+  md->add_option("--out,-o", args->out, "output directory (default runs/<deck name>, as run)");
   md->add_flag("--check", args->check,
                "validate the deck, the potential file and the memory and work estimates; write nothing");
-  md->add_flag("--quiet", args->quiet, "no progress line");
+  md->add_flag("--quiet,-q", args->quiet, "no progress line");
+  md->add_flag("--no-plot", args->no_plot, "ignored: md draws no figures (accepted as every command takes it)");
   md->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   md->add_flag("--resume", args->resume,
                "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit; refused when "
@@ -163,9 +164,13 @@ void add_md_commands(CLI::App& app) {
   md->add_option("--ranks", args->ranks, "MPI ranks for --lammps (mpirun -np N when N > 1)")
       ->check(whole_number(1, 1 << 20))
       ->needs(lammps);
-  md->callback([args] {
-    if (args->check)
+  md->callback([args, md] {
+    require_deck_kind(args->deck, DeckKind::md);
+    if (args->check) {
+      say_ignored_by_check(*md);
       return check_md(args->deck, args->force || args->lammps_write_only, args->lammps || args->lammps_write_only);
+    }
+    say_ignored(*md, {{"--no-plot", "md draws no figures"}});
     auto deck = io::Deck::from_file(args->deck);
     md::MdConfig config = md::read_md_config(deck);  // parses the potential file too
     if (args->still && !config.rod) throw InputError(fmt::format("{}: --still needs a deck with a [rod] table", args->deck));
@@ -205,8 +210,11 @@ void add_md_commands(CLI::App& app) {
       throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx md {} --out {} --resume{}",
                                     r.step, r.last_step, checkpoint_path(out), args->deck, out,
                                     args->still ? " --still" : ""));
-    fmt::print("{} atoms, {} steps, {:.3g} s, {:.4g} atom-steps/s, PE {:.6f} eV/atom -> {}/run.json\n", r.atoms,
-               r.steps, r.wall_seconds, r.atom_steps_per_second, r.potential_energy_per_atom, out);
+    // After --resume the time and rate are this invocation's: say its steps too.
+    const std::string now =
+        r.steps_now == r.steps ? std::string() : fmt::format(" ({} of them now, after --resume)", r.steps_now);
+    fmt::print("{} atoms, {} steps{}, {:.3g} s, {:.4g} atom-steps/s, PE {:.6f} eV/atom -> {}/run.json\n", r.atoms,
+               r.steps, now, r.wall_seconds, r.atom_steps_per_second, r.potential_energy_per_atom, out);
   });
 }
 

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/app/case_table.hpp"
 #include "mpmx/core/checked_count.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/physical_bounds.hpp"
@@ -226,6 +227,10 @@ MdConfig read_md_config(io::Deck& deck) {
   c.deck_file = deck.name();
   const std::string deck_dir = std::filesystem::path(deck.name()).parent_path().string();
   auto root = deck.root();
+  const CaseTable cs = read_case_table(root, deck.name(), false, "metal");
+  c.id = cs.id;
+  c.title = cs.title;
+  c.seed_ref = cs.seed;
 
   c.potential = read_potential(root.table("potential"), deck_dir);
 

@@ -60,6 +60,8 @@ struct MdConfig {
   bool still = false;
   TrackSettings tracks;
   std::string deck_file;
+  // [case], optional in an md deck: id (default the deck file's name), title, seed.
+  std::string id, title, seed_ref;
 };
 
 // Reads and validates; throws InputError listing every problem (Deck::finish()).

@@ -111,6 +111,7 @@ std::string run_rod(const MdConfig& c, const Potential& pot, const std::string& 
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.atoms = static_cast<long>(n);
   r.steps = static_cast<long>(sys.step());
+  r.steps_now = static_cast<long>(sys.step() - first);
   r.atom_steps_per_second = secs > 0 ? n * static_cast<double>(sys.step() - first) / secs : 0.0;
   r.step = sys.step(), r.last_step = last;
   r.potential_energy_per_atom = sys.potential_energy() / n;

@@ -111,6 +111,7 @@ std::string run_bar(const MdConfig& c, const Potential& pot, const std::string& 
   const double n = static_cast<double>(s.atoms().size());
   r.atoms = static_cast<long>(n);
   r.steps = static_cast<long>(s.step());
+  r.steps_now = static_cast<long>(s.step() - first);
   r.atom_steps_per_second = secs > 0 ? n * static_cast<double>(s.step() - first) / secs : 0.0;
   r.potential_energy_per_atom = s.potential_energy() / n;
   r.stress_gpa = s.stress_gpa();
@@ -129,6 +130,7 @@ void write_record(const MdConfig& c, const Potential& pot, const toml::table& de
   const char* status = !stopped.empty() ? "stopped" : control.interrupted() ? "interrupted" : "completed";
   toml::table rec{{"version", MPMX_VERSION},
                   {"command", "md"},
+                  {"case", c.id},
                   {"status", status},
                   {"deck_file", c.deck_file},
                   {"deck", deck_echo},
@@ -222,6 +224,7 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   r.atoms = static_cast<long>(n);
   const std::int64_t run_steps = sys.step() - c.relax_steps;  // fewer when stopped
   r.steps = static_cast<long>(run_steps);
+  r.steps_now = static_cast<long>(done - first);
   r.wall_seconds = std::chrono::duration<double>(t1 - t0).count();
   const double run_seconds = std::chrono::duration<double>(t1 - run_start).count();
   r.atom_steps_per_second = run_seconds > 0 ? n * static_cast<double>(done - first) / run_seconds : 0.0;

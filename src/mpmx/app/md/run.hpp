@@ -16,7 +16,8 @@ using namespace mpmx::md;  // the MD driver speaks the engine's names
 
 struct MdRunSummary {
   long atoms = 0;
-  long steps = 0;
+  long steps = 0;        // the run's, those before a --resume included
+  long steps_now = 0;    // this invocation's, which wall_seconds and the rate are of
   double wall_seconds = 0;
   double atom_steps_per_second = 0;
   double potential_energy_per_atom = 0;

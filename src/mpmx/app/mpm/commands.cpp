@@ -18,8 +18,11 @@
 #include "mpmx/app/mpm/deck.hpp"
 #include "mpmx/app/mpm/preflight.hpp"
 #include "mpmx/app/mpm/run.hpp"
+#include "mpmx/app/mpm/unit_slips.hpp"
 
 namespace mpmx::app {
+
+using namespace mpm;
 
 namespace {
 
@@ -42,14 +45,62 @@ void same_deck_on_every_rank(const std::string& deck, const std::string& out) {
   }, ranks::Wait::input);
 }
 
-}  // namespace
+// `mpmx check` of a continuum deck, and `run --check`: the deck read, its memory refused
+// when it cannot fit, its work estimate said.
+void check_continuum(const std::string& deck, bool force, int ranks) {
+  const auto cfg = read_mpm_deck(deck);
+  // A check refuses what cannot run here (memory); work over a day is said, not refused:
+  // the deck may be meant for a cluster, and `run` asks for --force itself.
+  const MpmPreflight pre = preflight_mpm(cfg, ranks, physical_memory_bytes(), true);
+  const MpmBudget& budget = pre.budget;
+  const std::string steps =
+      cfg.cfl_dt ? fmt::format("about {} (dt from the CFL condition at the start)", cfg.steps())
+                 : fmt::format("{}", cfg.steps());
+  if (cfg.dim == 1) {
+    fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", deck, cfg.id, cfg.cells,
+               cfg.per_cell, steps, mpm::scheme_name(cfg.scheme.scheme));
+  } else {
+    std::vector<int> cells(cfg.cells_all.begin(), cfg.cells_all.begin() + cfg.dim),
+        per(cfg.per_cell_all.begin(), cfg.per_cell_all.begin() + cfg.dim);
+    fmt::print("{}: ok (case {}, {}-D, {} cells, {} points per cell, {} bodies, {} steps, scheme {}, material {})\n",
+               deck, cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), cfg.bodies.size(),
+               steps, mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
+  }
+  fmt::print("  estimate: about {} of memory, {:.3g} hours of work on one core{}{}{}\n", format_bytes(budget.bytes),
+             budget.seconds / 3600.0,
+             budget.levels > 1 ? fmt::format(" (a study of {} grids: the finest grid's memory, the work of all)",
+                                             budget.levels)
+                               : std::string(),
+             budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string(),
+             budget.ranks > 1 ? fmt::format(" (each of {} ranks)", budget.ranks) : std::string());
+  fmt::print("  the continuum at {:.3g} point-steps/s per core ({})\n", budget.point_rate,
+             budget.point_rate_measured ? "its scheme and law timed on this core just now"
+                                        : "a typical figure");
+  if (budget.md_atom_steps > 0)
+    fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.3g} atom-steps/s per core "
+               "({}), with one box per point: the most it can cost (boxes shared by history run fewer, as "
+               "run.json's md.atom_steps against md.atom_steps_unshared says; the memory is that of one box per "
+               "point too)\n",
+               budget.points, budget.md_atoms_per_point, budget.md_atom_steps,
+               budget.md_atom_steps / budget.md_rate / 3600.0, budget.md_rate,
+               budget.md_rate_measured ? "one of its boxes timed on this core just now" : "a typical figure");
+  if (budget.md_atom_steps > 0)
+    fmt::print("  each box keeps {:.0f} bytes per atom between macro steps (its atoms and its neighbour list)\n",
+               budget.md_bytes_per_atom);
+  if (!pre.pending.empty()) fmt::print("  {}\n", pre.pending);
+  for (const std::string& slip : unit_slips(cfg)) fmt::print("  warning: {}\n", slip);
+  if (!(budget.seconds <= kWorkLimitSeconds) && !force)
+    fmt::print("  more than a day of work{}: `mpmx run` needs --force; over N MPI ranks it is about 1/N "
+               "(check --ranks N)\n",
+               budget.ranks > 1 ? " on each rank" : " on one core");
+}
 
-using namespace mpm;
+}  // namespace
 
 void add_mpm_commands(CLI::App& app) {
   struct Args {
     std::string deck, out;
-    bool quiet = false, no_plot = false, resume = false, force = false, overwrite = false;
+    bool quiet = false, no_plot = false, resume = false, check = false, force = false, overwrite = false;
     int threads = 0, ranks = 1;
     std::int64_t checkpoint_every = 0, stop_after = 0;
     double checkpoint_minutes = 10.0, rebalance_above = 1.2;
@@ -68,6 +119,7 @@ void add_mpm_commands(CLI::App& app) {
                   "material law, the grid and the points; the same results for any N (default 0: the MD boxes "
                   "on all cores, the rest on one)")
       ->check(CLI::NonNegativeNumber);
+  run->add_flag("--check", args->check, "only check the deck and print its estimate, as `mpmx check`; write nothing");
   run->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   run->add_flag("--resume", args->resume,
                 "continue from OUT/checkpoint.bin (bit-for-bit; refused when the deck or a file it reads changed "
@@ -84,11 +136,22 @@ void add_mpm_commands(CLI::App& app) {
       ->check(finite_non_negative());
   // For tests: stop as if interrupted after step N (a checkpoint at a known step).
   run->add_option("--stop-after", args->stop_after, "")->group("")->check(CLI::NonNegativeNumber);
-  run->callback([args] {
+  run->callback([args, run] {
+    if (args->check) {
+      if (ranks::size() > 1) {  // every rank would print the same check
+        ranks::mark_agreed();   // the same command line on every rank
+        throw InputError("run --check runs as one process: without mpirun, or `mpmx check --ranks N DECK` for the "
+                         "estimate over N ranks");
+      }
+      require_deck_kind(args->deck, DeckKind::continuum);
+      say_ignored_by_check(*run);
+      return check_continuum(args->deck, args->force, 1);
+    }
     // Every rank reads the deck and its estimate; under MPI a bad one stops them all with
     // one message.
     MpmConfig cfg;
     ranks::together([&] {
+      require_deck_kind(args->deck, DeckKind::continuum);
       cfg = read_mpm_deck(args->deck);
       preflight_mpm_run(cfg, ranks::size(), physical_memory_bytes(), args->force);
     }, ranks::Wait::input);
@@ -108,8 +171,9 @@ void add_mpm_commands(CLI::App& app) {
     const auto r = run_any(cfg, o);
     if (r.interrupted) {
       ranks::mark_agreed();  // every rank stopped at the same step
-      throw Interrupted(fmt::format("step {} of {} written to {}; continue with: mpmx run {} --out {} --resume",
-                                    r.steps, cfg.steps(), checkpoint_path(out), args->deck, out));
+      throw Interrupted(fmt::format("step {} of {}{} written to {}; continue with: mpmx run {} --out {} --resume",
+                                    r.steps, cfg.cfl_dt ? "about " : "", cfg.steps(), checkpoint_path(out),
+                                    args->deck, out));
     }
     if (!ranks::root()) return;
     fmt::print("{}: {} steps in {:.3f} s -> {}/run.json\n", cfg.id, r.steps, r.wall_seconds, out);
@@ -135,52 +199,17 @@ void add_mpm_commands(CLI::App& app) {
   check->add_option("--ranks", args->ranks,
                     "estimate for a run over so many MPI ranks (md_closure boxes spread over them; default 1)")
       ->check(CLI::Range(1, 1 << 20));
-  check->callback([args] {
+  check->add_option("--out,-o", args->out, "ignored: check writes nothing");
+  check->add_option("--threads,-j", args->threads, "ignored: check runs nothing");
+  check->add_flag("--resume", args->resume, "ignored: check runs nothing");
+  check->add_flag("--quiet,-q", args->quiet, "ignored: check draws no progress line");
+  check->add_flag("--no-plot", args->no_plot, "ignored: check draws no figures");
+  check->add_flag("--check", args->check, "ignored: checking is what check does");
+  check->callback([args, check] {
+    say_ignored_by_check(*check);
+    say_ignored(*check, {{"--check", "checking is what check does"}});
     if (check_deck_of_another_kind(args->deck, args->force)) return;  // md, dpd, fit-dpd: their own check
-    const auto cfg = read_mpm_deck(args->deck);
-    // A check refuses what cannot run here (memory); work over a day is said, not refused:
-    // the deck may be meant for a cluster, and `run` asks for --force itself.
-    const MpmPreflight pre = preflight_mpm(cfg, args->ranks, physical_memory_bytes(), true);
-    const MpmBudget& budget = pre.budget;
-    const std::string steps =
-        cfg.cfl_dt ? fmt::format("about {} (dt from the CFL condition at the start)", cfg.steps())
-                   : fmt::format("{}", cfg.steps());
-    if (cfg.dim == 1) {
-      fmt::print("{}: ok (case {}, {} cells x {} particles, {} steps, scheme {})\n", args->deck, cfg.id, cfg.cells,
-                 cfg.per_cell, steps, mpm::scheme_name(cfg.scheme.scheme));
-    } else {
-      std::vector<int> cells(cfg.cells_all.begin(), cfg.cells_all.begin() + cfg.dim),
-          per(cfg.per_cell_all.begin(), cfg.per_cell_all.begin() + cfg.dim);
-      fmt::print("{}: ok (case {}, {}-D, {} cells, {} points per cell, {} bodies, {} steps, scheme {}, material {})\n",
-                 args->deck, cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), cfg.bodies.size(),
-                 steps, mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
-    }
-    fmt::print("  estimate: about {} of memory, {:.3g} hours of work on one core{}{}{}\n", format_bytes(budget.bytes),
-               budget.seconds / 3600.0,
-               budget.levels > 1 ? fmt::format(" (a study of {} grids: the finest grid's memory, the work of all)",
-                                               budget.levels)
-                                 : std::string(),
-               budget.md_atoms > 0 ? fmt::format(", {:.4g} MD atoms", budget.md_atoms) : std::string(),
-               budget.ranks > 1 ? fmt::format(" (each of {} ranks)", budget.ranks) : std::string());
-    fmt::print("  the continuum at {:.3g} point-steps/s per core ({})\n", budget.point_rate,
-               budget.point_rate_measured ? "its scheme and law timed on this core just now"
-                                          : "a typical figure");
-    if (budget.md_atom_steps > 0)
-      fmt::print("  {:.0f} points x {} atoms: {:.3g} MD atom-steps, {:.3g} core-hours at {:.3g} atom-steps/s per core "
-                 "({}), with one box per point: the most it can cost (boxes shared by history run fewer, as "
-                 "run.json's md.atom_steps against md.atom_steps_unshared says; the memory is that of one box per "
-                 "point too)\n",
-                 budget.points, budget.md_atoms_per_point, budget.md_atom_steps,
-                 budget.md_atom_steps / budget.md_rate / 3600.0, budget.md_rate,
-                 budget.md_rate_measured ? "one of its boxes timed on this core just now" : "a typical figure");
-    if (budget.md_atom_steps > 0)
-      fmt::print("  each box keeps {:.0f} bytes per atom between macro steps (its atoms and its neighbour list)\n",
-                 budget.md_bytes_per_atom);
-    if (!pre.pending.empty()) fmt::print("  {}\n", pre.pending);
-    if (!(budget.seconds <= kWorkLimitSeconds) && !args->force)
-      fmt::print("  more than a day of work{}: `mpmx run` needs --force; over N MPI ranks it is about 1/N "
-                 "(check --ranks N)\n",
-                 budget.ranks > 1 ? " on each rank" : " on one core");
+    check_continuum(args->deck, args->force, args->ranks);
   });
 }
 

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "mpmx/app/case_table.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/file_text.hpp"
 #include "mpmx/core/units.hpp"
@@ -173,11 +174,11 @@ Body read_body(Section s, int dim, const material::Context& ctx, std::size_t num
 
 // [case]: the id, title, seed section and units.
 void read_case(Section& root, MpmConfig& c) {
-  Section cs = root.table("case");
-  c.id = escape_controls(cs.string("id"));  // printed on progress and result lines
-  c.title = cs.string("title", "");
-  c.seed = cs.string("seed", "");
-  c.units = cs.string("units", "consistent units");
+  const CaseTable cs = read_case_table(root, c.deck_path, true, "");
+  c.id = cs.id;  // printed on progress and result lines
+  c.title = cs.title;
+  c.seed = cs.seed;
+  c.units = cs.units;
 }
 
 // [grid]: 1-D lower, upper, cells; 2-D and 3-D an array each.

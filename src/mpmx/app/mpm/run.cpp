@@ -121,15 +121,14 @@ class ContinuumRun {
           check_volumes(s_);
           observe();
         }
-        progress.update(c_.cfl_dt ? std::min<std::int64_t>(schedule_.steps - 1,
-                                                           std::llround(s_.time / c_.end * schedule_.steps))
-                                  : n);
+        if (c_.cfl_dt) progress.update(n, s_.time / c_.end);  // the steps ahead are not known
+        else progress.update(n);
         if (folder_.checkpoints && !last && checkpoint_or_stop(n)) {
           r_.interrupted = true;
           break;
         }
       }
-      if (!r_.interrupted) progress.finish();
+      if (!r_.interrupted) progress.finish(s_.step);
     } catch (const RunError& e) {
       // The same on every rank: the continuum checks read the replicated state, and the
       // closure and the checkpoint agree on theirs (core/ranks).

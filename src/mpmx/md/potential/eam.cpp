@@ -9,8 +9,25 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/potential/eam_kernel.hpp"
 #include "mpmx/md/potential/eam_one_type.hpp"
+#include "mpmx/md/potential/element_numbers.hpp"
 
 namespace mpmx::md {
+
+namespace {
+
+// A funcfl file names no element: line 2 gives its atomic number, which the deck's
+// element symbol must have ("" when it does, or when the file gives none).
+std::string funcfl_element_problem(const std::string& el, const EamTables& t) {
+  const int z = atomic_number(el);
+  if (z == 0)
+    return fmt::format("'{}' is not an element symbol (as written: 'Cu', 'Ni', 'Al')", el);
+  if (t.atomic_number > 0 && z != t.atomic_number)
+    return fmt::format("element '{}' (atomic number {}) is not that of {}, whose line 2 gives atomic number {} ({})",
+                       el, z, t.file, t.atomic_number, element_symbol(t.atomic_number));
+  return {};
+}
+
+}  // namespace
 
 void eam_spline(int n, double delta, const std::vector<double>& f, double* out) {
   auto s = [out](int m, int c) -> double& { return out[7 * m + c]; };
@@ -204,12 +221,13 @@ EamSpec EamSpec::read(Table& t, const std::string& deck_dir) {
   if (!spec.file.empty()) {
     try {
       const EamTables tables = read_eam(spec.file);
-      if (tables.format != "funcfl")
-        for (const auto& el : spec.elements)
-          if (tables.element_index(el) < 0)
-            t.check(false, "elements",
-                    fmt::format("element '{}' is not in {} (it has: {})", el, spec.file,
-                                fmt::join(tables.elements, ", ")));
+      for (const auto& el : spec.elements)
+        if (tables.format != "funcfl" && tables.element_index(el) < 0)
+          t.check(false, "elements",
+                  fmt::format("element '{}' is not in {} (it has: {})", el, spec.file,
+                              fmt::join(tables.elements, ", ")));
+        else if (tables.format == "funcfl")
+          t.check(funcfl_element_problem(el, tables).empty(), "elements", funcfl_element_problem(el, tables));
     } catch (const InputError& e) {
       t.check(false, "file", e.what());
     }

@@ -196,14 +196,15 @@ void check_values_left(Cursor& c, int header_line, double needed, const std::str
                                     left));
 }
 
-// "Z mass [a lattice]" line of one element.
-double read_mass(Cursor& c, const std::string& element) {
+// "Z mass [a lattice]" line of one element; `z`, when given, gets Z.
+double read_mass(Cursor& c, const std::string& element, int* z = nullptr) {
   const auto text = c.line(fmt::format("'Z mass' of element {}", element));
   const auto w = c.words(text);
   const int ln = c.line_no();
   if (w.size() < 2)
     c.fail(ln, fmt::format("expected 'atomic-number mass ...' for element {}", element));
-  c.to_number(w[0], "atomic number", ln);
+  const double number = c.to_number(w[0], "atomic number", ln);
+  if (z) *z = number >= 1 && number <= 200 ? static_cast<int>(number) : 0;
   const double m = c.to_number(w[1], "mass", ln);
   if (const std::string why = atom_mass_problem(m); !why.empty())
     c.fail(ln, fmt::format("mass = {} amu{}: {}", m, element.starts_with("of ") ? "" : " of element " + element, why));
@@ -229,7 +230,7 @@ EamTables read_funcfl(const std::string& path) {
   t.file = path;
   t.format = "funcfl";
   c.line("a comment line");
-  const double mass = read_mass(c, "of the funcfl file");
+  const double mass = read_mass(c, "of the funcfl file", &t.atomic_number);
   EamTables file;  // the file's own grid
   const int grid_line = read_grid(c, file);
   check_values_left(c, c.line_no(), static_cast<double>(file.nrho) + 2.0 * file.nr,

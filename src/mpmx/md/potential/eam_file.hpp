@@ -16,6 +16,7 @@ struct EamTables {
   std::string format;                 // "funcfl", "setfl", "fs"
   std::vector<std::string> elements;  // elements of the file
   std::vector<double> masses;         // amu, per file element
+  int atomic_number = 0;              // funcfl: line 2's (the file names no element)
   int nrho = 0, nr = 0;
   double drho = 0, dr = 0, rhomax = 0, cut = 0;
   std::vector<std::vector<double>> frho, rhor, z2r;  // 1-based

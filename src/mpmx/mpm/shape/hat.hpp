@@ -40,9 +40,18 @@ inline CellPos locate(double xi, int cells) {
 inline double clamp_to_grid(double xi, int cells) { return std::clamp(xi, 0.0, double(cells)); }
 
 inline bool within_reach(double xi, int cells) { return xi >= -1.0 && xi <= cells + 1.0; }  // false for NaN
-inline void require_inside(double xi, int cells, std::size_t p, double x) {
-  if (!within_reach(xi, cells))
-    throw RunError(fmt::format("particle {} left the grid (x = {})", p, x));
+// A point more than a cell past the grid, on `axis` (0, 1, 2: x, y, z); step() adds the
+// step and the time, which the scheme does not know.
+class LeftGrid : public RunError {
+ public:
+  using RunError::RunError;
+};
+inline void require_inside(double xi, int cells, std::size_t p, double x, int axis = 0) {
+  if (!within_reach(xi, cells)) {
+    const char name = "xyz"[std::clamp(axis, 0, 2)];
+    throw LeftGrid(fmt::format("particle {} left the grid ({} = {}, more than a cell past the grid's {} {} end)", p,
+                               name, x, xi < 0 ? "lower" : "upper", name));
+  }
 }
 
 // Hat of node i continued flat past the grid ends, integrated from -inf to xi (for the

@@ -92,7 +92,8 @@ void size_box(shape::StencilBuild<Dim>& b, int threads) {
   }
   if (off_grid < n)  // throws with its number and position
     for (int d = 0; d < Dim; ++d)
-      shape::require_inside((b.p.x[d][off_grid] - g.lower[d]) * g.inv_dx[d], g.cells[d], off_grid, b.p.x[d][off_grid]);
+      shape::require_inside((b.p.x[d][off_grid] - g.lower[d]) * g.inv_dx[d], g.cells[d], off_grid, b.p.x[d][off_grid],
+                            d);
   b.width = 1;
   for (int d = 0; d < Dim; ++d) {
     b.W[d] = widest[d];
