@@ -268,25 +268,17 @@ bool any_tmp_in(const fs::path& dir) {
   return false;
 }
 
-// A write the system refuses is the machine's failure (SystemError: exit 1, the file and
-// the system's reason), not a stop by the physics.
-std::string system_error_of(const std::function<void()>& f) {
+// The message of the error E that f throws: a write the system refuses is the machine's
+// failure (SystemError: exit 1, the file and the system's reason), a file mpmx cannot
+// use (damaged) a RunError naming it.
+template <class E>
+std::string error_of(const std::function<void()>& f) {
   try {
     f();
-  } catch (const mpmx::SystemError& e) {
+  } catch (const E& e) {
     return e.what();
   }
-  return "(no SystemError)";
-}
-
-// A file mpmx cannot use (damaged): a RunError naming it.
-std::string run_error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const mpmx::RunError& e) {
-    return e.what();
-  }
-  return "(no RunError)";
+  return "(not the error expected)";
 }
 
 }  // namespace
@@ -413,7 +405,7 @@ TEST(Vtk, WritesAtomicallyAndOverwrites) {
   // A rename that fails (the target is a directory) throws and leaves no temporary.
   fs::create_directories(dir / "blocked.vtu");
   const std::string msg =
-      system_error_of([&] { vtk::write_points(dir / "blocked.vtu", lattice_points(1), {}); });
+      error_of<mpmx::SystemError>([&] { vtk::write_points(dir / "blocked.vtu", lattice_points(1), {}); });
   EXPECT_NE(msg.find((dir / "blocked.vtu").string()), std::string::npos) << msg;
   EXPECT_FALSE(any_tmp_in(dir));
   EXPECT_TRUE(fs::is_directory(dir / "blocked.vtu"));
@@ -425,12 +417,12 @@ TEST(Vtk, MissingDirectoryThrowsSystemErrorNamingPath) {
   const fs::path dir = root / "no" / "such" / "dir";
   const std::string p = (dir / "p.vtu").string(), g = (dir / "g.vti").string(),
                     s = (dir / "s.pvd").string();
-  std::string msg = system_error_of([&] { vtk::write_points(p, lattice_points(2), {}); });
+  std::string msg = error_of<mpmx::SystemError>([&] { vtk::write_points(p, lattice_points(2), {}); });
   EXPECT_NE(msg.find(p), std::string::npos) << msg;
-  msg = system_error_of([&] { vtk::write_image(g, {1, 1, 1}, {0, 0, 0}, {1, 1, 1}, {}); });
+  msg = error_of<mpmx::SystemError>([&] { vtk::write_image(g, {1, 1, 1}, {0, 0, 0}, {1, 1, 1}, {}); });
   EXPECT_NE(msg.find(g), std::string::npos) << msg;
   vtk::Series series(s);
-  msg = system_error_of([&] { series.add(1.0, "x.vtu"); });
+  msg = error_of<mpmx::SystemError>([&] { series.add(1.0, "x.vtu"); });
   EXPECT_NE(msg.find(s), std::string::npos) << msg;
   EXPECT_TRUE(series.entries().empty()) << "a failed add is not listed";
   EXPECT_FALSE(fs::exists(root / "no"));
@@ -485,6 +477,6 @@ TEST(Vtk, SeriesRestoreUpToKeepsEarlierEntries) {
   // A damaged file is an error naming it, not a silently empty series.
   std::ofstream(dir / "bad.pvd") << "<VTKFile><Collection><DataSet timestep=\"x\" file=\"a\"/>";
   vtk::Series bad((dir / "bad.pvd").string());
-  const std::string msg = run_error_of([&] { bad.restore_up_to(1.0); });
+  const std::string msg = error_of<mpmx::RunError>([&] { bad.restore_up_to(1.0); });
   EXPECT_NE(msg.find((dir / "bad.pvd").string()), std::string::npos) << msg;
 }
