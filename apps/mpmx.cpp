@@ -178,7 +178,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  mpmx::wait_passively(argc, argv);  // before MPI or OpenMP start: it may restart the process
+  mpmx::wait_passively(argv);  // before MPI or OpenMP start: it may restart the process
   // Past a file size limit (ulimit -f) a write fails with EFBIG and is reported as the
   // machine's failure, instead of the signal killing the run with no word.
   std::signal(SIGXFSZ, SIG_IGN);

@@ -54,8 +54,10 @@ TEST(J1Tiny, ShockSpeedWithinTenPercentOfHugoniot) {
   EXPECT_NEAR(json_number(json, "plateau_stress_gpa"), 162.0, 0.2 * 162.0);
   EXPECT_GT(json_number(json, "plateau_stress_gpa"), p_hugoniot * 0.9);
   // md's default: every core, as run's, at most one a kAtomsPerMdThread atoms.
-  const int threads = mpmx::app::threads_for(static_cast<int>(mpmx::hardware_threads()), json_number(json, "atoms"),
-                                             mpmx::app::kAtomsPerMdThread);
+  const double atoms = json_number(json, "atoms");
+  ASSERT_GT(atoms, 0.0) << json;  // absent, the rule below would give one thread whatever ran
+  const int threads =
+      mpmx::app::threads_for(static_cast<int>(mpmx::hardware_threads()), atoms, mpmx::app::kAtomsPerMdThread);
   EXPECT_EQ(json_number(json, "threads"), static_cast<double>(threads));
   EXPECT_GT(json_number(json, "md_atom_steps_per_second"), 0);
   EXPECT_TRUE(fs::exists(out / "md_bins.pvd"));

@@ -6,7 +6,7 @@
 
 namespace mpmx {
 
-void wait_passively(int /*argc*/, char** argv) {
+void wait_passively(char** argv) {
   if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
   if (setenv("OMP_WAIT_POLICY", "passive", 0) != 0) return;
   // The same program, arguments and (now) environment; exec keeps the process id, so an

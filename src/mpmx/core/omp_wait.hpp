@@ -11,6 +11,6 @@ namespace mpmx {
 // Called first thing in main(): returns only if the waiting policy is already set (by the
 // user: OMP_WAIT_POLICY or GOMP_SPINCOUNT, left as they are), or if the restart failed
 // (then the run goes on with libgomp's default).
-void wait_passively(int argc, char** argv);
+void wait_passively(char** argv);
 
 }  // namespace mpmx

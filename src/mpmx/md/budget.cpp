@@ -8,21 +8,34 @@
 
 namespace mpmx::md {
 
-double box_bytes(const double n[3], double a, double reach) {
+namespace {
+
+// An fcc box of n[0] x n[1] x n[2] cells of lattice constant `a` whose pairs reach `reach`:
+// its atoms, its entries (atoms and the ghosts within reach of the box) and its half
+// list's pairs, from the counts alone.
+struct BoxCounts {
+  double atoms, entries, pairs;
+};
+BoxCounts fcc_box_counts(const double n[3], double a, double reach) {
   const double atoms = 4.0 * n[0] * n[1] * n[2], density = 4.0 / (a * a * a);
   double entries = density;
   for (int d = 0; d < 3; ++d) entries *= n[d] * a + 2.0 * reach;
-  entries = std::max(entries, atoms);
-  const double pairs = atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density;
-  return kBytesPerLocal * atoms + kBytesPerEntry * entries + kBytesPerPair * pairs;
+  return {atoms, std::max(entries, atoms), atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density};
+}
+
+}  // namespace
+
+double box_bytes(const double n[3], double a, double reach) {
+  const BoxCounts c = fcc_box_counts(n, a, reach);
+  return kBytesPerLocal * c.atoms + kBytesPerEntry * c.entries + kBytesPerPair * c.pairs;
 }
 
 double measure_atom_steps_per_second(const Potential& pot, const SystemOptions& options, double a, int cells,
                                      double temperature, std::uint64_t seed, double dt) {
   // Timed only where the box is cheap to build: its pairs from the counts first (a deck
   // whose cutoff holds thousands of neighbours would spend minutes and gigabytes here).
-  const double reach = pot.cutoff() + options.skin, atoms = 4.0 * cells * cells * cells;
-  const double pairs = atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * 4.0 / (a * a * a);
+  const double n[3] = {double(cells), double(cells), double(cells)};
+  const double pairs = fcc_box_counts(n, a, pot.cutoff() + options.skin).pairs;
   if (!(pairs <= kMaxTimedPairs)) return 0.0;
   System box(fcc(cells, cells, cells, a, 0.0), pot, options);
   if (temperature > 0) box.thermalize(temperature, seed, 0);
@@ -45,14 +58,12 @@ double compact_box_bytes(double atoms) {
 }
 
 double kept_box_bytes(double cells, double a, double reach) {
-  const double atoms = 4.0 * cells * cells * cells, density = 4.0 / (a * a * a);
-  const double side = cells * a + 2.0 * reach;
-  const double entries = std::max(atoms, density * side * side * side);
-  const double pairs = atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density;
+  const double n[3] = {cells, cells, cells};
+  const BoxCounts c = fcc_box_counts(n, a, reach);
   constexpr double kListPerAtom = 3 * 8 + 4;  // positions at the build; the list's offsets
   constexpr double kPerPair = 4;               // an entry's index
   constexpr double kPerEntry = 4 + 4 + 3;      // type, owner, image
-  return compact_box_bytes(atoms) + kListPerAtom * atoms + kPerPair * pairs + kPerEntry * entries;
+  return compact_box_bytes(c.atoms) + kListPerAtom * c.atoms + kPerPair * c.pairs + kPerEntry * c.entries;
 }
 
 }  // namespace mpmx::md
