@@ -1,7 +1,13 @@
 // Micro-benchmarks of the MD engine: ten leapfrog steps of fcc Cu (Cu_mishin1) at 500
 // and 32,000 atoms, double and mixed precision; and one neighbour-list build of the same
 // crystals (skin 1 A), whose cost against a step's is what a box that rebuilds often
-// (a multiscale box under shear and shock) pays.
+// (a multiscale box under shear and shock) pays. Two floors of the half-list layout on
+// the same list, which no EAM kernel over it can beat: the gather floor (each candidate's
+// position loaded, r^2 formed and compared with the cut-off: once a step, as the kernel's
+// density pass keeps the pairs it finds for the force pass) and the scatter floor (each pair within the cut-off adding a force to both atoms).
+// A kernel's step against their sum is how near the layout's limit it runs.
+#include <cmath>
+#include <vector>
 #include <benchmark/benchmark.h>
 
 #include "mpmx/md/system.hpp"
@@ -40,8 +46,64 @@ void BM_NeighborBuild(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(s.atoms().size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["pairs_per_atom"] = static_cast<double>(nb.list.size()) / s.atoms().size();
 }
+void BM_GatherFloor(benchmark::State& state) {
+  const System s = make(static_cast<int>(state.range(0)), false);
+  Neighbors nb;
+  nb.build(s.atoms(), s.box(), s.potential().cutoff(), 1.0);
+  const double cutsq = s.potential().cutoff() * s.potential().cutoff();
+  const double* q = nb.xyz.data();
+  for (auto _ : state) {
+    double acc = 0;
+    for (int i = 0; i < nb.nlocal; ++i)
+      for (int t = nb.first[i]; t < nb.first[i + 1]; ++t) {
+        const int k = nb.list[t];
+        const double dx = q[4 * i] - q[4 * k], dy = q[4 * i + 1] - q[4 * k + 1], dz = q[4 * i + 2] - q[4 * k + 2];
+        const double rsq = dx * dx + dy * dy + dz * dz;
+        acc += rsq < cutsq ? rsq : 0.0;
+      }
+    benchmark::DoNotOptimize(acc);
+  }
+  state.counters["atom_steps_per_s"] =
+      benchmark::Counter(static_cast<double>(nb.nlocal) * state.iterations(), benchmark::Counter::kIsRate);
+}
+
+// The pairs within the cut-off (found once, with c = 1/r), each adding dx * c to one atom
+// and taking it from the other: the force pass's scatter alone.
+void BM_ScatterFloor(benchmark::State& state) {
+  const System s = make(static_cast<int>(state.range(0)), false);
+  Neighbors nb;
+  nb.build(s.atoms(), s.box(), s.potential().cutoff(), 1.0);
+  const double cutsq = s.potential().cutoff() * s.potential().cutoff();
+  std::vector<int> pi, pk;
+  std::vector<double> d, c;
+  const double* q = nb.xyz.data();
+  for (int i = 0; i < nb.nlocal; ++i)
+    for (int t = nb.first[i]; t < nb.first[i + 1]; ++t) {
+      const int k = nb.list[t];
+      const double dx = q[4 * i] - q[4 * k], dy = q[4 * i + 1] - q[4 * k + 1], dz = q[4 * i + 2] - q[4 * k + 2];
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      if (rsq < cutsq) pi.push_back(i), pk.push_back(k), d.insert(d.end(), {dx, dy, dz}), c.push_back(1 / std::sqrt(rsq));
+    }
+  std::vector<double> f(3 * static_cast<std::size_t>(nb.nall), 0.0);
+  for (auto _ : state) {
+    for (std::size_t p = 0; p < pi.size(); ++p) {
+      const double dx = d[3 * p], dy = d[3 * p + 1], dz = d[3 * p + 2];
+      const double cp = c[p];
+      double* fi = &f[3 * static_cast<std::size_t>(pi[p])];
+      double* fk = &f[3 * static_cast<std::size_t>(pk[p])];
+      fi[0] += dx * cp, fi[1] += dy * cp, fi[2] += dz * cp;
+      fk[0] -= dx * cp, fk[1] -= dy * cp, fk[2] -= dz * cp;
+    }
+    benchmark::DoNotOptimize(f.data());
+  }
+  state.counters["atom_steps_per_s"] =
+      benchmark::Counter(static_cast<double>(nb.nlocal) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["pairs_per_atom"] = static_cast<double>(pi.size()) / nb.nlocal;
+}
 }  // namespace
 
+BENCHMARK(BM_GatherFloor)->Arg(5)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ScatterFloor)->Arg(5)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_NeighborBuild)->Arg(5)->Arg(20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MdStep)->Args({5, 0})->Args({5, 1})->Args({20, 0})->Args({20, 1})->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();
