@@ -24,6 +24,8 @@
 #include "mpmx/particles/lattice.hpp"
 #include "mpmx/particles/rng.hpp"
 
+#include "mpmx/app/md/lammps_bar.hpp"
+
 #include "../md/md_test_util.hpp"
 
 using namespace mpmx::md;
@@ -65,22 +67,7 @@ std::map<long, std::array<double, 3>> read_dump(const fs::path& p) {
 
 LammpsResult run_lammps(const Case& cs, const System& sys, const fs::path& dir, int steps, double dt) {
   fs::create_directories(dir);
-  const Box& b = sys.box();
-  const Atoms& at = sys.atoms();
-  const int ntypes = static_cast<int>(sys.type_mass().size());
-  {
-    std::ofstream d(dir / "data.lmp");
-    d << "mpmx crosscheck\n\n" << at.size() << " atoms\n" << ntypes << " atom types\n\n";
-    d << fmt::format("0 {:.17g} xlo xhi\n0 {:.17g} ylo yhi\n0 {:.17g} zlo zhi\n", b.lx, b.ly, b.lz);
-    d << fmt::format("{:.17g} {:.17g} {:.17g} xy xz yz\n\nMasses\n\n", b.xy, b.xz, b.yz);
-    for (int t = 0; t < ntypes; ++t) d << fmt::format("{} {:.17g}\n", t + 1, sys.type_mass()[t]);
-    d << "\nAtoms # atomic\n\n";
-    for (std::size_t i = 0; i < at.size(); ++i)
-      d << fmt::format("{} {} {:.17g} {:.17g} {:.17g}\n", at.id[i], at.type[i] + 1, at.x[i], at.y[i], at.z[i]);
-    d << "\nVelocities\n\n";
-    for (std::size_t i = 0; i < at.size(); ++i)
-      d << fmt::format("{} {:.17g} {:.17g} {:.17g}\n", at.id[i], at.vx[i], at.vy[i], at.vz[i]);
-  }
+  mpmx::app::md::write_lammps_data(sys, (dir / "data.lmp").string(), "crosscheck");
   {
     std::ofstream in(dir / "in.lmp");
     in << "units metal\natom_style atomic\nboundary p p p\natom_modify map array\n";

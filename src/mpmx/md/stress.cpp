@@ -61,6 +61,24 @@ Mat3 box_stress(const Atoms& atoms, const std::vector<double>& mass, const Sym6&
   return a.stress(volume);
 }
 
+std::vector<double> atom_stress(const Atoms& atoms, const std::vector<double>& mass,
+                                const std::vector<double>& w, double volume) {
+  const std::size_t n = atoms.size();
+  std::vector<double> out(6 * n, 0.0);
+  if (n == 0) return out;
+  Accum all;
+  for (std::size_t i = 0; i < n; ++i) all.add(mass[atoms.type[i]], atoms.vx[i], atoms.vy[i], atoms.vz[i]);
+  const double u[3] = {all.p[0] / all.m, all.p[1] / all.m, all.p[2] / all.m};
+  const double per_atom = volume / static_cast<double>(n);
+  const int a[6] = {0, 1, 2, 0, 0, 1}, b[6] = {0, 1, 2, 1, 2, 2};
+  for (std::size_t i = 0; i < n; ++i) {
+    const double m = mass[atoms.type[i]];
+    const double v[3] = {atoms.vx[i] - u[0], atoms.vy[i] - u[1], atoms.vz[i] - u[2]};
+    for (int c = 0; c < 6; ++c) out[6 * i + c] = -(m * v[a[c]] * v[b[c]] * units::mvv2e + w[6 * i + c]) / per_atom;
+  }
+  return out;
+}
+
 std::vector<Mat3> slab_stress(const Atoms& atoms, const std::vector<double>& mass,
                               const std::vector<double>& w, const Box& box, int nbins) {
   return binned(atoms, mass, w, nbins, box.volume() / nbins,

@@ -25,6 +25,13 @@ std::vector<Mat3> slab_stress(const Atoms& atoms, const std::vector<double>& typ
                               const std::vector<double>& virial_atom, const Box& box, int nbins,
                               double x0, double x1);
 
+// Each atom's share of the box stress, over the mean volume an atom holds (V/N): 6 per
+// atom (xx yy zz xy xz yz), the kinetic part about the whole box's mean velocity; their
+// mean is box_stress. LAMMPS's compute stress/atom is the same times -V/N (pressure
+// times volume), and OVITO reads it as such.
+std::vector<double> atom_stress(const Atoms& atoms, const std::vector<double>& type_mass,
+                                const std::vector<double>& virial_atom, double volume);
+
 // Stress in nx x ny columns over x and y (2-D samples), index ix + nx * iy.
 std::vector<Mat3> column_stress(const Atoms& atoms, const std::vector<double>& type_mass,
                                 const std::vector<double>& virial_atom, const Box& box, int nx,

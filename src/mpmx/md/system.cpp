@@ -305,6 +305,13 @@ std::vector<Mat3> System::slab_stress_gpa(int nbins) const {
   return s;
 }
 
+std::vector<double> System::atom_stress_gpa() const {
+  if (!opt_.per_atom) throw RunError("per-atom stress needs SystemOptions::per_atom");
+  std::vector<double> s = atom_stress(snapshot(), mass_, work_.virial_atom, box_.volume());
+  for (auto& v : s) v *= units::eV_per_A3_in_GPa;
+  return s;
+}
+
 std::vector<Mat3> System::column_stress_gpa(int nx, int ny) const {
   if (!opt_.per_atom) throw RunError("binned stress needs SystemOptions::per_atom");
   auto s = column_stress(snapshot(), mass_, work_.virial_atom, box_, nx, ny);

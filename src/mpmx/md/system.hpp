@@ -92,6 +92,10 @@ class System {
   // Per-atom virial (6 per atom, half of each pair), kept when options.per_atom (summed
   // at the last step of an advance, as the energy and virial are).
   const std::vector<double>& per_atom_virial() const { return work_.virial_atom; }
+  // Per-atom potential energy (eV; F(rho_i) and half of each pair), kept likewise.
+  const std::vector<double>& per_atom_energy() const { return work_.energy_atom; }
+  // Each atom's stress in GPa (stress.hpp, atom_stress), 6 per atom; needs options.per_atom.
+  std::vector<double> atom_stress_gpa() const;
 
   const Atoms& atoms() const { return atoms_; }
   // Mutable access: forces are recomputed before the next use.

@@ -312,3 +312,83 @@ TEST(MdCliHostile, OutThatIsAFileIsBadInput) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("exists and is not a directory"), std::string::npos) << r.output;
 }
+
+// ------------------------------------------------ per-atom output (issue 47)
+
+namespace {
+
+// The last frame of a dump: its column names and rows.
+struct Frame {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> rows;
+  int column(const std::string& n) const {
+    return static_cast<int>(std::find(names.begin(), names.end(), n) - names.begin());
+  }
+  double mean(const std::string& n) const {
+    double s = 0;
+    for (const auto& r : rows) s += r[column(n)];
+    return s / static_cast<double>(rows.size());
+  }
+};
+
+Frame last_frame(const std::string& dump) {
+  Frame f;
+  const auto at = dump.rfind("ITEM: ATOMS ");
+  std::istringstream in(dump.substr(at + 12));
+  std::string header;
+  std::getline(in, header);
+  std::istringstream h(header);
+  for (std::string n; h >> n;) f.names.push_back(n);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream l(line);
+    std::vector<double> row;
+    for (double v; l >> v;) row.push_back(v);
+    if (row.size() == f.names.size()) f.rows.push_back(row);
+  }
+  return f;
+}
+
+}  // namespace
+
+// Per-atom energy and stress average to the box's (thermo.csv at the same step), and a
+// copper crystal at 300 K is fcc atom by atom.
+TEST(MdCli, DumpFieldsAverageToTheBoxAndNameTheCrystal) {
+  const auto deck = write_deck("fields.toml", with(kGoodMdDeck, "dump_every = 20",
+                                                   "dump_every = 20\ndump_fields = [\"pe\", \"stress\", \"structure\"]"));
+  const auto out = deck.parent_path() / "out_fields";
+  fs::remove_all(out);
+  const auto r = run_cli("md " + deck.string() + " --out " + out.string() + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string dump = slurp(out / "dump.lammpstrj");
+  EXPECT_NE(dump.find("ITEM: ATOMS id type x y z vx vy vz pe sxx syy szz sxy sxz syz structure"), std::string::npos);
+  const Frame f = last_frame(dump);
+  ASSERT_EQ(f.rows.size(), 108u);
+  // thermo.csv's last row (step 40): pe per atom, then sxx .. syz in GPa.
+  const std::string csv = slurp(out / "thermo.csv");
+  std::istringstream rows(csv);
+  std::string line, last;
+  while (std::getline(rows, line)) last = line.empty() ? last : line;
+  std::vector<double> t;
+  std::istringstream cells(last);
+  for (std::string c; std::getline(cells, c, ',');) t.push_back(std::stod(c));
+  ASSERT_EQ(t[0], 40);
+  EXPECT_NEAR(f.mean("pe"), t[2], 1e-8 * std::abs(t[2]));
+  const char* names[6] = {"sxx", "syy", "szz", "sxy", "sxz", "syz"};
+  for (int c = 0; c < 6; ++c) EXPECT_NEAR(f.mean(names[c]), t[6 + c], 1e-6) << names[c];
+  int fcc = 0;
+  for (const auto& row : f.rows) fcc += row[f.column("structure")] == 1;
+  EXPECT_EQ(fcc, 108);
+}
+
+TEST(MdCli, DumpFieldsAreChecked) {
+  auto r = run_cli("md " + write_deck("badfield.toml", with(kGoodMdDeck, "dump_every = 20",
+                                                            "dump_every = 20\ndump_fields = [\"stres\"]")).string() +
+                   " --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("run.dump_fields"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("'stres' is not a per-atom field"), std::string::npos) << r.output;
+  r = run_cli("md " + write_deck("nodump.toml", with(kGoodMdDeck, "dump_every = 20",
+                                                     "dump_fields = [\"pe\"]")).string() + " --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("needs dump_every > 0"), std::string::npos) << r.output;
+}

@@ -1,5 +1,6 @@
 #include "mpmx/app/md/config.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/app/case_table.hpp"
+#include "mpmx/app/md/dump.hpp"
 #include "mpmx/core/checked_count.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/physical_bounds.hpp"
@@ -60,6 +62,16 @@ void read_run(io::Section& run, bool jet, MdConfig& c) {
   c.dump_every = run.integer("dump_every", 0, 0, INT_MAX);
   run.check(c.dump_every == 0 || c.dump_every % c.thermo == 0 || jet, "dump_every",
             "must be 0 (no dump) or a multiple of thermo");
+  c.dump_fields = run.strings("dump_fields", {});
+  for (const std::string& f : c.dump_fields) {
+    const auto& known = dump_field_names();
+    run.check(std::find(known.begin(), known.end(), f) != known.end(), "dump_fields",
+              fmt::format("'{}' is not a per-atom field (fields: pe, stress, structure)", f));
+    run.check(std::count(c.dump_fields.begin(), c.dump_fields.end(), f) == 1, "dump_fields",
+              fmt::format("'{}' is named twice", f));
+  }
+  run.check(c.dump_fields.empty() || c.dump_every > 0, "dump_fields", "needs dump_every > 0 (there is no dump)");
+  if (dump_needs_per_atom(c.dump_fields)) c.options.per_atom = true;
   c.options.skin = run.number("skin", 1.0);
   run.non_negative("skin", c.options.skin);
   c.options.mixed_precision = run.choice("precision", {"double", "mixed"}, "double") == "mixed";

@@ -31,6 +31,7 @@ struct MdConfig {
   std::int64_t steps = 0;
   std::int64_t thermo = 100;        // steps between thermo rows
   std::int64_t dump_every = 0;      // LAMMPS dump frames (0: none), multiple of thermo
+  std::vector<std::string> dump_fields;  // per-atom columns of the dump (dump.hpp)
   Mat3 velocity_gradient{};         // 1/ps
   bool streaming = false;           // start with the streaming velocity of the gradient
   SystemOptions options;

@@ -225,7 +225,7 @@ std::string run_jet(const MdConfig& c, const Potential& pot, const std::string& 
   };
   if (!control.resuming()) {
     record();
-    if (dump) write_lammps_dump(*dump, sys.step(), sys.snapshot(), sys.box());
+    if (dump) write_dump_frame(*dump, sys, c.dump_fields, sys.options().threads);
   }
   const std::int64_t first = sys.step();
   Progress progress("md jet", c.steps, quiet, first);
@@ -237,7 +237,7 @@ std::string run_jet(const MdConfig& c, const Potential& pot, const std::string& 
     sys.advance(static_cast<int>(chunk), c.dt);  // jet_every < INT_MAX (config)
     done += chunk;
     record();
-    if (dump && sys.step() % c.dump_every == 0) write_lammps_dump(*dump, sys.step(), sys.snapshot(), sys.box());
+    if (dump && sys.step() % c.dump_every == 0) write_dump_frame(*dump, sys, c.dump_fields, sys.options().threads);
     progress.update(done);
     if (stopped.empty() && done < c.steps &&
         stop_md_at(control, sys, {{track.peak}, track.times, track.front_x, track.compressions}))

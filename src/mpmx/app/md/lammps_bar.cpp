@@ -33,16 +33,15 @@ std::string lammps_pair_lines(const PotentialSpec& spec, const Potential& pot) {
 
 void write_lammps_data(const System& sys, const std::string& path, const std::string& title) {
   const Box& b = sys.box();
-  if (b.xy != 0 || b.xz != 0 || b.yz != 0)
-    throw InputError(fmt::format("box tilt ({}, {}, {}): the LAMMPS route needs an orthogonal box", b.xy,
-                                 b.xz, b.yz));
   const Atoms a = sys.snapshot();  // positions in the box, on-step velocities
   const auto& mass = sys.type_mass();
   std::ofstream d(path);
   if (!d) throw SystemError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
   d << fmt::format("mpmx {} {}, step {} (atom_style atomic, metal units)\n\n", MPMX_VERSION, title, sys.step());
   d << fmt::format("{} atoms\n{} atom types\n\n", a.size(), mass.size());
-  d << fmt::format("0 {:.17g} xlo xhi\n0 {:.17g} ylo yhi\n0 {:.17g} zlo zhi\n\nMasses\n\n", b.lx, b.ly, b.lz);
+  d << fmt::format("0 {:.17g} xlo xhi\n0 {:.17g} ylo yhi\n0 {:.17g} zlo zhi\n", b.lx, b.ly, b.lz);
+  if (b.xy != 0 || b.xz != 0 || b.yz != 0) d << fmt::format("{:.17g} {:.17g} {:.17g} xy xz yz\n", b.xy, b.xz, b.yz);
+  d << "\nMasses\n\n";
   for (std::size_t t = 0; t < mass.size(); ++t) d << fmt::format("{} {:.17g}\n", t + 1, mass[t]);
   d << "\nAtoms # atomic\n\n";
   for (std::size_t i = 0; i < a.size(); ++i)

@@ -38,7 +38,8 @@ void write_lammps_bar(const Bar& bar, const PotentialSpec& spec, double dt, std:
 // InputError for the others.
 std::string lammps_pair_lines(const PotentialSpec& spec, const Potential& pot);
 // The system's atoms (positions in the box, on-step velocities), box and masses as a
-// LAMMPS data file (atom_style atomic); `title` goes into its first line.
+// LAMMPS data file (atom_style atomic; a tilted box with its xy xz yz line); `title`
+// goes into its first line.
 void write_lammps_data(const System& sys, const std::string& path, const std::string& title);
 
 struct LammpsRun {

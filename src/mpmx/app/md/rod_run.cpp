@@ -103,7 +103,7 @@ std::string run_rod(const MdConfig& c, const Potential& pot, const std::string& 
       sys.rescale_temperature(c.temperature, nf);
     if (tracks && (now - eq) % c.tracks.every == 0) tracks->record(frame());
     if (now % c.thermo == 0 || now == last) row();
-    if (dump && now % c.dump_every == 0) write_lammps_dump(*dump, now, sys.snapshot(), sys.box());
+    if (dump && now % c.dump_every == 0) write_dump_frame(*dump, sys, c.dump_fields, sys.options().threads);
     progress.update(now);
     if (stopped.empty() && now < last && stop_md_with(control, sys, save_rest)) break;
   }

@@ -200,7 +200,7 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   std::ofstream* dump = c.dump_every > 0 ? &control.tables().open("dump.lammpstrj") : nullptr;
   if (!control.resuming()) {
     row();
-    if (dump) write_lammps_dump(*dump, sys.step(), sys.snapshot(), sys.box());
+    if (dump) write_dump_frame(*dump, sys, c.dump_fields, sys.options().threads);
   }
   std::int64_t done = sys.step() - c.relax_steps;
   Progress progress("md", c.steps, o.quiet, done);
@@ -213,7 +213,7 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
     done += chunk;
     if (sys.step() % c.thermo == 0 || done == c.steps) row();
     if (!stopped.empty()) break;
-    if (dump && sys.step() % c.dump_every == 0) write_lammps_dump(*dump, sys.step(), sys.snapshot(), sys.box());
+    if (dump && sys.step() % c.dump_every == 0) write_dump_frame(*dump, sys, c.dump_fields, sys.options().threads);
     progress.update(done);
     if (done < c.steps && stop_md_at(control, sys, {})) break;
   }
