@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -58,6 +59,26 @@ inline std::filesystem::path scratch_file(const std::string& name, const std::st
   std::filesystem::create_directories(scratch_root());
   std::ofstream(scratch_root() / name) << text;
   return scratch_root() / name;
+}
+
+// A correlated series' mean and its standard error, from ten block means.
+struct BlockStats {
+  double mean = 0, sem = 0;
+};
+inline BlockStats block_stats(const std::vector<double>& x) {
+  const std::size_t nb = 10, len = x.size() / nb;
+  std::vector<double> m(nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    double sum = 0;
+    for (std::size_t k = b * len; k < (b + 1) * len; ++k) sum += x[k];
+    m[b] = sum / static_cast<double>(len);
+  }
+  BlockStats s;
+  for (double y : m) s.mean += y / nb;
+  double v = 0;
+  for (double y : m) v += (y - s.mean) * (y - s.mean);
+  s.sem = std::sqrt(v / (nb - 1) / nb);
+  return s;
 }
 
 inline bool have_lmp() { return std::system("command -v lmp > /dev/null 2>&1") == 0; }

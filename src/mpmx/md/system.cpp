@@ -234,6 +234,50 @@ void System::advance(int nsteps, const Mat3& grad, double dt) {
   }
 }
 
+void System::advance_coupled(int nsteps, double dt, Coupling& c) {
+  if (nsteps <= 0) return;
+  if (!(dt > 0)) throw InputError(fmt::format("MD time step dt = {}: must be positive", dt));
+  if (box_.xy != 0 || box_.xz != 0 || box_.yz != 0)
+    throw InputError("a thermostat or barostat needs an orthogonal box");
+  if (!valid_) refresh();
+  else if (!nb_.built()) rebuild();
+  g_ = Mat3{};
+  const int nt = opt_.threads;
+  for (int s = 0; s < nsteps; ++s) {
+    c.initial(*this, dt);
+    kick(atoms_, mass_, dt, 0.5, nt);
+    c.remap(*this, dt);
+    drift(atoms_, dt, g_, false, nt);
+    c.remap(*this, dt);
+    if (nb_.needs_rebuild(atoms_, box_, nt)) rebuild();
+    else nb_.update_positions(atoms_, box_, nt);
+    compute_forces(true);
+    ++step_;
+    time_ += dt;
+    kick(atoms_, mass_, dt, 0.5, nt);
+    c.final(*this, dt);
+  }
+}
+
+void System::scale_velocities(const Vec3& f) {
+  for (std::size_t i = 0; i < atoms_.size(); ++i) atoms_.vx[i] *= f[0], atoms_.vy[i] *= f[1], atoms_.vz[i] *= f[2];
+}
+
+void System::dilate(const Vec3& f) {
+  for (std::size_t i = 0; i < atoms_.size(); ++i) atoms_.x[i] *= f[0], atoms_.y[i] *= f[1], atoms_.z[i] *= f[2];
+  box_.lx *= f[0], box_.ly *= f[1], box_.lz *= f[2];
+}
+
+Vec3 System::mvv() const {
+  Vec3 k{0, 0, 0};
+  for (std::size_t i = 0; i < atoms_.size(); ++i) {
+    const double m = mass_[atoms_.type[i]];
+    k[0] += m * atoms_.vx[i] * atoms_.vx[i], k[1] += m * atoms_.vy[i] * atoms_.vy[i], k[2] += m * atoms_.vz[i] * atoms_.vz[i];
+  }
+  for (auto& v : k) v *= units::mvv2e;
+  return k;
+}
+
 void System::set_frozen_ids(std::int64_t max_id) {
   frozen_ids_ = max_id;
   hold_frozen();

@@ -77,6 +77,29 @@ class System {
   void advance(int nsteps, const Mat3& velocity_gradient, double dt);
   void advance(int nsteps, double dt) { advance(nsteps, Mat3{}, dt); }
 
+  // An extended system around the velocity-Verlet step (md/nose_hoover.hpp): `initial`
+  // sees the on-step velocities, forces and virial before the first half kick, `remap`
+  // runs before and after the drift (a barostat's half-step dilation), `final` after the
+  // closing half kick.
+  class Coupling {
+   public:
+    virtual ~Coupling() = default;
+    virtual void initial(System& s, double dt) = 0;
+    virtual void remap(System& s, double dt) = 0;
+    virtual void final(System& s, double dt) = 0;
+  };
+  // Advances n steps of dt (ps) coupled to `c`, with the energy and virial every step (a
+  // barostat reads the pressure at each). An orthogonal box, no velocity gradient.
+  void advance_coupled(int nsteps, double dt, Coupling& c);
+  // A coupling's moves: every velocity component times f along its axis (a thermostat's
+  // scaling, about zero as LAMMPS's fix nh); the box's edges and the atoms' positions
+  // times f along each axis (a barostat's dilation; forces recomputed by the step).
+  void scale_velocities(const Vec3& f);
+  void dilate(const Vec3& f);
+  // Sum of m v_a v_a per axis (eV, on-step velocities about zero): the kinetic part of a
+  // barostat's per-axis pressure.
+  Vec3 mvv() const;
+
   // Eq. 2.25 for the whole box, Cauchy sign (compression negative).
   Mat3 stress() const;      // eV/Angstrom^3
   Mat3 stress_gpa() const;  // GPa

@@ -392,3 +392,43 @@ TEST(MdCli, DumpFieldsAreChecked) {
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("needs dump_every > 0"), std::string::npos) << r.output;
 }
+
+// ------------------------------------------------ nvt, npt, nph (issue 47)
+
+TEST(MdCli, NptDeckRunsAndSaysItsLatticeConstant) {
+  std::string text = with(kGoodMdDeck, "strain_rate_per_s = 1e9", "ensemble = \"npt\"\npressure_gpa = 0.0");
+  text = with(text, "steps = 40", "steps = 200");
+  const auto deck = write_deck("npt.toml", text);
+  const auto out = deck.parent_path() / "out_npt";
+  fs::remove_all(out);
+  const auto r = run_cli("md " + deck.string() + " --out " + out.string() + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string json = slurp(out / "run.json");
+  EXPECT_NE(json.find("\"ensemble\" : \"npt\""), std::string::npos) << json;
+  const auto a = json_numbers(json, "lattice_constant_A");
+  ASSERT_EQ(a.size(), 3u);
+  EXPECT_NE(a[0], 3.615);  // the barostat moved the box
+  EXPECT_EQ(a[0], a[1]);
+}
+
+TEST(MdCli, EnsembleKeysAreChecked) {
+  const auto check = [](const std::string& name, const std::string& from, const std::string& to) {
+    return run_cli("md " + write_deck(name, with(kGoodMdDeck, from, to)).string() + " --check");
+  };
+  auto r = check("nvt_gradient.toml", "dump_every = 20", "dump_every = 20\nensemble = \"nvt\"");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("a thermostat or barostat runs an undeformed box"), std::string::npos) << r.output;
+  r = check("nvt_pressure.toml", "strain_rate_per_s = 1e9", "ensemble = \"nvt\"\npressure_gpa = 1.0");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("run.pressure_gpa"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("has no use with ensemble = \"nvt\""), std::string::npos) << r.output;
+  r = run_cli("md " + write_deck("npt_cold.toml", with(with(kGoodMdDeck, "temperature = 300.0", "temperature = 0.0"),
+                                                       "strain_rate_per_s = 1e9", "ensemble = \"npt\""))
+                          .string() +
+              " --check");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("need thermal.temperature > 0"), std::string::npos) << r.output;
+  r = check("npt_axes.toml", "strain_rate_per_s = 1e9", "ensemble = \"npt\"\nbarostat = \"aniso\"\npressure_gpa = [1, 2]");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("[px, py, pz]"), std::string::npos) << r.output;
+}

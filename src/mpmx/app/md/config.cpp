@@ -50,6 +50,36 @@ void read_thermal(io::Section& th, MdConfig& c) {
   c.relax_steps = th.integer("relax_steps", 0, 0, kMax64);
 }
 
+// [run] ensemble: nve, or the Nose-Hoover chain thermostat (nvt), with the MTK barostat
+// (npt), or the barostat alone (nph), LAMMPS's fix nvt / npt / nph (md/nose_hoover.hpp);
+// its target temperature is thermal.temperature, its periods t_damp_ps and p_damp_ps
+// (LAMMPS's Tdamp and Pdamp: 100 and 1000 steps by default, as its manual advises).
+void read_ensemble(io::Section& run, bool jet, MdConfig& c) {
+  c.ensemble = run.choice("ensemble", {"nve", "nvt", "npt", "nph"}, "nve");
+  const bool tstat = c.ensemble == "nvt" || c.ensemble == "npt", pstat = c.ensemble == "npt" || c.ensemble == "nph";
+  NoseHooverOptions& nh = c.nose_hoover;
+  nh.thermostat = tstat, nh.barostat = pstat, nh.temperature = c.temperature;
+  if (tstat) run.check(c.temperature > 0, "ensemble", "nvt and npt need thermal.temperature > 0 (their target)");
+  run.check(!jet || c.ensemble == "nve", "ensemble", "a [jet] runs nve (its piston and free surfaces)");
+  for (const char* key : {"t_damp_ps", "p_damp_ps", "pressure_gpa", "barostat"}) {
+    const bool wanted = std::string_view(key) == "t_damp_ps" ? tstat : pstat;
+    run.check(wanted || !run.has(key), key, fmt::format("has no use with ensemble = \"{}\"", c.ensemble));
+  }
+  nh.t_damp = run.number("t_damp_ps", 100 * c.dt);
+  run.positive("t_damp_ps", nh.t_damp);
+  nh.p_damp = run.number("p_damp_ps", 1000 * c.dt);
+  run.positive("p_damp_ps", nh.p_damp);
+  nh.isotropic = run.choice("barostat", {"iso", "aniso"}, "iso") == "iso";
+  if (nh.isotropic) {  // one target, the mean pressure's
+    const double p = run.number("pressure_gpa", 0.0);
+    nh.pressure = {p, p, p};
+  } else {  // a target for each axis's normal pressure
+    const auto p = run.numbers("pressure_gpa", {0.0, 0.0, 0.0});
+    if (p.size() == 3) std::copy(p.begin(), p.end(), nh.pressure.begin());
+    else run.check(false, "pressure_gpa", "with barostat = \"aniso\": [px, py, pz]");
+  }
+}
+
 // [run]: the time step and length, output, neighbour skin, precision, deformation.
 // `jet`: the deck has a [jet] table, which sets the length itself.
 void read_run(io::Section& run, bool jet, MdConfig& c) {
@@ -58,7 +88,7 @@ void read_run(io::Section& run, bool jet, MdConfig& c) {
   run.check(c.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
   if (!jet) c.steps = run.integer("steps", 0, kMax64);  // a jet's follow from its duration
   c.thermo = run.integer("thermo", 100, 1, INT_MAX);
-  run.choice("ensemble", {"nve"}, "nve");
+  read_ensemble(run, jet, c);
   c.dump_every = run.integer("dump_every", 0, 0, INT_MAX);
   run.check(c.dump_every == 0 || c.dump_every % c.thermo == 0 || jet, "dump_every",
             "must be 0 (no dump) or a multiple of thermo");
@@ -89,6 +119,9 @@ void read_run(io::Section& run, bool jet, MdConfig& c) {
     else run.check(false, "velocity_gradient_per_ps", "expected 9 numbers (row-major dv_i/dx_j)");
   }
   c.streaming = run.boolean("streaming_start", false);
+  run.check(c.ensemble == "nve" || (!has_rate && !has_grad && !c.streaming), "ensemble",
+            "a thermostat or barostat runs an undeformed box: no strain_rate_per_s, velocity_gradient_per_ps or "
+            "streaming_start");
 }
 
 // [scan]: the lattice-constant scan (M1).

@@ -10,6 +10,7 @@
 #include "mpmx/io/deck.hpp"
 #include "mpmx/md/bar.hpp"
 #include "mpmx/md/jet.hpp"
+#include "mpmx/md/nose_hoover.hpp"
 #include "mpmx/md/particles.hpp"
 #include "mpmx/md/rod.hpp"
 #include "mpmx/md/potential/potential.hpp"
@@ -32,6 +33,8 @@ struct MdConfig {
   std::int64_t thermo = 100;        // steps between thermo rows
   std::int64_t dump_every = 0;      // LAMMPS dump frames (0: none), multiple of thermo
   std::vector<std::string> dump_fields;  // per-atom columns of the dump (dump.hpp)
+  std::string ensemble = "nve";     // nve, nvt, npt, nph
+  NoseHooverOptions nose_hoover;    // the thermostat and barostat of nvt, npt, nph
   Mat3 velocity_gradient{};         // 1/ps
   bool streaming = false;           // start with the streaming velocity of the gradient
   SystemOptions options;

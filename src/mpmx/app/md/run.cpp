@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -17,6 +18,7 @@
 #include "mpmx/core/progress.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/md/bar.hpp"
+#include "mpmx/md/nose_hoover.hpp"
 #include "mpmx/md/particles.hpp"
 #include "mpmx/md/system.hpp"
 
@@ -172,12 +174,19 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   }
   System sys(fcc(c.cells[0], c.cells[1], c.cells[2], c.lattice_constant, c.strain_x), pot, c.options);
   const std::int64_t last_step = c.relax_steps + c.steps;
+  // nvt, npt, nph: the thermostat and barostat, built once the atoms are placed; their
+  // variables ride in the checkpoint after the system.
+  std::optional<NoseHoover> nh;
   if (control.resuming()) {
-    resume_md(control, sys, last_step);
+    resume_md_with(control, sys, last_step, [&](CheckpointIn& in) {
+      const auto state = in.numbers();
+      if (c.ensemble != "nve") nh.emplace(c.nose_hoover, sys), nh->set_state(state);
+    });
   } else {
     if (c.temperature > 0) sys.thermalize(c.temperature, c.seed, 0);
     if (c.relax_steps > 0) advance_steps(sys, c.relax_steps, Mat3{}, c.dt);  // section 6.2
     if (c.streaming) sys.add_streaming_velocity(c.velocity_gradient);
+    if (c.ensemble != "nve") nh.emplace(c.nose_hoover, sys);
   }
   // Only now, with the potential read and the system built: a bad deck or potential
   // leaves no output folder behind.
@@ -209,13 +218,17 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   const auto run_start = std::chrono::steady_clock::now();
   while (done < c.steps) {
     const std::int64_t chunk = std::min<std::int64_t>(c.thermo - sys.step() % c.thermo, c.steps - done);
-    sys.advance(static_cast<int>(chunk), c.velocity_gradient, c.dt);
+    if (nh) sys.advance_coupled(static_cast<int>(chunk), c.dt, *nh);
+    else sys.advance(static_cast<int>(chunk), c.velocity_gradient, c.dt);
     done += chunk;
     if (sys.step() % c.thermo == 0 || done == c.steps) row();
     if (!stopped.empty()) break;
     if (dump && sys.step() % c.dump_every == 0) write_dump_frame(*dump, sys, c.dump_fields, sys.options().threads);
     progress.update(done);
-    if (done < c.steps && stop_md_at(control, sys, {})) break;
+    if (done < c.steps && stop_md_with(control, sys, [&](CheckpointOut& out) {
+          out.numbers(nh ? nh->state() : std::vector<double>{});
+        }))
+      break;
   }
   const auto t1 = std::chrono::steady_clock::now();
   progress.finish(done);
@@ -235,6 +248,8 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
 
   toml::table rec;
   rec.insert("relax_steps", static_cast<std::int64_t>(c.relax_steps));
+  rec.insert("ensemble", c.ensemble);
+  rec.insert("lattice_constant_A", toml::array{sys.box().lx / c.cells[0], sys.box().ly / c.cells[1], sys.box().lz / c.cells[2]});
   rec.insert("run_seconds", run_seconds);
   rec.insert("kinetic_energy_per_atom", sys.kinetic_energy() / n);
   rec.insert("temperature_K", sys.temperature());

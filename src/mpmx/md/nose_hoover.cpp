@@ -1,0 +1,160 @@
+#include "mpmx/md/nose_hoover.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "mpmx/core/error.hpp"
+#include "mpmx/core/units.hpp"
+
+namespace mpmx::md {
+
+NoseHoover::NoseHoover(const NoseHooverOptions& o, const System& s) : o_(o) {
+  if (o.chain < 1) throw InputError(fmt::format("Nose-Hoover chain of {}: needs at least 1", o.chain));
+  natoms_ = static_cast<double>(s.atoms().size());
+  tdof_ = 3 * natoms_ - 3;  // the momentum's three fixed, as the temperature counts them
+  // Without a thermostat (nph) the barostat's kT is the temperature the box starts at.
+  const double t = o.thermostat ? o.temperature : s.temperature();
+  if (!(t > 0)) throw InputError(fmt::format("temperature {} K: a Nose-Hoover chain needs a positive one", t));
+  kt_ = units::boltzmann_eV_per_K * t;
+  const int m = o.chain;
+  eta_.assign(m, 0.0), eta_dot_.assign(m + 1, 0.0), eta_dotdot_.assign(m, 0.0), eta_mass_.assign(m, 0.0);
+  etap_.assign(m, 0.0), etap_dot_.assign(m + 1, 0.0), etap_dotdot_.assign(m, 0.0), etap_mass_.assign(m, 0.0);
+  // Masses from the periods: Q_0 = N_f kT / omega^2, the others kT / omega^2.
+  const double tf = 1 / o.t_damp, pf = 1 / o.p_damp;
+  eta_mass_[0] = tdof_ * kt_ / (tf * tf);
+  for (int k = 1; k < m; ++k) eta_mass_[k] = kt_ / (tf * tf);
+  for (int k = 1; k < m; ++k) eta_dotdot_[k] = -kt_ / eta_mass_[k];  // eta_dot starts at 0
+  for (int i = 0; i < 3; ++i) omega_mass_[i] = (natoms_ + 1) * kt_ / (pf * pf);
+  for (int k = 0; k < m; ++k) etap_mass_[k] = kt_ / (pf * pf);
+  for (int k = 1; k < m; ++k) etap_dotdot_[k] = -kt_ / etap_mass_[k];
+}
+
+void NoseHoover::initial(System& s, double dt) {
+  if (o_.barostat) barostat_chain(dt);
+  if (o_.thermostat) thermostat_chain(s, dt);
+  if (o_.barostat) {
+    omega_force(s, dt);
+    v_press(s, dt);
+  }
+}
+
+void NoseHoover::remap(System& s, double dt) {
+  if (!o_.barostat) return;
+  s.dilate({std::exp(0.5 * dt * omega_dot_[0]), std::exp(0.5 * dt * omega_dot_[1]), std::exp(0.5 * dt * omega_dot_[2])});
+}
+
+void NoseHoover::final(System& s, double dt) {
+  if (o_.barostat) {
+    v_press(s, dt);
+    omega_force(s, dt);
+  }
+  if (o_.thermostat) thermostat_chain(s, dt);
+  if (o_.barostat) barostat_chain(dt);
+}
+
+// Half a step of the thermostat chain, from its far end in and back out (Tuckerman et
+// al. 2006, eq. 43), the atoms' velocities scaled at its middle.
+void NoseHoover::thermostat_chain(System& s, double dt) {
+  const int m = o_.chain;
+  const double dt4 = 0.25 * dt, dt8 = 0.125 * dt, ke_target = tdof_ * kt_;
+  double ke = 2 * s.thermal_kinetic_energy();  // N_f k T
+  eta_dotdot_[0] = (ke - ke_target) / eta_mass_[0];
+  for (int k = m - 1; k > 0; --k) {
+    const double e = std::exp(-dt8 * eta_dot_[k + 1]);
+    eta_dot_[k] = (eta_dot_[k] * e + eta_dotdot_[k] * dt4) * e;
+  }
+  double e = std::exp(-dt8 * eta_dot_[1]);
+  eta_dot_[0] = (eta_dot_[0] * e + eta_dotdot_[0] * dt4) * e;
+  const double f = std::exp(-0.5 * dt * eta_dot_[0]);
+  s.scale_velocities({f, f, f});
+  ke *= f * f;
+  eta_dotdot_[0] = (ke - ke_target) / eta_mass_[0];
+  for (int k = 0; k < m; ++k) eta_[k] += 0.5 * dt * eta_dot_[k];
+  eta_dot_[0] = (eta_dot_[0] * e + eta_dotdot_[0] * dt4) * e;
+  for (int k = 1; k < m; ++k) {
+    e = std::exp(-dt8 * eta_dot_[k + 1]);
+    eta_dotdot_[k] = (eta_mass_[k - 1] * eta_dot_[k - 1] * eta_dot_[k - 1] - kt_) / eta_mass_[k];
+    eta_dot_[k] = (eta_dot_[k] * e + eta_dotdot_[k] * dt4) * e;
+  }
+}
+
+// The same for the chain on the barostat's own motion; LAMMPS's target for it: kT for
+// an isotropic barostat, 3 kT for one per axis.
+void NoseHoover::barostat_chain(double dt) {
+  const int m = o_.chain;
+  const double dt4 = 0.25 * dt, dt8 = 0.125 * dt, target = o_.isotropic ? kt_ : 3 * kt_;
+  auto ke = [&] {
+    double k = 0;
+    for (int i = 0; i < 3; ++i) k += omega_mass_[i] * omega_dot_[i] * omega_dot_[i];
+    return k;
+  };
+  etap_dotdot_[0] = (ke() - target) / etap_mass_[0];
+  for (int k = m - 1; k > 0; --k) {
+    const double e = std::exp(-dt8 * etap_dot_[k + 1]);
+    etap_dot_[k] = (etap_dot_[k] * e + etap_dotdot_[k] * dt4) * e;
+  }
+  double e = std::exp(-dt8 * etap_dot_[1]);
+  etap_dot_[0] = (etap_dot_[0] * e + etap_dotdot_[0] * dt4) * e;
+  for (int k = 0; k < m; ++k) etap_[k] += 0.5 * dt * etap_dot_[k];
+  const double f = std::exp(-0.5 * dt * etap_dot_[0]);
+  for (auto& w : omega_dot_) w *= f;
+  etap_dotdot_[0] = (ke() - target) / etap_mass_[0];
+  etap_dot_[0] = (etap_dot_[0] * e + etap_dotdot_[0] * dt4) * e;
+  for (int k = 1; k < m; ++k) {
+    e = std::exp(-dt8 * etap_dot_[k + 1]);
+    etap_dotdot_[k] = (etap_mass_[k - 1] * etap_dot_[k - 1] * etap_dot_[k - 1] - kt_) / etap_mass_[k];
+    etap_dot_[k] = (etap_dot_[k] * e + etap_dotdot_[k] * dt4) * e;
+  }
+}
+
+// Half a step of the barostat's strain rates under the pressure's excess over its
+// target and MTK's kinetic term (Martyna, Tobias, Klein 1994): an axis stops dilating
+// where its pressure (the mean one, isotropic) equals its target.
+void NoseHoover::omega_force(const System& s, double dt) {
+  const Mat3 sigma = s.stress();  // eV/A^3, tension positive: pressure = -sigma
+  const double v = s.box().volume();
+  double p[3] = {-sigma[0], -sigma[4], -sigma[8]};
+  double target[3];
+  for (int i = 0; i < 3; ++i) target[i] = o_.pressure[i] / units::eV_per_A3_in_GPa;
+  double mtk1;
+  if (o_.isotropic) {
+    const double mean = (p[0] + p[1] + p[2]) / 3, mean_target = (target[0] + target[1] + target[2]) / 3;
+    for (int i = 0; i < 3; ++i) p[i] = mean, target[i] = mean_target;
+    mtk1 = 2 * s.thermal_kinetic_energy() / (3 * natoms_);
+  } else {
+    const Vec3 k = s.mvv();
+    mtk1 = (k[0] + k[1] + k[2]) / (3 * natoms_);
+  }
+  for (int i = 0; i < 3; ++i) omega_dot_[i] += ((p[i] - target[i]) * v + mtk1) / omega_mass_[i] * 0.5 * dt;
+  mtk_term2_ = (omega_dot_[0] + omega_dot_[1] + omega_dot_[2]) / (3 * natoms_);
+}
+
+// The atoms' velocities damped by the box's dilation over half a step.
+void NoseHoover::v_press(System& s, double dt) {
+  Vec3 f;
+  for (int i = 0; i < 3; ++i) f[i] = std::exp(-0.5 * dt * (omega_dot_[i] + mtk_term2_));
+  s.scale_velocities(f);
+}
+
+std::vector<double> NoseHoover::state() const {
+  std::vector<double> v;
+  for (const auto* a : {&eta_, &eta_dot_, &eta_dotdot_, &etap_, &etap_dot_, &etap_dotdot_}) v.insert(v.end(), a->begin(), a->end());
+  v.insert(v.end(), omega_dot_.begin(), omega_dot_.end());
+  v.push_back(mtk_term2_);
+  return v;
+}
+
+void NoseHoover::set_state(const std::vector<double>& v) {
+  const std::size_t m = eta_.size();
+  if (v.size() != 6 * m + 2 + 4) throw RunError(fmt::format("Nose-Hoover state of {} numbers: expected {}", v.size(), 6 * m + 6));
+  auto it = v.begin();
+  for (auto* a : {&eta_, &eta_dot_, &eta_dotdot_, &etap_, &etap_dot_, &etap_dotdot_}) {
+    std::copy(it, it + static_cast<std::ptrdiff_t>(a->size()), a->begin());
+    it += static_cast<std::ptrdiff_t>(a->size());
+  }
+  std::copy(it, it + 3, omega_dot_.begin());
+  mtk_term2_ = *(it + 3);
+}
+
+}  // namespace mpmx::md

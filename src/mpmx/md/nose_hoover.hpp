@@ -1,0 +1,51 @@
+#pragma once
+// Temperature and pressure control: a Nose-Hoover chain thermostat and the
+// Martyna-Tobias-Klein barostat with its own chain, integrated by the Trotter splitting
+// of Tuckerman et al. (J. Phys. A 39, 5629, 2006) around the velocity-Verlet step, in
+// the form of LAMMPS's fix nvt / npt / nph (Shinoda et al., PRB 69, 134103, 2004), so
+// that a box prepared here and one prepared there sample the same ensemble. The
+// barostat dilates an orthogonal box isotropically (one strain rate for all three axes,
+// driven by the mean pressure) or per axis (each by its own normal stress).
+#include <array>
+#include <vector>
+
+#include "mpmx/md/system.hpp"
+
+namespace mpmx::md {
+
+struct NoseHooverOptions {
+  bool thermostat = true;             // nvt, npt; off for nph
+  double temperature = 300.0;         // K, the thermostat's target (and the barostat's kT)
+  double t_damp = 0.1;                // ps, the thermostat's period (LAMMPS's Tdamp)
+  bool barostat = false;              // npt, nph
+  std::array<double, 3> pressure{};   // GPa, compression positive (LAMMPS's sign), per axis
+  bool isotropic = true;              // one dilation for all axes, by the mean pressure
+  double p_damp = 1.0;                // ps, the barostat's period (Pdamp)
+  int chain = 3;                      // thermostats in each chain (tchain, pchain)
+};
+
+class NoseHoover : public System::Coupling {
+ public:
+  NoseHoover(const NoseHooverOptions& o, const System& s);
+  void initial(System& s, double dt) override;
+  void remap(System& s, double dt) override;
+  void final(System& s, double dt) override;
+  // The chains' and the barostat's variables, for a checkpoint (same order back).
+  std::vector<double> state() const;
+  void set_state(const std::vector<double>& v);
+
+ private:
+  NoseHooverOptions o_;
+  double kt_ = 0, tdof_ = 0, natoms_ = 0;
+  std::vector<double> eta_, eta_dot_, eta_dotdot_, eta_mass_;      // thermostat chain
+  std::vector<double> etap_, etap_dot_, etap_dotdot_, etap_mass_;  // the barostat's chain
+  std::array<double, 3> omega_dot_{}, omega_mass_{};              // barostat (1/ps, eV ps^2)
+  double mtk_term2_ = 0;
+
+  void thermostat_chain(System& s, double dt);
+  void barostat_chain(double dt);
+  void omega_force(const System& s, double dt);
+  void v_press(System& s, double dt);
+};
+
+}  // namespace mpmx::md
