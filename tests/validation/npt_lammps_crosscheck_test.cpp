@@ -1,5 +1,5 @@
 // ctest-label: crosscheck
-// NPT at 300 K and 0 GPa against LAMMPS's fix npt (issue 47): a 500-atom Mishin copper
+// NPT at 300 K and 0 GPa, and the Hugoniostat, against LAMMPS's fix npt and fix nphug (issue 47): a 500-atom Mishin copper
 // box, the same damping periods (0.1 ps, 1 ps), 20 ps each, the last 15 ps sampled every
 // 20 steps. The mean pressure is within three standard errors of zero in both, and the
 // mean lattice constant and temperature agree within three standard errors of their
@@ -21,7 +21,7 @@
 #include "mpmx/md/nose_hoover.hpp"
 #include "mpmx/particles/lattice.hpp"
 
-#include "../md/md_test_util.hpp"
+#include "../md/hugoniostat_run.hpp"
 
 using namespace mpmx::md;
 namespace fs = std::filesystem;
@@ -110,5 +110,54 @@ TEST(NptLammps, SameStateAtThreeHundredKelvinAndZeroPressure) {
   EXPECT_LT(std::abs(l[1].mean), 3 * l[1].sem);
   for (int k : {0, 2})
     EXPECT_LT(std::abs(m[k].mean - l[k].mean), 3 * std::hypot(m[k].sem, l[k].sem)) << names[k];
+  fs::remove_all(dir);
+}
+
+// The Hugoniostat (fix nphug) at J1's plateau, 172 GPa along x, from 10 K: the shocked
+// volume and temperature within three standard errors of their difference.
+TEST(NphugLammps, SameShockedStateAtJ1Plateau) {
+  using mpmx::test::kHugEvery, mpmx::test::kHugSteps;
+  if (!mpmx::test::have_lmp()) GTEST_SKIP() << "lmp not installed";
+  const auto dir = fs::temp_directory_path() / ("mpmx_nphug_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "in.hug") << fmt::format(
+      "units metal\natom_style atomic\nlattice fcc 3.6155\nregion box block 0 5 0 5 0 5\ncreate_box 1 box\n"
+      "create_atoms 1 box\nmass 1 63.546\npair_style eam/alloy\npair_coeff * * {} Cu\n"
+      "velocity all create 20.0 4321 mom yes rot no dist gaussian\nneighbor 1.0 bin\ntimestep 0.001\n"
+      "fix 0 all nve\nrun 2000\nunfix 0\nfix 1 all nphug temp 1.0 1.0 0.1 x 1720000 1720000 1.0\n"
+      "thermo_style custom step temp pxx vol\nthermo {}\nrun {}\n",
+      mpmx::test::kCuMishin, kHugEvery, kHugSteps);
+  const std::string cmd = fmt::format(
+      "cd '{}' && OMP_NUM_THREADS=1 lmp -in in.hug -log log.lammps -screen none > /dev/null 2>&1", dir.string());
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << "lmp failed in " << dir;
+  std::ifstream log(dir / "log.lammps");
+  std::vector<double> ratio, t;
+  std::string line;
+  bool rows = false;
+  double v0 = 0;
+  while (std::getline(log, line)) {
+    std::istringstream in(line);
+    std::vector<std::string> w;
+    for (std::string x; in >> x;) w.push_back(x);
+    if (w.size() == 4 && w[0] == "Step" && w[2] == "Pxx") {
+      rows = true;
+      continue;
+    }
+    if (!rows) continue;
+    if (w.size() != 4 || w[0].find_first_not_of("0123456789") != std::string::npos) {
+      rows = false;
+      continue;
+    }
+    const double step = std::stod(w[0]) - 2000, vol = std::stod(w[3]);
+    if (step == 0) v0 = vol;
+    if (2 * step > kHugSteps) ratio.push_back(vol / v0), t.push_back(std::stod(w[1]));
+  }
+  ASSERT_EQ(ratio.size(), static_cast<std::size_t>(kHugSteps / kHugEvery / 2));
+  const auto lr = mpmx::test::block_stats(ratio), lt = mpmx::test::block_stats(t);
+  const mpmx::test::Shocked m = mpmx::test::hugoniostat(3.6155, 10, 172);
+  std::printf("nphug vs LAMMPS at 172 GPa: V/V0 %.5f +- %.5f (LAMMPS %.5f +- %.5f), T %.1f +- %.1f K (%.1f +- %.1f)\n",
+              m.ratio.mean, m.ratio.sem, lr.mean, lr.sem, m.t.mean, m.t.sem, lt.mean, lt.sem);
+  EXPECT_LT(std::abs(m.ratio.mean - lr.mean), 3 * std::hypot(m.ratio.sem, lr.sem));
+  EXPECT_LT(std::abs(m.t.mean - lt.mean), 3 * std::hypot(m.t.sem, lt.sem));
   fs::remove_all(dir);
 }

@@ -17,6 +17,14 @@ NoseHoover::NoseHoover(const NoseHooverOptions& o, const System& s) : o_(o) {
   const double t = o.thermostat ? o.temperature : s.temperature();
   if (!(t > 0)) throw InputError(fmt::format("temperature {} K: a Nose-Hoover chain needs a positive one", t));
   kt_ = units::boltzmann_eV_per_K * t;
+  t_target_ = t;
+  if (!o.isotropic) {
+    pdim_ = o.axes[0] + o.axes[1] + o.axes[2];
+    if (pdim_ == 0) throw InputError("a per-axis barostat needs at least one axis that dilates");
+  }
+  if (o.hugoniot && (!o.barostat || !o.thermostat || o.isotropic || pdim_ != 1))
+    throw InputError("a Hugoniostat needs the thermostat and a barostat along one axis");
+  e0_ = s.potential_energy() + s.thermal_kinetic_energy(), v0_ = s.box().volume(), p0_ = axis_pressure(s);
   const int m = o.chain;
   eta_.assign(m, 0.0), eta_dot_.assign(m + 1, 0.0), eta_dotdot_.assign(m, 0.0), eta_mass_.assign(m, 0.0);
   etap_.assign(m, 0.0), etap_dot_.assign(m + 1, 0.0), etap_dotdot_.assign(m, 0.0), etap_mass_.assign(m, 0.0);
@@ -30,8 +38,22 @@ NoseHoover::NoseHoover(const NoseHooverOptions& o, const System& s) : o_(o) {
   for (int k = 1; k < m; ++k) etap_dotdot_[k] = -kt_ / etap_mass_[k];
 }
 
+double NoseHoover::axis_pressure(const System& s) const {
+  const Mat3 sigma = s.stress();
+  if (o_.isotropic || pdim_ != 1) return -(sigma[0] + sigma[4] + sigma[8]) / 3;
+  const int i = o_.axes[0] ? 0 : o_.axes[1] ? 1 : 2;
+  return -sigma[4 * i];
+}
+
 void NoseHoover::initial(System& s, double dt) {
   if (o_.barostat) barostat_chain(dt);
+  if (o_.hugoniot) {
+    // LAMMPS's fix nphug: the target is the temperature now plus the Hugoniot energy's
+    // excess over the energy now, as heat of the thermostatted degrees of freedom.
+    const double e = s.potential_energy() + s.thermal_kinetic_energy(), v = s.box().volume();
+    const double excess = 0.5 * (axis_pressure(s) + p0_) * (v0_ - v) + e0_ - e;
+    t_target_ = s.temperature() + excess / (tdof_ * units::boltzmann_eV_per_K);
+  }
   if (o_.thermostat) thermostat_chain(s, dt);
   if (o_.barostat) {
     omega_force(s, dt);
@@ -57,7 +79,11 @@ void NoseHoover::final(System& s, double dt) {
 // al. 2006, eq. 43), the atoms' velocities scaled at its middle.
 void NoseHoover::thermostat_chain(System& s, double dt) {
   const int m = o_.chain;
-  const double dt4 = 0.25 * dt, dt8 = 0.125 * dt, ke_target = tdof_ * kt_;
+  // Masses from the target now (LAMMPS keeps the chain's periods as its target moves).
+  const double kt = units::boltzmann_eV_per_K * t_target_, tf = 1 / o_.t_damp;
+  eta_mass_[0] = tdof_ * kt / (tf * tf);
+  for (int k = 1; k < m; ++k) eta_mass_[k] = kt / (tf * tf);
+  const double dt4 = 0.25 * dt, dt8 = 0.125 * dt, ke_target = tdof_ * kt;
   double ke = 2 * s.thermal_kinetic_energy();  // N_f k T
   eta_dotdot_[0] = (ke - ke_target) / eta_mass_[0];
   for (int k = m - 1; k > 0; --k) {
@@ -74,7 +100,7 @@ void NoseHoover::thermostat_chain(System& s, double dt) {
   eta_dot_[0] = (eta_dot_[0] * e + eta_dotdot_[0] * dt4) * e;
   for (int k = 1; k < m; ++k) {
     e = std::exp(-dt8 * eta_dot_[k + 1]);
-    eta_dotdot_[k] = (eta_mass_[k - 1] * eta_dot_[k - 1] * eta_dot_[k - 1] - kt_) / eta_mass_[k];
+    eta_dotdot_[k] = (eta_mass_[k - 1] * eta_dot_[k - 1] * eta_dot_[k - 1] - kt) / eta_mass_[k];
     eta_dot_[k] = (eta_dot_[k] * e + eta_dotdot_[k] * dt4) * e;
   }
 }
@@ -83,10 +109,10 @@ void NoseHoover::thermostat_chain(System& s, double dt) {
 // an isotropic barostat, 3 kT for one per axis.
 void NoseHoover::barostat_chain(double dt) {
   const int m = o_.chain;
-  const double dt4 = 0.25 * dt, dt8 = 0.125 * dt, target = o_.isotropic ? kt_ : 3 * kt_;
+  const double dt4 = 0.25 * dt, dt8 = 0.125 * dt, target = o_.isotropic ? kt_ : pdim_ * kt_;
   auto ke = [&] {
     double k = 0;
-    for (int i = 0; i < 3; ++i) k += omega_mass_[i] * omega_dot_[i] * omega_dot_[i];
+    for (int i = 0; i < 3; ++i) k += omega_mass_[i] * omega_dot_[i] * omega_dot_[i];  // 0 off the axes
     return k;
   };
   etap_dotdot_[0] = (ke() - target) / etap_mass_[0];
@@ -124,10 +150,13 @@ void NoseHoover::omega_force(const System& s, double dt) {
     mtk1 = 2 * s.thermal_kinetic_energy() / (3 * natoms_);
   } else {
     const Vec3 k = s.mvv();
-    mtk1 = (k[0] + k[1] + k[2]) / (3 * natoms_);
+    mtk1 = 0;
+    for (int i = 0; i < 3; ++i) mtk1 += o_.axes[i] ? k[i] : 0.0;
+    mtk1 /= pdim_ * natoms_;
   }
-  for (int i = 0; i < 3; ++i) omega_dot_[i] += ((p[i] - target[i]) * v + mtk1) / omega_mass_[i] * 0.5 * dt;
-  mtk_term2_ = (omega_dot_[0] + omega_dot_[1] + omega_dot_[2]) / (3 * natoms_);
+  for (int i = 0; i < 3; ++i)
+    if (o_.isotropic || o_.axes[i]) omega_dot_[i] += ((p[i] - target[i]) * v + mtk1) / omega_mass_[i] * 0.5 * dt;
+  mtk_term2_ = (omega_dot_[0] + omega_dot_[1] + omega_dot_[2]) / (pdim_ * natoms_);
 }
 
 // The atoms' velocities damped by the box's dilation over half a step.
@@ -142,12 +171,13 @@ std::vector<double> NoseHoover::state() const {
   for (const auto* a : {&eta_, &eta_dot_, &eta_dotdot_, &etap_, &etap_dot_, &etap_dotdot_}) v.insert(v.end(), a->begin(), a->end());
   v.insert(v.end(), omega_dot_.begin(), omega_dot_.end());
   v.push_back(mtk_term2_);
+  v.push_back(t_target_);
   return v;
 }
 
 void NoseHoover::set_state(const std::vector<double>& v) {
   const std::size_t m = eta_.size();
-  if (v.size() != 6 * m + 2 + 4) throw RunError(fmt::format("Nose-Hoover state of {} numbers: expected {}", v.size(), 6 * m + 6));
+  if (v.size() != 6 * m + 7) throw RunError(fmt::format("Nose-Hoover state of {} numbers: expected {}", v.size(), 6 * m + 7));
   auto it = v.begin();
   for (auto* a : {&eta_, &eta_dot_, &eta_dotdot_, &etap_, &etap_dot_, &etap_dotdot_}) {
     std::copy(it, it + static_cast<std::ptrdiff_t>(a->size()), a->begin());
@@ -155,6 +185,7 @@ void NoseHoover::set_state(const std::vector<double>& v) {
   }
   std::copy(it, it + 3, omega_dot_.begin());
   mtk_term2_ = *(it + 3);
+  t_target_ = *(it + 4);
 }
 
 }  // namespace mpmx::md

@@ -20,6 +20,12 @@ struct NoseHooverOptions {
   bool barostat = false;              // npt, nph
   std::array<double, 3> pressure{};   // GPa, compression positive (LAMMPS's sign), per axis
   bool isotropic = true;              // one dilation for all axes, by the mean pressure
+  std::array<bool, 3> axes{true, true, true};  // per axis (not isotropic): which dilate
+  // Hugoniostat (LAMMPS's fix nphug, Ravelo et al., PRB 70, 014103, 2004): the
+  // thermostat's target follows the Hugoniot's energy condition E - E0 = (P + P0)(V0 - V)/2
+  // about the state the box starts in, P the pressure along the one dilating axis, so
+  // that the box settles on the Hugoniot at the axis's target pressure.
+  bool hugoniot = false;
   double p_damp = 1.0;                // ps, the barostat's period (Pdamp)
   int chain = 3;                      // thermostats in each chain (tchain, pchain)
 };
@@ -30,13 +36,20 @@ class NoseHoover : public System::Coupling {
   void initial(System& s, double dt) override;
   void remap(System& s, double dt) override;
   void final(System& s, double dt) override;
+  // The Hugoniot's reference state (the box at the start): energy (eV), volume (A^3),
+  // pressure along the dilating axis (eV/A^3).
+  double e0() const { return e0_; }
+  double v0() const { return v0_; }
+  double p0() const { return p0_; }
   // The chains' and the barostat's variables, for a checkpoint (same order back).
   std::vector<double> state() const;
   void set_state(const std::vector<double>& v);
 
  private:
   NoseHooverOptions o_;
-  double kt_ = 0, tdof_ = 0, natoms_ = 0;
+  double kt_ = 0, tdof_ = 0, natoms_ = 0, pdim_ = 3;
+  double t_target_ = 0;         // K, the thermostat's target now (moves under `hugoniot`)
+  double e0_ = 0, v0_ = 0, p0_ = 0;
   std::vector<double> eta_, eta_dot_, eta_dotdot_, eta_mass_;      // thermostat chain
   std::vector<double> etap_, etap_dot_, etap_dotdot_, etap_mass_;  // the barostat's chain
   std::array<double, 3> omega_dot_{}, omega_mass_{};              // barostat (1/ps, eV ps^2)
@@ -46,6 +59,7 @@ class NoseHoover : public System::Coupling {
   void barostat_chain(double dt);
   void omega_force(const System& s, double dt);
   void v_press(System& s, double dt);
+  double axis_pressure(const System& s) const;  // eV/A^3: the dilating axis's, or the mean
 };
 
 }  // namespace mpmx::md

@@ -53,17 +53,35 @@ void read_thermal(io::Section& th, MdConfig& c) {
 // [run] ensemble: nve, or the Nose-Hoover chain thermostat (nvt), with the MTK barostat
 // (npt), or the barostat alone (nph), LAMMPS's fix nvt / npt / nph (md/nose_hoover.hpp);
 // its target temperature is thermal.temperature, its periods t_damp_ps and p_damp_ps
-// (LAMMPS's Tdamp and Pdamp: 100 and 1000 steps by default, as its manual advises).
+// (LAMMPS's Tdamp and Pdamp: 100 and 1000 steps by default, as its manual advises);
+// or nphug, the Hugoniostat (fix nphug): the shock axis's pressure_gpa, its thermostat's
+// target from the Hugoniot's energy condition about the box the run starts with.
 void read_ensemble(io::Section& run, bool jet, MdConfig& c) {
-  c.ensemble = run.choice("ensemble", {"nve", "nvt", "npt", "nph"}, "nve");
-  const bool tstat = c.ensemble == "nvt" || c.ensemble == "npt", pstat = c.ensemble == "npt" || c.ensemble == "nph";
+  c.ensemble = run.choice("ensemble", {"nve", "nvt", "npt", "nph", "nphug"}, "nve");
+  const bool hug = c.ensemble == "nphug";
+  const bool tstat = c.ensemble == "nvt" || c.ensemble == "npt" || hug;
+  const bool pstat = c.ensemble == "npt" || c.ensemble == "nph" || hug;
   NoseHooverOptions& nh = c.nose_hoover;
-  nh.thermostat = tstat, nh.barostat = pstat, nh.temperature = c.temperature;
-  if (tstat) run.check(c.temperature > 0, "ensemble", "nvt and npt need thermal.temperature > 0 (their target)");
+  nh.thermostat = tstat, nh.barostat = pstat, nh.temperature = c.temperature, nh.hugoniot = hug;
+  if (tstat) run.check(c.temperature > 0, "ensemble", "nvt, npt and nphug need thermal.temperature > 0");
   run.check(!jet || c.ensemble == "nve", "ensemble", "a [jet] runs nve (its piston and free surfaces)");
-  for (const char* key : {"t_damp_ps", "p_damp_ps", "pressure_gpa", "barostat"}) {
-    const bool wanted = std::string_view(key) == "t_damp_ps" ? tstat : pstat;
+  for (const char* key : {"t_damp_ps", "p_damp_ps", "pressure_gpa", "barostat", "shock_axis"}) {
+    const std::string_view k = key;
+    const bool wanted = k == "t_damp_ps" ? tstat : k == "barostat" ? pstat && !hug : k == "shock_axis" ? hug : pstat;
     run.check(wanted || !run.has(key), key, fmt::format("has no use with ensemble = \"{}\"", c.ensemble));
+  }
+  if (hug) {  // uniaxial: the shock axis dilates to its target pressure, the others stay
+    const std::string axis = run.choice("shock_axis", {"x", "y", "z"}, "x");
+    nh.isotropic = false;
+    nh.axes = {axis == "x", axis == "y", axis == "z"};
+    const double p = run.number("pressure_gpa");
+    nh.pressure = {p, p, p};
+    run.check(p >= 0, "pressure_gpa", "a shock's pressure is compressive (>= 0)");
+    nh.t_damp = run.number("t_damp_ps", 100 * c.dt);
+    run.positive("t_damp_ps", nh.t_damp);
+    nh.p_damp = run.number("p_damp_ps", 1000 * c.dt);
+    run.positive("p_damp_ps", nh.p_damp);
+    return;
   }
   nh.t_damp = run.number("t_damp_ps", 100 * c.dt);
   run.positive("t_damp_ps", nh.t_damp);

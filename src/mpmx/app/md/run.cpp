@@ -16,6 +16,7 @@
 #include "mpmx/app/reported_quantities.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/progress.hpp"
+#include "mpmx/core/units.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/md/bar.hpp"
 #include "mpmx/md/nose_hoover.hpp"
@@ -216,12 +217,22 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   progress.show_rate(n, "atom-steps");
   const std::int64_t first = done;
   const auto run_start = std::chrono::steady_clock::now();
+  // nphug: the shocked state, averaged over the thermo rows of the run's second half.
+  const int axis = c.nose_hoover.axes[0] ? 0 : c.nose_hoover.axes[1] ? 1 : 2;
+  double hug_v = 0, hug_p = 0, hug_t = 0;
+  long hug_rows = 0;
   while (done < c.steps) {
     const std::int64_t chunk = std::min<std::int64_t>(c.thermo - sys.step() % c.thermo, c.steps - done);
     if (nh) sys.advance_coupled(static_cast<int>(chunk), c.dt, *nh);
     else sys.advance(static_cast<int>(chunk), c.velocity_gradient, c.dt);
     done += chunk;
-    if (sys.step() % c.thermo == 0 || done == c.steps) row();
+    if (sys.step() % c.thermo == 0 || done == c.steps) {
+      row();
+      if (c.nose_hoover.hugoniot && 2 * done > c.steps) {
+        hug_v += sys.box().volume(), hug_p -= sys.stress_gpa()[4 * axis], hug_t += sys.temperature();
+        ++hug_rows;
+      }
+    }
     if (!stopped.empty()) break;
     if (dump && sys.step() % c.dump_every == 0) write_dump_frame(*dump, sys, c.dump_fields, sys.options().threads);
     progress.update(done);
@@ -249,6 +260,29 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   toml::table rec;
   rec.insert("relax_steps", static_cast<std::int64_t>(c.relax_steps));
   rec.insert("ensemble", c.ensemble);
+  if (nh && c.nose_hoover.hugoniot && hug_rows > 0) {
+    // The jump conditions (eqs. of Rankine-Hugoniot) from the reference and the mean
+    // shocked state: P - P0 = rho0 Us up, V / V0 = 1 - up / Us.
+    const double v = hug_v / hug_rows, p = hug_p / hug_rows, v0 = nh->v0();
+    const double p0 = nh->p0() * units::eV_per_A3_in_GPa;
+    double mass = 0;
+    for (int t : sys.atoms().type) mass += sys.type_mass()[t];
+    const double rho0 = 1.66053906660 * mass / v0;  // g/cm^3
+    const double eta = 1 - v / v0;
+    const double us = eta > 0 && p > p0 ? std::sqrt((p - p0) / (rho0 * eta)) : 0.0;  // km/s
+    toml::table h{{"shock_axis", std::string(1, static_cast<char>('x' + axis))},
+                  {"reference_volume_A3", v0},
+                  {"reference_pressure_GPa", p0},
+                  {"reference_energy_eV", nh->e0()},
+                  {"reference_density_g_cm3", rho0},
+                  {"rows_averaged", static_cast<std::int64_t>(hug_rows)},
+                  {"volume_ratio", v / v0},
+                  {"pressure_GPa", p},
+                  {"temperature_K", hug_t / hug_rows},
+                  {"shock_speed_km_s", us},
+                  {"particle_velocity_km_s", us * eta}};
+    rec.insert("hugoniot", h);
+  }
   rec.insert("lattice_constant_A", toml::array{sys.box().lx / c.cells[0], sys.box().ly / c.cells[1], sys.box().lz / c.cells[2]});
   rec.insert("run_seconds", run_seconds);
   rec.insert("kinetic_energy_per_atom", sys.kinetic_energy() / n);
