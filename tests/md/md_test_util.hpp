@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -58,6 +60,19 @@ inline std::filesystem::path scratch_file(const std::string& name, const std::st
   std::filesystem::create_directories(scratch_root());
   std::ofstream(scratch_root() / name) << text;
   return scratch_root() / name;
+}
+
+// A LAMMPS `write_dump ... custom id A B C modify sort id` file: id -> (A, B, C).
+inline std::map<long, std::array<double, 3>> read_lammps_dump(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  std::map<long, std::array<double, 3>> out;
+  while (std::getline(in, line) && line.rfind("ITEM: ATOMS", 0) != 0) {
+  }
+  long id;
+  double a, b, c;
+  while (in >> id >> a >> b >> c) out[id] = {a, b, c};
+  return out;
 }
 
 inline bool have_lmp() { return std::system("command -v lmp > /dev/null 2>&1") == 0; }
