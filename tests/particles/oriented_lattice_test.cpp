@@ -1,11 +1,12 @@
 // ctest-label: unit
 // The oriented lattices (particles/oriented_lattice.hpp): the periodic tile's lengths and
-// atom count for fcc, bcc and hcp along [100], [110], [111] and the hcp cell's axes; every
+// atom count for fcc, bcc, b2 and hcp along [100], [110], [111] and the hcp cell's axes; every
 // atom of a box at its crystal's neighbour distance from its nearest (none closer, none
 // doubled, across the periodic faces too); fcc along the axes the very bits of fcc();
 // refusals of a zero, non-orthogonal, left-handed or (hcp) off-axis set.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -69,6 +70,14 @@ TEST(OrientedLattice, TileLengthsAndAtomCounts) {
   h.orient = kC;
   h.c_over_a = 1.593;  // Zr's
   expect_tile(h, 1.593, 1, r3, 4);
+  // b2 is simple cubic with two sites: [111] repeats after sqrt(3) a, not bcc's half; half
+  // its sites are of the second type.
+  expect_tile(spec(LatticeStyle::b2, k111), r3, r2, r6, 12);
+  const LatticeTile b2 = lattice_tile(spec(LatticeStyle::b2, k110));
+  EXPECT_EQ(std::count(b2.kinds.begin(), b2.kinds.end(), 1), 2);
+  const Crystal nial = oriented_crystal(spec(LatticeStyle::b2, k111, 2.86), {1, 2, 1}, 0.0, 3);
+  EXPECT_EQ(std::count(nial.atoms.type.begin(), nial.atoms.type.end(), 4), 12);
+  EXPECT_EQ(std::count(nial.atoms.type.begin(), nial.atoms.type.end(), 3), 12);
   // A tile's atoms fill it at the crystal's density: 4/a^3 (fcc), 2/a^3 (bcc).
   const LatticeTile t = lattice_tile(spec(LatticeStyle::bcc, {{{1, 1, 2}, {1, -1, 0}, {1, 1, -1}}}));
   EXPECT_NEAR(static_cast<double>(t.atoms) / (t.length[0] * t.length[1] * t.length[2]), 2.0, 1e-12);

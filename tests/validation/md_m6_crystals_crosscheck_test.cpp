@@ -1,5 +1,6 @@
 // ctest-label: crosscheck
-// M6: bcc Fe, bcc Ta, bcc W and hcp Mg, Zr in three orientations each, mpmx against LAMMPS
+// M6: bcc Fe, bcc Ta, bcc W, hcp Mg, Zr and B2 NiAl (two elements of one setfl file on a
+// lattice with a basis) in three orientations each, mpmx against LAMMPS
 // (`lmp`, the same potential files). LAMMPS builds the crystal itself (`lattice STYLE a0
 // orient x ... orient y ... orient z ...`, create_atoms in mpmx's periodic box): the same
 // atoms as mpmx's builder, its energy per atom at mpmx's lattice constant, its own
@@ -40,6 +41,9 @@ namespace fs = std::filesystem;
 struct Metal {
   std::string name, style, file, element;
   LatticeStyle lattice;
+  std::string element2 = "";  // b2: the body centres' element
+  int types() const { return element2.empty() ? 1 : 2; }
+  std::string elements() const { return element2.empty() ? element : element + " " + element2; }
 };
 
 const Metal kFe{"Fe", "eam/fs", "Fe_mm.eam.fs", "Fe", LatticeStyle::bcc};
@@ -47,6 +51,7 @@ const Metal kTa{"Ta", "eam/alloy", "CuTa.eam.alloy", "Ta", LatticeStyle::bcc};
 const Metal kW{"W", "eam/alloy", "W_zhou.eam.alloy", "W", LatticeStyle::bcc};
 const Metal kMg{"Mg", "eam/fs", "Mg_mm.eam.fs", "Mg", LatticeStyle::hcp};
 const Metal kZr{"Zr", "eam/fs", "Zr_mm.eam.fs", "Zr", LatticeStyle::hcp};
+const Metal kNiAl{"NiAl", "eam/alloy", "NiAlH_jea.eam.alloy", "Ni", LatticeStyle::b2, "Al"};
 
 // x along [100], [110], [111] (cubic); along a1, [01-10] and c (hcp, LAMMPS's frame).
 const Orient kX100 = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
@@ -59,6 +64,7 @@ Potential potential(const Metal& m) {
   EamSpec spec;
   spec.file = mpmx::test::kLammpsPotentials + m.file;
   spec.elements = {m.element};
+  if (!m.element2.empty()) spec.elements.push_back(m.element2);
   return Potential(spec);
 }
 
@@ -77,7 +83,7 @@ std::vector<std::vector<double>> run_lammps(const Metal& m, const fs::path& dir,
     std::ofstream in(dir / "in.lmp");
     in << "units metal\natom_style atomic\nboundary p p p\natom_modify map array\n" << setup;
     in << fmt::format("pair_style {}\npair_coeff * * {}{} {}\n", m.style, mpmx::test::kLammpsPotentials, m.file,
-                      m.element);
+                      m.elements());
     in << "neighbor 1.0 bin\ncompute vir all pressure NULL virial\n";
     in << "thermo_style custom step pe c_vir[1] c_vir[2] c_vir[3] c_vir[4] c_vir[5] c_vir[6]\n";
     in << script;
@@ -130,10 +136,14 @@ void crosscheck(const Metal& m, const Orient& orient, const std::string& label) 
 
   // 1. LAMMPS's own lattice in mpmx's box: atoms, energy, pressure, lattice constant, constants.
   const double e = 1e-5;
+  // b2: LAMMPS's bcc with its second basis atom (the body centre) of type 2.
+  const bool b2 = m.lattice == LatticeStyle::b2;
   std::string setup = fmt::format(
-      "lattice {} {:.17g}{}\nregion box block 0 {:.17g} 0 {:.17g} 0 {:.17g} units box\ncreate_box 1 box\n"
-      "create_atoms 1 box\nmass 1 {:.17g}\n",
-      mpmx::particles::lattice_name(m.lattice), spec.constant, orient_text(orient), b.lx, b.ly, b.lz, pot.mass(0));
+      "lattice {} {:.17g}{}\nregion box block 0 {:.17g} 0 {:.17g} 0 {:.17g} units box\ncreate_box {} box\n"
+      "create_atoms 1 box{}\n",
+      b2 ? "bcc" : mpmx::particles::lattice_name(m.lattice), spec.constant, orient_text(orient), b.lx, b.ly, b.lz,
+      m.types(), b2 ? " basis 2 2" : "");
+  for (int t = 0; t < m.types(); ++t) setup += fmt::format("mass {} {:.17g}\n", t + 1, pot.mass(t));
   std::string script = "print \"R $(atoms)\"\nwrite_dump all custom atoms.dump id x y z modify sort id format float "
                        "%.17g\n";
   script += kState;
@@ -207,13 +217,13 @@ void crosscheck(const Metal& m, const Orient& orient, const std::string& label) 
   {
     fs::create_directories(dir / "perturbed");
     std::ofstream d(dir / "perturbed" / "data.lmp");
-    d << "mpmx M6\n\n" << moved.atoms.size() << " atoms\n1 atom types\n\n";
-    d << fmt::format("0 {:.17g} xlo xhi\n0 {:.17g} ylo yhi\n0 {:.17g} zlo zhi\n\nMasses\n\n1 {:.17g}\n\n", b.lx, b.ly,
-                     b.lz, pot.mass(0));
-    d << "Atoms # atomic\n\n";
+    d << "mpmx M6\n\n" << moved.atoms.size() << " atoms\n" << m.types() << " atom types\n\n";
+    d << fmt::format("0 {:.17g} xlo xhi\n0 {:.17g} ylo yhi\n0 {:.17g} zlo zhi\n\nMasses\n\n", b.lx, b.ly, b.lz);
+    for (int t = 0; t < m.types(); ++t) d << fmt::format("{} {:.17g}\n", t + 1, pot.mass(t));
+    d << "\nAtoms # atomic\n\n";
     for (std::size_t i = 0; i < moved.atoms.size(); ++i)
-      d << fmt::format("{} 1 {:.17g} {:.17g} {:.17g}\n", moved.atoms.id[i], moved.atoms.x[i], moved.atoms.y[i],
-                       moved.atoms.z[i]);
+      d << fmt::format("{} {} {:.17g} {:.17g} {:.17g}\n", moved.atoms.id[i], moved.atoms.type[i] + 1, moved.atoms.x[i],
+                       moved.atoms.y[i], moved.atoms.z[i]);
   }
   const auto P = run_lammps(m, dir / "perturbed", "read_data data.lmp\n",
                             std::string(kState) +
@@ -260,6 +270,9 @@ TEST(M6, MgHcpXc) { m6::crosscheck(m6::kMg, m6::kXc, "x_c"); }
 TEST(M6, ZrHcpXa1) { m6::crosscheck(m6::kZr, m6::kX100, "x_a1"); }
 TEST(M6, ZrHcpXa2) { m6::crosscheck(m6::kZr, m6::kXa2, "x_01-10"); }
 TEST(M6, ZrHcpXc) { m6::crosscheck(m6::kZr, m6::kXc, "x_c"); }
+TEST(M6, NiAlB2100) { m6::crosscheck(m6::kNiAl, m6::kX100, "x100"); }
+TEST(M6, NiAlB2110) { m6::crosscheck(m6::kNiAl, m6::kX110, "x110"); }
+TEST(M6, NiAlB2111) { m6::crosscheck(m6::kNiAl, m6::kX111, "x111"); }
 
 // The direct-MD bar of an oriented crystal (bcc Fe, x along [111]): its walls a hair
 // outside its end planes, as fcc's, and at 0 K unstrained its inner slabs hold no stress.

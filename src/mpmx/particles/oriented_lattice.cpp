@@ -20,17 +20,21 @@ using V3 = std::array<double, 3>;
 // within the cell (the Bravais points: centring vectors, the origin first).
 struct Cell {
   std::vector<V3> sites, centring;
+  std::vector<int> kinds;  // each site's type offset (empty: all 0)
 };
 
 Cell conventional_cell(LatticeStyle s) {
   switch (s) {
     case LatticeStyle::fcc:
       return {{{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}},
-              {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}}};
+              {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}},
+              {}};
     case LatticeStyle::bcc:
-      return {{{0, 0, 0}, {0.5, 0.5, 0.5}}, {{0, 0, 0}, {0.5, 0.5, 0.5}}};
+      return {{{0, 0, 0}, {0.5, 0.5, 0.5}}, {{0, 0, 0}, {0.5, 0.5, 0.5}}, {}};
+    case LatticeStyle::b2:  // simple cubic with a two-site basis
+      return {{{0, 0, 0}, {0.5, 0.5, 0.5}}, {{0, 0, 0}}, {0, 1}};
     case LatticeStyle::hcp:  // LAMMPS's basis (lattice.cpp), two Bravais points
-      return {{{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 5.0 / 6.0, 0.5}, {0, 1.0 / 3.0, 0.5}}, {{0, 0, 0}, {0.5, 0.5, 0}}};
+      return {{{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 5.0 / 6.0, 0.5}, {0, 1.0 / 3.0, 0.5}}, {{0, 0, 0}, {0.5, 0.5, 0}}, {}};
   }
   return {};
 }
@@ -70,12 +74,19 @@ V3 edge_translation(const std::array<int, 3>& d, const Cell& cell) {
 LatticeStyle lattice_style(const std::string& name) {
   if (name == "bcc") return LatticeStyle::bcc;
   if (name == "hcp") return LatticeStyle::hcp;
+  if (name == "b2") return LatticeStyle::b2;
   if (name == "fcc") return LatticeStyle::fcc;
-  throw InputError(fmt::format("lattice type \"{}\": expected fcc, bcc or hcp", name));
+  throw InputError(fmt::format("lattice type \"{}\": expected fcc, bcc, hcp or b2", name));
 }
 
 const char* lattice_name(LatticeStyle s) {
-  return s == LatticeStyle::bcc ? "bcc" : s == LatticeStyle::hcp ? "hcp" : "fcc";
+  switch (s) {
+    case LatticeStyle::bcc: return "bcc";
+    case LatticeStyle::hcp: return "hcp";
+    case LatticeStyle::b2: return "b2";
+    case LatticeStyle::fcc: break;
+  }
+  return "fcc";
 }
 
 std::string orient_problem(const LatticeSpec& spec) {
@@ -107,7 +118,8 @@ std::string orient_problem(const LatticeSpec& spec) {
 double nearest_neighbour_ratio(const LatticeSpec& spec) {
   switch (spec.style) {
     case LatticeStyle::fcc: return 1.0 / std::sqrt(2.0);
-    case LatticeStyle::bcc: return std::sqrt(3.0) / 2.0;
+    case LatticeStyle::bcc:
+    case LatticeStyle::b2: return std::sqrt(3.0) / 2.0;
     case LatticeStyle::hcp: return std::min(1.0, std::sqrt(1.0 / 3.0 + 0.25 * spec.c_over_a * spec.c_over_a));
   }
   return 1.0;
@@ -152,10 +164,16 @@ LatticeTile lattice_tile(const LatticeSpec& spec) {
     tt[d] = 0;
     for (int k = 0; k < 3; ++k) tt[d] += t[d][k] * L[k] * t[d][k] * L[k];
   }
+  struct Site {
+    V3 f;
+    int kind;
+  };
+  std::vector<Site> found;
   for (int i = lo[0]; i <= hi[0]; ++i)
     for (int j = lo[1]; j <= hi[1]; ++j)
       for (int k = lo[2]; k <= hi[2]; ++k)
-        for (const V3& b : cell.sites) {
+        for (std::size_t site = 0; site < cell.sites.size(); ++site) {
+          const V3& b = cell.sites[site];
           const V3 p = {i + b[0], j + b[1], k + b[2]};
           V3 f;
           bool inside = true;
@@ -166,10 +184,12 @@ LatticeTile lattice_tile(const LatticeSpec& spec) {
             if (std::abs(f[d] - std::round(f[d])) < 1e-9) f[d] = std::round(f[d]);
             inside = f[d] >= 0 && f[d] < 1;
           }
-          if (inside) tile.sites.push_back(f);
+          if (inside) found.push_back({f, cell.kinds.empty() ? 0 : cell.kinds[site]});
         }
-  std::sort(tile.sites.begin(), tile.sites.end(),
-            [](const V3& u, const V3& v) { return std::tie(u[2], u[1], u[0]) < std::tie(v[2], v[1], v[0]); });
+  std::sort(found.begin(), found.end(), [](const Site& u, const Site& v) {
+    return std::tie(u.f[2], u.f[1], u.f[0]) < std::tie(v.f[2], v.f[1], v.f[0]);
+  });
+  for (const Site& x : found) tile.sites.push_back(x.f), tile.kinds.push_back(x.kind);
   if (static_cast<std::int64_t>(tile.sites.size()) != tile.atoms)
     throw RunError(fmt::format("{} lattice tile: found {} sites for {} atoms", lattice_name(spec.style),
                                tile.sites.size(), tile.atoms));
@@ -192,8 +212,10 @@ Crystal oriented_crystal(const LatticeSpec& spec, const std::array<int, 3>& tile
   for (int k = 0; k < tiles[2]; ++k)
     for (int j = 0; j < tiles[1]; ++j)
       for (int i = 0; i < tiles[0]; ++i)
-        for (const V3& f : tile.sites)
-          c.atoms.push_back((i + f[0]) * L[0] * sx, (j + f[1]) * L[1], (k + f[2]) * L[2], type, id++);
+        for (std::size_t s = 0; s < tile.sites.size(); ++s) {
+          const V3& f = tile.sites[s];
+          c.atoms.push_back((i + f[0]) * L[0] * sx, (j + f[1]) * L[1], (k + f[2]) * L[2], type + tile.kinds[s], id++);
+        }
   return c;
 }
 

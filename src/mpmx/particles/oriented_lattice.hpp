@@ -18,7 +18,10 @@
 
 namespace mpmx::particles {
 
-enum class LatticeStyle { fcc, bcc, hcp };
+// b2 (CsCl, e.g. NiAl): bcc's sites, the corners of atom type t and the body centres of
+// type t + 1 (LAMMPS: `lattice bcc` with `create_atoms 1 box basis 2 2`); a simple cubic
+// lattice, so its tiles are those of sc ([111]: sqrt(3) a, not bcc's half).
+enum class LatticeStyle { fcc, bcc, hcp, b2 };
 
 using Orient = std::array<std::array<int, 3>, 3>;
 inline constexpr Orient kCubeAxes = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
@@ -32,7 +35,7 @@ struct LatticeSpec {
   bool plain_fcc() const { return style == LatticeStyle::fcc && orient == kCubeAxes; }
 };
 
-LatticeStyle lattice_style(const std::string& name);  // "fcc", "bcc", "hcp"
+LatticeStyle lattice_style(const std::string& name);  // "fcc", "bcc", "hcp", "b2"
 const char* lattice_name(LatticeStyle s);
 
 // "" when the orientation tiles a periodic box; else why not (a zero vector, vectors not
@@ -43,8 +46,10 @@ std::string orient_problem(const LatticeSpec& spec);
 struct LatticeTile {
   std::array<double, 3> length{};
   std::int64_t atoms = 0;
-  // The atoms' fractional coordinates in the tile, each in [0, 1), ordered z, y, x.
+  // The atoms' fractional coordinates in the tile, each in [0, 1), ordered z, y, x, and
+  // the type offset of each (b2's body centres 1, every other site 0).
   std::vector<std::array<double, 3>> sites;
+  std::vector<int> kinds;
 };
 
 // Throws InputError when orient_problem is not "" or the constant is not positive.
@@ -54,7 +59,8 @@ LatticeTile lattice_tile(const LatticeSpec& spec);
 // for hcp min(1, sqrt(1/3 + (c/a)^2 / 4)).
 double nearest_neighbour_ratio(const LatticeSpec& spec);
 
-// tiles[d] tiles along axis d, atoms numbered from 1 in tile order; the strain scales x
+// tiles[d] tiles along axis d, atoms numbered from 1 in tile order, of type `type` plus
+// their site's kind; the strain scales x
 // and L_x by 1 + strain_x (section 6.2). fcc along the axes is particles::fcc itself.
 Crystal oriented_crystal(const LatticeSpec& spec, const std::array<int, 3>& tiles, double strain_x = 0.0,
                          int type = 0);

@@ -224,6 +224,10 @@ TEST(MdConfigLattice, OrientedCrystalsReadAndBadSetsRefused) {
   EXPECT_NE(msg.find("key 'lattice.c_over_a' = 1.6: applies to an hcp lattice only"), std::string::npos) << msg;
   c = md_config_of(deck("type = \"hcp\"\nc_over_a = 1.593"));
   EXPECT_EQ(c.lattice.c_over_a, 1.593);
+  msg = error(deck("type = \"b2\""));  // lj: one element
+  EXPECT_NE(msg.find("key 'lattice.type' = \"b2\": b2 puts potential.elements[0] on the cube corners"),
+            std::string::npos)
+      << msg;
   c = md_config_of(deck("type = \"bcc\"") + "[bar]\ncells_x = 10\ncells_yz = 3\n");
   EXPECT_EQ(c.bar_config.lattice.style, mpmx::particles::LatticeStyle::bcc);
   msg = error(deck("type = \"bcc\"") + "[rod]\ntarget_cells = [4, 4, 4]\nflyer_cells = 2\nflyer_velocity = 5.0\n");

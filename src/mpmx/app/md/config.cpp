@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -45,7 +46,7 @@ void read_orient(io::Section& lat, particles::LatticeSpec& spec) {
 // `sample`: the deck builds a [jet] or [rod], whose samples are fcc cells along the axes.
 void read_lattice(io::Section& lat, bool sample, MdConfig& c) {
   particles::LatticeSpec& spec = c.lattice;
-  spec.style = particles::lattice_style(lat.choice("type", {"fcc", "bcc", "hcp"}, "fcc"));
+  spec.style = particles::lattice_style(lat.choice("type", {"fcc", "bcc", "hcp", "b2"}, "fcc"));
   c.lattice_constant = lat.number("constant");
   lat.positive("constant", c.lattice_constant);
   spec.constant = c.lattice_constant;
@@ -56,6 +57,12 @@ void read_lattice(io::Section& lat, bool sample, MdConfig& c) {
               "must lie in [0.5, 5] (the ideal sqrt(8/3) = 1.633; Zn's 1.86 is the largest of the elements)");
   }
   read_orient(lat, spec);
+  if (spec.style == particles::LatticeStyle::b2) {
+    const auto* eam = std::get_if<EamSpec>(&c.potential);
+    lat.check(eam && eam->elements.size() >= 2, "type",
+              "b2 puts potential.elements[0] on the cube corners and elements[1] on the body centres: it needs an "
+              "eam potential with two elements");
+  }
   check_constant(lat, "constant", c.lattice_constant, spec);
   if (sample && !spec.plain_fcc())
     lat.check(false, spec.style != particles::LatticeStyle::fcc ? "type" : "orient",
