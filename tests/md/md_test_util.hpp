@@ -5,7 +5,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -79,6 +81,19 @@ inline BlockStats block_stats(const std::vector<double>& x) {
   for (double y : m) v += (y - s.mean) * (y - s.mean);
   s.sem = std::sqrt(v / (nb - 1) / nb);
   return s;
+}
+
+// A LAMMPS `write_dump ... custom id A B C modify sort id` file: id -> (A, B, C).
+inline std::map<long, std::array<double, 3>> read_lammps_dump(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  std::map<long, std::array<double, 3>> out;
+  while (std::getline(in, line) && line.rfind("ITEM: ATOMS", 0) != 0) {
+  }
+  long id;
+  double a, b, c;
+  while (in >> id >> a >> b >> c) out[id] = {a, b, c};
+  return out;
 }
 
 inline bool have_lmp() { return std::system("command -v lmp > /dev/null 2>&1") == 0; }

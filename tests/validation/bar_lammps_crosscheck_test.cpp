@@ -45,14 +45,14 @@ struct Limits {
   double history_gpa;    // |d sxx| over the whole history (GPa)
 };
 
-void crosscheck_bar(const std::string& name, double temperature, int steps, int every, Limits lim) {
+void crosscheck_bar(const std::string& name, const BarConfig& c, const PotentialSpec& spec, int steps, int every,
+                    Limits lim) {
   if (!have_lmp()) GTEST_SKIP() << "lmp (LAMMPS) not on PATH";
   const double dt = 0.001;
-  const BarConfig c = small_bar(temperature);
-  Bar bar(c, mpmx::test::copper());
+  Bar bar(c, Potential(spec));
   const auto dir = fs::temp_directory_path() / ("mpmx_bar_lammps_" + name + "_" + std::to_string(getpid()));
   fs::remove_all(dir);
-  write_lammps_bar(bar, mpmx::test::copper_spec(), dt, steps, every, dir.string());
+  write_lammps_bar(bar, spec, dt, steps, every, dir.string());
 
   std::vector<std::vector<Mat3>> mine{bar.slab_stress_gpa()};
   for (int s = 0; s < steps; s += every) {
@@ -110,12 +110,31 @@ void crosscheck_bar(const std::string& name, double temperature, int steps, int 
 // 0 K: forces agree to ~1e-14 relative (md_lammps_crosscheck_test), so the histories
 // differ by round-off growth only. Measured (2026-11, Release): 1.3e-15 relative at
 // step 0, <= 3e-13 GPa over 500 steps (1.4e-10 GPa after 6000); the limit leaves 3000x.
-TEST(bar_lammps, ZeroKelvinHistory) { crosscheck_bar("0K", 0.0, 500, 50, {1e-10, 1e-9}); }
+TEST(bar_lammps, ZeroKelvinHistory) {
+  crosscheck_bar("0K", small_bar(0.0), mpmx::test::copper_spec(), 500, 50, {1e-10, 1e-9});
+}
+
+// An oriented crystal's bar (M6): bcc Fe (Fe_mm.eam.fs) with x along [111], compressed 5%
+// on its left, at 0 K: LAMMPS reads the same atoms, so the history agrees to round-off.
+TEST(bar_lammps, BccIronAlong111ZeroKelvin) {
+  BarConfig c = small_bar(0.0);
+  c.lattice.style = mpmx::particles::LatticeStyle::bcc;
+  c.lattice.orient = {{{1, 1, 1}, {-1, 1, 0}, {-1, -1, 2}}};
+  c.lattice_constant = 2.855324860793;
+  c.cells_x = 40;  // tiles of sqrt(3) a / 2: 99 A
+  c.cells_yz = 2;
+  EamSpec fe;
+  fe.file = mpmx::test::kLammpsPotentials + "Fe_mm.eam.fs";
+  fe.elements = {"Fe"};
+  crosscheck_bar("bcc111", c, fe, 300, 50, {1e-10, 1e-9});
+}
 
 // 300 K (atoms start at 600 K): round-off differences grow chaotically, about x10 per
 // 2 ps here (measured: 5e-13 GPa at 1 ps, 2e-11 at 5 ps, 1.7e-10 at 6 ps), so 1 ps with
 // a limit 2e4 times the measured difference (some 8 ps more of growth).
-TEST(bar_lammps, ThermalShortHorizon) { crosscheck_bar("300K", 300.0, 1000, 100, {1e-10, 1e-8}); }
+TEST(bar_lammps, ThermalShortHorizon) {
+  crosscheck_bar("300K", small_bar(300.0), mpmx::test::copper_spec(), 1000, 100, {1e-10, 1e-8});
+}
 
 TEST(bar_lammps, RejectsMovingPiston) {
   BarConfig c = small_bar(0.0);

@@ -53,18 +53,6 @@ struct LammpsResult {
   std::map<long, std::array<double, 3>> f0, x1, v1;
 };
 
-std::map<long, std::array<double, 3>> read_dump(const fs::path& p) {
-  std::ifstream in(p);
-  std::string line;
-  std::map<long, std::array<double, 3>> out;
-  while (std::getline(in, line) && line.rfind("ITEM: ATOMS", 0) != 0) {
-  }
-  long id;
-  double a, b, c;
-  while (in >> id >> a >> b >> c) out[id] = {a, b, c};
-  return out;
-}
-
 LammpsResult run_lammps(const Case& cs, const System& sys, const fs::path& dir, int steps, double dt) {
   fs::create_directories(dir);
   mpmx::app::md::write_lammps_data(sys, (dir / "data.lmp").string(), "crosscheck");
@@ -105,9 +93,9 @@ LammpsResult run_lammps(const Case& cs, const System& sys, const fs::path& dir, 
       s >> r.pe1 >> r.ke1;
     }
   }
-  r.f0 = read_dump(dir / "f0.dump");
-  r.x1 = read_dump(dir / "x1.dump");
-  r.v1 = read_dump(dir / "v1.dump");
+  r.f0 = mpmx::test::read_lammps_dump(dir / "f0.dump");
+  r.x1 = mpmx::test::read_lammps_dump(dir / "x1.dump");
+  r.v1 = mpmx::test::read_lammps_dump(dir / "v1.dump");
   return r;
 }
 

@@ -236,19 +236,22 @@ int Section::integer_int(std::string_view key, int fallback, int lo, int hi) {
   return static_cast<int>(integer(key, std::int64_t{fallback}, std::int64_t{lo}, std::int64_t{hi}));
 }
 
+const toml::array* Section::array_at(std::string_view key, const toml::node* n, const std::string& want) {
+  if (!n) {
+    missing(key, want);
+    return nullptr;
+  }
+  const toml::array* a = n->as_array();
+  if (!a) type_error(key, *n, want);
+  return a;
+}
+
 std::vector<std::int64_t> Section::integers(std::string_view key, std::int64_t lo, std::int64_t hi) {
   const toml::node* n = get(key);
   const std::string b = bounds_text(lo, hi);
   const std::string want = b.empty() ? "an array of integers" : "an array of integers, each " + b;
-  if (!n) {
-    missing(key, want);
-    return {};
-  }
-  const toml::array* a = n->as_array();
-  if (!a) {
-    type_error(key, *n, want);
-    return {};
-  }
+  const toml::array* a = array_at(key, n, want);
+  if (!a) return {};
   std::vector<std::int64_t> out;
   for (std::size_t i = 0; i < a->size(); ++i) {
     const toml::node& e = *a->get(i);
@@ -269,6 +272,35 @@ std::vector<std::int64_t> Section::integers(std::string_view key, std::int64_t l
       return {};
     }
     out.push_back(v);
+  }
+  return out;
+}
+
+std::vector<std::vector<std::int64_t>> Section::integer_rows(std::string_view key, std::int64_t lo, std::int64_t hi) {
+  const toml::node* n = get(key);
+  const toml::array* a = array_at(key, n, "an array of arrays of integers, each " + bounds_text(lo, hi));
+  if (!a) return {};
+  std::vector<std::vector<std::int64_t>> out;
+  for (std::size_t r = 0; r < a->size(); ++r) {
+    const toml::array* row = a->get(r)->as_array();
+    if (!row) {
+      deck_->add_key_error(a->get(r), key_path(key),
+                           fmt::format("key '{}' = {}: row {} is {}, expected an array of integers", key_path(key),
+                                       describe(*n), r + 1, describe(*a->get(r))));
+      return {};
+    }
+    std::vector<std::int64_t> values;
+    for (std::size_t i = 0; i < row->size(); ++i) {
+      const toml::node& e = *row->get(i);
+      if (!e.is_integer() || e.as_integer()->get() < lo || e.as_integer()->get() > hi) {
+        deck_->add_key_error(&e, key_path(key),
+                             fmt::format("key '{}' = {}: row {} entry {} is {}, expected an integer {}", key_path(key),
+                                         describe(*n), r + 1, i + 1, describe(e), bounds_text(lo, hi)));
+        return {};
+      }
+      values.push_back(e.as_integer()->get());
+    }
+    out.push_back(std::move(values));
   }
   return out;
 }

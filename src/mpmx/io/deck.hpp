@@ -53,6 +53,9 @@ class Section final : public Table {
   int integer_int(std::string_view key, int fallback, int lo, int hi) override;
   // An array of integers, each in [lo, hi] (the error names the entry).
   std::vector<std::int64_t> integers(std::string_view key, std::int64_t lo, std::int64_t hi) override;
+  // An array of arrays of integers (`orient = [[1,1,0],[-1,1,0],[0,0,1]]`), each entry in
+  // [lo, hi]; {} after an error (which names the row and entry).
+  std::vector<std::vector<std::int64_t>> integer_rows(std::string_view key, std::int64_t lo, std::int64_t hi);
   bool boolean(std::string_view key, bool fallback) override;
   std::string string(std::string_view key) override;
   std::string string(std::string_view key, std::string fallback) override;
@@ -89,6 +92,8 @@ class Section final : public Table {
   const toml::node* get(std::string_view key);
   void type_error(std::string_view key, const toml::node& node, std::string_view want);
   void missing(std::string_view key, std::string_view want);
+  // The array at `n` (the node of `key`), or nullptr after saying it is missing or not one.
+  const toml::array* array_at(std::string_view key, const toml::node* n, const std::string& want);
   // The checked integer at a present node: type and range; `ok` false on any error.
   std::int64_t checked_integer(std::string_view key, const toml::node& n, std::int64_t lo, std::int64_t hi,
                                std::int64_t on_error, bool& ok);

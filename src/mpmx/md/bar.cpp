@@ -1,5 +1,7 @@
 #include "mpmx/md/bar.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
@@ -15,8 +17,18 @@ System Bar::build(const BarConfig& c, Potential pot, SystemOptions o) {
     throw InputError(fmt::format("bar: cells_x {} (>= 2), cells_yz {} (>= 1), bins {} (>= 1), split {} in "
                                  "(0,1), strain_left {} in (-0.5,0.5)",
                                  c.cells_x, c.cells_yz, c.bins, c.split, c.strain_left));
-  Crystal cr = fcc(c.cells_x, c.cells_yz, c.cells_yz, c.lattice_constant);
-  const double a = c.lattice_constant, length = c.cells_x * a;
+  particles::LatticeSpec lat = c.lattice;
+  lat.constant = c.lattice_constant;
+  Crystal cr = particles::oriented_crystal(lat, {c.cells_x, c.cells_yz, c.cells_yz});
+  const double a = c.lattice_constant, length = lat.plain_fcc() ? c.cells_x * a : cr.box.lx;
+  // From the last atomic plane to the bar's periodic length: fcc's a / 2, or the tile's.
+  double end_space = 0.5 * a;
+  if (!lat.plain_fcc()) {
+    const particles::LatticeTile tile = particles::lattice_tile(lat);
+    double last = 0;
+    for (const auto& f : tile.sites) last = std::max(last, f[0]);
+    end_space = (1.0 - last) * tile.length[0];
+  }
   const double xs = c.split * length, gap = 2.0 * (pot.cutoff() + o.skin) + a;
   for (auto& x : cr.atoms.x) {
     // Strain the left part (x and its length times 1 + e), shift the rest with it.
@@ -36,7 +48,7 @@ System Bar::build(const BarConfig& c, Potential pot, SystemOptions o) {
   w.enabled = true;
   const double hair = 1e-6;  // Angstrom
   w.lo = 0.5 * gap - hair;
-  w.hi = 0.5 * gap + strained - 0.5 * a + hair;
+  w.hi = 0.5 * gap + strained - end_space + hair;
   w.v_lo = c.piston_velocity;
   s.set_walls(w);
   return s;

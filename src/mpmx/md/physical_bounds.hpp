@@ -32,4 +32,14 @@ inline std::string fcc_constant_problem(double a) {
                      nn, kMinBondLength);
 }
 
+// The same for any lattice whose nearest neighbours lie `ratio` times the constant apart
+// (particles::nearest_neighbour_ratio); `lattice` names it in the message.
+inline std::string lattice_constant_problem(double a, double ratio, const char* lattice) {
+  const double nn = a * ratio;
+  if (!(a > 0) || nn >= kMinBondLength) return {};
+  return fmt::format("{} nearest neighbours would be {:.4g} A apart ({:.4g} x the constant), closer than any bond "
+                     "({} A): the atoms would start inside each other",
+                     lattice, nn, ratio, kMinBondLength);
+}
+
 }  // namespace mpmx::md

@@ -113,6 +113,17 @@ TEST(MdCli, CheckValidatesOnly) {
   EXPECT_NE(r.output.find("ok"), std::string::npos);
 }
 
+// An oriented crystal's check states its periodic tile and box (M6).
+TEST(MdCli, CheckStatesTheOrientedTile) {
+  const auto r = run_cli(std::string("md ") + MPMX_SOURCE_DIR + "/examples/M6_fe_bcc_110.toml --check");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("lattice: bcc a = 2.85532 A, x [1,1,0] y [-1,1,0] z [0,0,1]: periodic tile 4.03803 x "
+                          "4.03803 x 2.85532 A of 4 atoms; box 6 x 6 x 8 tiles = 24.2282 x 24.2282 x 22.8426 A, 1152 "
+                          "atoms"),
+            std::string::npos)
+      << r.output;
+}
+
 TEST(MdCli, BadDeckNamesKeyValueReason) {
   std::string text = kGoodMdDeck;
   text.replace(text.find("dt = 0.001"), 10, "dt = -0.5");

@@ -197,3 +197,41 @@ TEST(MdConfigHostile, StepSumsPastAnInt64AreRefused) {
       << msg;
   EXPECT_EQ(error(lj_deck("3", "1000") + "[thermal]\nrelax_steps = 9223372036854774807\n"), "(no error)");
 }
+
+// [lattice]'s type, orient and c_over_a (M6): an oriented bcc box read; a bad set refused
+// naming the key, the value and the reason; c_over_a only for hcp; a [bar] of any, a [rod] fcc only.
+TEST(MdConfigLattice, OrientedCrystalsReadAndBadSetsRefused) {
+  auto deck = [](const std::string& lattice) {
+    std::string t = lj_deck("3", "10");
+    t.replace(t.find("[lattice]\n"), 10, "[lattice]\n" + lattice + "\n");
+    return t;
+  };
+  MdConfig c = md_config_of(deck("type = \"bcc\"\norient = [[1, 1, 1], [-1, 1, 0], [-1, -1, 2]]"));
+  EXPECT_EQ(c.lattice.style, mpmx::particles::LatticeStyle::bcc);
+  EXPECT_EQ(c.lattice.orient[2][2], 2);
+  EXPECT_EQ(c.lattice.constant, c.lattice_constant);
+  std::string msg = error(deck("type = \"bcc\"\norient = [[1, 1, 0], [1, -1, 0], [0, 0, 1]]"));
+  EXPECT_NE(msg.find("key 'lattice.orient' = [[1, 1, 0], [1, -1, 0], [0, 0, 1]]: [1,1,0] x [1,-1,0] is opposite to "
+                     "[0,0,1]: the set is left-handed"),
+            std::string::npos)
+      << msg;
+  msg = error(deck("type = \"fcc\"\norient = [[1, 1, 0], [0, 1, 0]]"));
+  EXPECT_NE(msg.find("key 'lattice.orient'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("expected three directions"), std::string::npos) << msg;
+  msg = error(deck("type = \"hcp\"\norient = [[1, 1, 0], [-1, 1, 0], [0, 0, 1]]"));
+  EXPECT_NE(msg.find("off the hcp cell's axes"), std::string::npos) << msg;
+  msg = error(deck("type = \"bcc\"\nc_over_a = 1.6"));
+  EXPECT_NE(msg.find("key 'lattice.c_over_a' = 1.6: applies to an hcp lattice only"), std::string::npos) << msg;
+  c = md_config_of(deck("type = \"hcp\"\nc_over_a = 1.593"));
+  EXPECT_EQ(c.lattice.c_over_a, 1.593);
+  msg = error(deck("type = \"b2\""));  // lj: one element
+  EXPECT_NE(msg.find("key 'lattice.type' = \"b2\": b2 puts potential.elements[0] on the cube corners"),
+            std::string::npos)
+      << msg;
+  c = md_config_of(deck("type = \"bcc\"") + "[bar]\ncells_x = 10\ncells_yz = 3\n");
+  EXPECT_EQ(c.bar_config.lattice.style, mpmx::particles::LatticeStyle::bcc);
+  msg = error(deck("type = \"bcc\"") + "[rod]\ntarget_cells = [4, 4, 4]\nflyer_cells = 2\nflyer_velocity = 5.0\n");
+  EXPECT_NE(msg.find("key 'lattice.type' = \"bcc\": a [jet] or [rod] sample is built of fcc cells"),
+            std::string::npos)
+      << msg;
+}

@@ -31,13 +31,20 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
     for (int d = 0; d < 3; ++d) n[d] = c.cells[d];
     b.size_key = "lattice.cells";
   }
-  b.atoms = std::round(4.0 * n[0] * n[1] * n[2] * filled);
-  b.images = reach / (std::min({n[0], n[1], n[2]}) * a);
+  // The cell: fcc's cube of 4 atoms, or the oriented lattice's periodic tile.
+  double len[3] = {a, a, a}, per_cell = 4.0;
+  if (!c.jet && !c.rod && !c.lattice.plain_fcc()) {
+    const particles::LatticeTile tile = particles::lattice_tile(c.lattice);
+    for (int d = 0; d < 3; ++d) len[d] = tile.length[d];
+    per_cell = static_cast<double>(tile.atoms);
+  }
+  b.atoms = std::round(per_cell * n[0] * n[1] * n[2] * filled);
+  b.images = reach / std::min({n[0] * len[0], n[1] * len[1], n[2] * len[2]});
   // Locals plus ghosts: the box grown by the reach on every side (an upper bound: the
   // bar's x has vacuum instead of images).
-  const double density = 4.0 / (a * a * a);
+  const double density = per_cell / (len[0] * len[1] * len[2]);
   double entries = density;
-  for (int d = 0; d < 3; ++d) entries *= n[d] * a + 2.0 * reach;
+  for (int d = 0; d < 3; ++d) entries *= n[d] * len[d] + 2.0 * reach;
   entries = std::max(entries, b.atoms);
   const double pairs = b.atoms * 0.5 * (4.0 / 3.0) * M_PI * reach * reach * reach * density;
   b.bytes = kBytesFixed + kBytesPerLocal * b.atoms + kBytesPerEntry * entries + kBytesPerPair * pairs +

@@ -2,7 +2,9 @@
 // an MD-only run (issue 3); for a bar deck, optionally its reference through LAMMPS.
 // `--check` does every validation the run does (deck, potential file and its elements,
 // memory and work estimates) and writes nothing; the run creates DIR only after them.
+#include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -94,6 +96,21 @@ void run_jet_lammps(const md::MdConfig& c, const std::string& out, const std::st
              shown.string(), (fs::path(out) / "jet_stress_lammps.csv").string());
 }
 
+// The oriented crystal's periodic tile and box: what `check` states of [lattice].
+// `what`: "box" or "bar"; `cells`: its tiles along x, y, z.
+void print_lattice(const md::MdConfig& c, const char* what, const std::array<int, 3>& cells, double strain_x) {
+  const particles::LatticeSpec& l = c.lattice;
+  const particles::LatticeTile tile = particles::lattice_tile(l);
+  const auto& o = l.orient;
+  std::string shape = l.style == particles::LatticeStyle::hcp ? fmt::format(", c/a {:.6g}", l.c_over_a) : "";
+  fmt::print("  lattice: {} a = {:.6g} A{}, x [{},{},{}] y [{},{},{}] z [{},{},{}]: periodic tile {:.6g} x {:.6g} x "
+             "{:.6g} A of {} atoms; {} {} x {} x {} tiles = {:.6g} x {:.6g} x {:.6g} A, {} atoms\n",
+             particles::lattice_name(l.style), l.constant, shape, o[0][0], o[0][1], o[0][2], o[1][0], o[1][1], o[1][2],
+             o[2][0], o[2][1], o[2][2], tile.length[0], tile.length[1], tile.length[2], tile.atoms, what, cells[0],
+             cells[1], cells[2], cells[0] * tile.length[0] * (1 + strain_x), cells[1] * tile.length[1],
+             cells[2] * tile.length[2], tile.atoms * cells[0] * cells[1] * cells[2]);
+}
+
 // `md --check`, and `mpmx check` of an md deck: every validation the run makes (deck,
 // potential file and its elements, memory always, work over a day unless `force`) and
 // the estimate at the rate of a 500-atom box of the deck's potential timed on this core.
@@ -108,8 +125,13 @@ void check_md(const std::string& path, bool force, bool lammps = false) {
   md::check_md_budget(budget, physical_memory_bytes(), force);
   md::SystemOptions one = config.options;
   one.threaded = false;
-  double rate = md::measure_atom_steps_per_second(potential, one, config.lattice_constant, 5, config.temperature, 1,
-                                                  config.dt);
+  // Timed on an fcc box of the crystal's atom density (as many neighbours a pair list holds).
+  double timed_a = config.lattice_constant;
+  if (!config.lattice.plain_fcc() && !config.jet && !config.rod) {
+    const particles::LatticeTile tile = particles::lattice_tile(config.lattice);
+    timed_a = std::cbrt(4.0 * tile.length[0] * tile.length[1] * tile.length[2] / static_cast<double>(tile.atoms));
+  }
+  double rate = md::measure_atom_steps_per_second(potential, one, timed_a, 5, config.temperature, 1, config.dt);
   const bool measured = rate > 0;
   if (!measured) rate = md::kMdAtomStepsPerSecond;
   fmt::print("{}: ok (md deck: {:.4g} atoms, {} steps, about {} of memory, {:.3g} atom-steps, about {:.3g} h on one "
@@ -118,6 +140,10 @@ void check_md(const std::string& path, bool force, bool lammps = false) {
              format_bytes(budget.bytes), budget.atom_steps,
              budget.atom_steps / rate / 3600.0, rate,
              measured ? "a box of its potential timed on this core just now" : "a typical figure");
+  if (!config.bar && !config.jet && !config.rod) print_lattice(config, "box", config.cells, config.strain_x);
+  else if (config.bar && !config.lattice.plain_fcc())
+    print_lattice(config, "bar", {config.bar_config.cells_x, config.bar_config.cells_yz, config.bar_config.cells_yz},
+                  0.0);
   if (budget.bins > 0)
     fmt::print("  {:.4g} bins: about {} of bin tables and images over the run\n", budget.bins,
                format_bytes(budget.output_bytes));
@@ -127,7 +153,7 @@ void check_md(const std::string& path, bool force, bool lammps = false) {
 
 void add_md_commands(CLI::App& app) {
   register_deck_check(DeckKind::md, [](const std::string& path, bool force) { check_md(path, force); });
-  auto* md = app.add_subcommand("md", "Run an MD-only deck (fcc crystal, EAM/LJ/Sutton-Chen, NVE)");
+  auto* md = app.add_subcommand("md", "Run an MD-only deck (fcc, bcc or hcp crystal in any orientation, EAM/LJ/Sutton-Chen, NVE)");
   struct Args {
     std::string deck, out;
     bool check = false, quiet = false, force = false, lammps = false, lammps_write_only = false, resume = false,

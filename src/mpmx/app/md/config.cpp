@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -21,17 +22,54 @@ namespace {
 
 constexpr std::int64_t kMax64 = std::numeric_limits<std::int64_t>::max();
 
-// An fcc lattice constant whose atoms start no closer than a bond (md/physical_bounds.hpp).
-void check_fcc_constant(io::Section& s, std::string_view key, double a) {
-  if (const std::string why = mpmx::md::fcc_constant_problem(a); !why.empty()) s.check(false, key, why);
+// A lattice constant whose atoms start no closer than a bond (md/physical_bounds.hpp).
+void check_constant(io::Section& s, std::string_view key, double a, const particles::LatticeSpec& spec) {
+  const std::string why =
+      spec.plain_fcc() ? mpmx::md::fcc_constant_problem(a)
+                       : mpmx::md::lattice_constant_problem(a, particles::nearest_neighbour_ratio(spec),
+                                                            particles::lattice_name(spec.style));
+  if (!why.empty()) s.check(false, key, why);
 }
 
-// [lattice]: the fcc crystal and its initial strain.
-void read_lattice(io::Section& lat, MdConfig& c) {
-  lat.choice("type", {"fcc"}, "fcc");
+// [lattice].orient: three integer directions for x, y, z (LAMMPS's `orient`).
+void read_orient(io::Section& lat, particles::LatticeSpec& spec) {
+  if (!lat.has("orient")) return;
+  const auto rows = lat.integer_rows("orient", -1000, 1000);
+  if (rows.empty()) return;  // the reader said why
+  const bool shaped = rows.size() == 3 && rows[0].size() == 3 && rows[1].size() == 3 && rows[2].size() == 3;
+  lat.check(shaped, "orient", "expected three directions [[u,v,w], [u,v,w], [u,v,w]] for x, y and z");
+  if (!shaped) return;
+  for (int d = 0; d < 3; ++d)
+    for (int k = 0; k < 3; ++k) spec.orient[d][k] = static_cast<int>(rows[d][k]);
+  if (const std::string why = particles::orient_problem(spec); !why.empty()) lat.check(false, "orient", why);
+}
+
+// [lattice]: the crystal (fcc, bcc or hcp in any orientation) and its initial strain.
+// `sample`: the deck builds a [jet] or [rod], whose samples are fcc cells along the axes.
+void read_lattice(io::Section& lat, bool sample, MdConfig& c) {
+  particles::LatticeSpec& spec = c.lattice;
+  spec.style = particles::lattice_style(lat.choice("type", {"fcc", "bcc", "hcp", "b2"}, "fcc"));
   c.lattice_constant = lat.number("constant");
   lat.positive("constant", c.lattice_constant);
-  check_fcc_constant(lat, "constant", c.lattice_constant);
+  spec.constant = c.lattice_constant;
+  if (lat.has("c_over_a")) {
+    spec.c_over_a = lat.number("c_over_a");
+    lat.check(spec.style == particles::LatticeStyle::hcp, "c_over_a", "applies to an hcp lattice only");
+    lat.check(spec.c_over_a >= 0.5 && spec.c_over_a <= 5, "c_over_a",
+              "must lie in [0.5, 5] (the ideal sqrt(8/3) = 1.633; Zn's 1.86 is the largest of the elements)");
+  }
+  read_orient(lat, spec);
+  if (spec.style == particles::LatticeStyle::b2) {
+    const auto* eam = std::get_if<EamSpec>(&c.potential);
+    lat.check(eam && eam->elements.size() >= 2, "type",
+              "b2 puts potential.elements[0] on the cube corners and elements[1] on the body centres: it needs an "
+              "eam potential with two elements");
+  }
+  check_constant(lat, "constant", c.lattice_constant, spec);
+  if (sample && !spec.plain_fcc())
+    lat.check(false, spec.style != particles::LatticeStyle::fcc ? "type" : "orient",
+              "a [jet] or [rod] sample is built of fcc cells along the cube axes; type and orient apply to the "
+              "periodic box and the [bar]");
   const auto cells = lat.integers("cells", 1, 1000);  // unit cells along x, y, z
   if (cells.size() == 3 || cells.size() == 1) {
     for (int d = 0; d < 3; ++d) c.cells[d] = static_cast<int>(cells[cells.size() == 3 ? d : 0]);
@@ -146,7 +184,7 @@ void read_run(io::Section& run, bool jet, MdConfig& c) {
 void read_scan(io::Section& scan, MdConfig& c) {
   c.scan_from = scan.number("lattice_from");
   scan.positive("lattice_from", c.scan_from);
-  check_fcc_constant(scan, "lattice_from", c.scan_from);
+  check_constant(scan, "lattice_from", c.scan_from, c.lattice);
   c.scan_to = scan.number("lattice_to");
   scan.check(c.scan_to > c.scan_from, "lattice_to", "must exceed lattice_from");
   c.scan_points = scan.integer_int("points", 41, 3, 100000);
@@ -166,6 +204,7 @@ void read_bar(io::Section& bar, MdConfig& c) {
   b.bins = bar.integer_int("bins", 100, 1, 100000);
   c.bar_every = bar.integer("output_every", 100, 1, INT_MAX);
   b.lattice_constant = c.lattice_constant;
+  b.lattice = c.lattice;
   b.temperature = c.temperature;
   b.seed = c.seed;
 }
@@ -298,7 +337,7 @@ MdConfig read_md_config(io::Deck& deck) {
   c.potential = read_potential(root.table("potential"), deck_dir);
 
   auto lat = root.table("lattice");
-  read_lattice(lat, c);
+  read_lattice(lat, root.has("jet") || root.has("rod"), c);
   auto th = root.optional_table("thermal");
   read_thermal(th, c);
   auto run = root.table("run");

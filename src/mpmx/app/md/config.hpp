@@ -12,6 +12,7 @@
 #include "mpmx/md/jet.hpp"
 #include "mpmx/md/nose_hoover.hpp"
 #include "mpmx/md/particles.hpp"
+#include "mpmx/particles/oriented_lattice.hpp"
 #include "mpmx/md/rod.hpp"
 #include "mpmx/md/potential/potential.hpp"
 #include "mpmx/md/system.hpp"
@@ -24,6 +25,9 @@ struct MdConfig {
   PotentialSpec potential;
   std::array<int, 3> cells{5, 5, 5};
   double lattice_constant = 3.615;  // Angstrom
+  // [lattice]'s crystal (type, constant, c_over_a, orient); cells counts its periodic
+  // tiles (particles/oriented_lattice.hpp), the cubic cells of fcc along the axes.
+  particles::LatticeSpec lattice;
   double strain_x = 0.0;            // initial engineering strain (section 6.2)
   double temperature = 0.0;         // K, target; atoms start at twice it (section 6.2)
   std::uint64_t seed = 1;

@@ -22,6 +22,7 @@
 #include "mpmx/md/nose_hoover.hpp"
 #include "mpmx/md/particles.hpp"
 #include "mpmx/md/system.hpp"
+#include "mpmx/particles/oriented_lattice.hpp"
 
 namespace mpmx::app::md {
 
@@ -69,7 +70,9 @@ toml::table lattice_scan(const MdConfig& c, const Potential& pot) {
   double best_a = 0, best_e = 1e300;
   for (int k = 0; k < c.scan_points; ++k) {
     const double a = c.scan_from + (c.scan_to - c.scan_from) * k / (c.scan_points - 1);
-    System s(fcc(c.cells[0], c.cells[1], c.cells[2], a), pot, c.options);
+    particles::LatticeSpec spec = c.lattice;
+    spec.constant = a;
+    System s(particles::oriented_crystal(spec, c.cells), pot, c.options);
     const double e = s.potential_energy() / static_cast<double>(s.atoms().size());
     as.push_back(a);
     es.push_back(e);
@@ -173,7 +176,7 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
     write_record(c, pot, deck_echo, r, std::move(rec), out_dir, stopped, control);
     return r;
   }
-  System sys(fcc(c.cells[0], c.cells[1], c.cells[2], c.lattice_constant, c.strain_x), pot, c.options);
+  System sys(particles::oriented_crystal(c.lattice, c.cells, c.strain_x), pot, c.options);
   const std::int64_t last_step = c.relax_steps + c.steps;
   // nvt, npt, nph: the thermostat and barostat, built once the atoms are placed; their
   // variables ride in the checkpoint after the system.
