@@ -13,6 +13,7 @@
 #include "mpmx/app/mpm/checkpoint.hpp"
 #include "mpmx/app/mpm/comparison.hpp"
 #include "mpmx/app/mpm/convergence.hpp"
+#include "mpmx/app/mpm/gauges.hpp"
 #include "mpmx/app/mpm/output.hpp"
 #include "mpmx/app/mpm/run_checkpoint.hpp"
 #include "mpmx/app/mpm/run_summary.hpp"
@@ -75,6 +76,7 @@ class ContinuumRun {
       if (InterruptGuard::interrupted())
         throw Interrupted("while the run was being set up: nothing was written; start the run again");
     }
+    gauges_ = std::make_unique<Gauges<Dim>>(c, s_, o.out_dir.empty());  // from the initial state
     const material::Subscale* sub = s_.material->subscale();
     r.threads = sub ? sub->threads() : 1;
     rec_.set("version", MPMX_VERSION);
@@ -110,10 +112,12 @@ class ContinuumRun {
       if (!o_.resume) {
         record();
         observe();
+        gauges_->sample(s_, out_.get());
       }
       for (std::int64_t n = s_.step + 1; !done(n); ++n) {
         const bool at_record_time = advance(n);
         check_finite(s_);
+        gauges_->sample(s_, out_.get());
         const bool last = c_.cfl_dt ? !(s_.time < c_.end) : n == schedule_.steps;
         if (schedule_.compare_steps.count(n) && comparison_) comparison_->compare(s_, book_);
         if (due_record(n, at_record_time)) record();
@@ -272,6 +276,7 @@ class ContinuumRun {
                  c_.id, r_.energy_growth, c_.energy_growth);
     if (comparison_) comparison_->finish(book_);
     r_.errors = book_.errors;
+    r_.gauges = gauges_->traces();
     r_.front_speed = book_.front_speed;
     record_run(c_, r_, failure_, checkpoint_path(o_.out_dir), rec_);
     if (!o_.out_dir.empty() && ranks::root()) {
@@ -337,6 +342,7 @@ class ContinuumRun {
   RunCarry carry_;
   std::unique_ptr<Output> out_;
   std::unique_ptr<VtkOutput<Dim>> vtk_;
+  std::unique_ptr<Gauges<Dim>> gauges_;
   std::string failure_;
   std::chrono::steady_clock::time_point t0_;
   double last_checkpoint_ = 0.0;
