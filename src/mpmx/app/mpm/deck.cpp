@@ -494,6 +494,10 @@ void read_output(Section& root, MpmConfig& c) {
   c.write_particles = o.boolean("particles", true);
   c.plot = o.boolean("plot", true);
   c.write_vtk = o.boolean("vtk", dim > 1);
+  bool quasi_1d = true;
+  for (int d = 1; d < dim; ++d) quasi_1d = quasi_1d && c.cells_all[d] <= 8;
+  c.write_xt = o.boolean("xt", quasi_1d);
+  c.xt_every = o.integer("xt_every", 0, 0, std::numeric_limits<std::int64_t>::max());
 }
 
 // [manufactured]: the solution that drives the run (VALIDATION.md N4).
