@@ -132,8 +132,8 @@ struct MpmConfig {
   bool write_nodes = true, write_particles = true, plot = true;
   bool write_vtk = true;             // 2-D, 3-D: VTK files for ParaView
   // xt_sigma_xx.csv (app/mpm/xt_diagram.hpp) every xt_every steps (0: about 400 rows over
-  // the run): on by default in 1-D and where every axis but x has at most 8 cells (a
-  // quasi-1-D 2-D or 3-D deck)
+  // the run): on by default where the deck has a piston or a gauge and is 1-D or
+  // quasi-1-D (every axis but x at most 8 cells)
   bool write_xt = false;
   std::int64_t xt_every = 0;
   // [[gauge]]

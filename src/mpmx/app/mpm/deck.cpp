@@ -494,9 +494,12 @@ void read_output(Section& root, MpmConfig& c) {
   c.write_particles = o.boolean("particles", true);
   c.plot = o.boolean("plot", true);
   c.write_vtk = o.boolean("vtk", dim > 1);
-  bool quasi_1d = true;
+  // The x-t diagram by default where a shock user looks for it: a 1-D or quasi-1-D deck
+  // with a piston or a gauge (other runs ask for it: its table is cells x 400 numbers).
+  bool quasi_1d = true, shock = !c.gauges.empty();
   for (int d = 1; d < dim; ++d) quasi_1d = quasi_1d && c.cells_all[d] <= 8;
-  c.write_xt = o.boolean("xt", quasi_1d);
+  for (const auto& side : c.boundary.face) shock = shock || side.type == BoundarySide::Type::piston;
+  c.write_xt = o.boolean("xt", quasi_1d && shock);
   c.xt_every = o.integer("xt_every", 0, 0, std::numeric_limits<std::int64_t>::max());
 }
 
@@ -617,8 +620,8 @@ MpmConfig read(Deck& deck) {
   Section t = root.table("time");
   const double cfl_limit = read_time(t, c);
   read_boundary(root, c);  // after [time]: a piston's travel is checked against time.end
-  read_output(root, c);
   read_gauges(root, c);
+  read_output(root, c);
   read_manufactured(root, in, c);
   read_reference(root, c, deck_dir);
   check_time_step(t, c, cfl_limit);
