@@ -28,7 +28,7 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
   const int w = st.width;
   const std::size_t n = p.size();
   // Node i's velocity from the points' momenta, or its face's at t where one holds it, or
-  // raised to a piston's where the node lies behind its face (piston.hpp).
+  // raised to a piston's where the node's support reaches behind its face (piston.hpp).
   std::array<int, 2 * Dim> reach{};
   for (int f = 0; f < 2 * Dim; ++f)
     if (bc.face[f].type == BoundarySide::Type::piston)

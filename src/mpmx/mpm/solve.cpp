@@ -8,8 +8,8 @@ namespace mpmx::mpm {
 
 namespace {
 
-// Pistons (piston.hpp): the normal v^L of the nodes at or behind each piston's face at t
-// raised to its speed at t + dt where the material there moves slower. What the piston
+// Pistons (piston.hpp): the normal v^L of the nodes whose support reaches behind each
+// piston's face at t raised to its speed at t + dt where the material there moves slower. What the piston
 // adds, m (v^L - v^L free), and the force it takes on its nodes without mass (DDMP's
 // smoothed force reaches one node past the material), are tallied per line and summed
 // in line order (any thread count gives the same sums); its work is that impulse times
