@@ -3,6 +3,7 @@
 // C1 (VALIDATION.md): a piston drives a shock that the jump conditions fix. Behind the
 // front the bar moves at the piston's speed u_p with the stress the jump conditions give;
 // a Mie-Gruneisen copper bar's shock runs at Us = c0 + s u_p.
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -145,6 +146,51 @@ TEST(C1, ElasticBarAs3dDeckGivesThe1dPlateau) {
   EXPECT_GT(pl.points, 100);
   EXPECT_NEAR(pl.velocity, kUp, 0.01 * kUp);
   EXPECT_NEAR(pl.stress, sigma, 0.01 * std::abs(sigma));
+}
+
+// A velocity history: a ramp to u_p over 0.5 ps reaches the same plateau (the face
+// follows the table's integral), and the piston's impulse is still the bar's momentum.
+TEST(C1, RampedPistonReachesTheSamePlateau) {
+  const auto c = test::deck_with(test::example("C1_piston_elastic_1d.toml"), [](toml::table& t) {
+    t["boundary"].as_table()->insert_or_assign(
+        "left", toml::table{{"type", "piston"}, {"times", toml::array{0.0, 0.5}}, {"velocity", toml::array{0.0, kUp}}});
+  });
+  const auto r = test::run(c);
+  const double e = log_strain_jump(kRho, kE, kUp), sigma = kE * std::log1p(e), Us = kUp / -e;
+  const Plateau pl = plateau(r.state.particles, c.end, kUp, Us);
+  EXPECT_NEAR(pl.velocity, kUp, 0.01 * kUp);
+  EXPECT_NEAR(pl.stress, sigma, 0.01 * std::abs(sigma));
+  EXPECT_NEAR(r.momentum_final, r.boundary_impulse, 1e-9 * r.momentum_final);
+}
+
+// The bar driven from its right end: the mirror image (velocity -u_p, the same stress).
+TEST(C1, PistonOnTheRightFacePushesTowardsMinusX) {
+  const auto left = test::run(test::deck(test::example("C1_piston_elastic_1d.toml")));
+  const auto c = test::deck_with(test::example("C1_piston_elastic_1d.toml"), [](toml::table& t) {
+    auto& b = *t["boundary"].as_table();
+    b.erase("left");
+    b.insert_or_assign("right", toml::table{{"type", "piston"}, {"velocity", kUp}});
+  });
+  const auto right = test::run(c);
+  const auto& a = left.state.particles;
+  const auto& b = right.state.particles;
+  ASSERT_EQ(a.size(), b.size());
+  const std::size_t n = a.size();
+  double worst = 0.0;  // point q from the left against point n-1-q from the right
+  for (std::size_t q = 0; q < n; ++q) {
+    worst = std::max(worst, std::abs(a.v[0][q] + b.v[0][n - 1 - q]));
+    worst = std::max(worst, std::abs(a.stress[0][q] - b.stress[0][n - 1 - q]) / 23.34);
+  }
+  EXPECT_LT(worst, 1e-9);
+}
+
+// A 2-D piston gives the same bits on one thread and on two.
+TEST(C1, PistonIn2dIsTheSameOnOneAndTwoThreads) {
+  const auto c = test::deck_with(test::example("C1_piston_elastic_2d.toml"), [](toml::table& t) {
+    t["time"].as_table()->insert_or_assign("end", 1.0);
+    t["output"].as_table()->insert_or_assign("times", toml::array{1.0});
+  });
+  test::same_on_one_and_two_threads<2>(c, false);
 }
 
 // Mie-Gruneisen copper (N6's constants: c0 3.94, s 1.49): the front's speed from its
