@@ -182,6 +182,10 @@ TEST(GaugeDeck, UnknownBodyIsRefusedWithTheNames) {
              "no [[body]] is called tagret: the deck's are flyer, target");
 }
 
+TEST(GaugeDeck, BodyNamesAreUnique) {
+  EXPECT_HAS(deck_error(replace(kPlate2d, "name = \"target\"", "name = \"flyer\"")), "body 1 is called flyer too");
+}
+
 TEST(GaugeDeck, SeveralBodiesNeedTheBodyNamed) {
   EXPECT_HAS(deck_error(replace(kPlate2d, "body = \"target\"\n", "")), "says whose face it is");
 }

@@ -265,8 +265,12 @@ void read_particles(Section& root, MpmConfig& c) {
 void read_bodies(Section& root, MpmConfig& c, const std::string& deck_dir) {
   const int dim = c.dim;
   if (dim > 1)
-    for (auto& b : root.tables("body"))
+    for (auto& b : root.tables("body")) {
       c.bodies.push_back(read_body(b, dim, material_context(dim, deck_dir, c.units), c.bodies.size() + 1));
+      const std::string& name = c.bodies.back().name;  // what a gauge calls it: one body's
+      for (std::size_t k = 0; !name.empty() && k + 1 < c.bodies.size(); ++k)
+        if (c.bodies[k].name == name) b.check(false, "name", fmt::format("body {} is called {} too", k + 1, name));
+    }
   else if (root.has("body"))
     root.check(false, "body", "1-D decks fill the grid; [[body]] regions are for 2-D and 3-D");
 }
