@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "cli_util.hpp"
 #include "mpmx/app/mpm/deck.hpp"
 #include "mpmx/core/error.hpp"
 
@@ -197,4 +198,16 @@ TEST(GaugeDeck, NamesAreFileNamesAndUnique) {
 
 TEST(GaugeDeck, UnknownKeyIsRefused) {
   EXPECT_HAS(deck_error(replace(kPlate2d, "every = 10", "evry = 10")), "unknown key 'gauge");
+}
+
+TEST(PistonGaugeCheck, CheckDescribesThePistonAndTheGauges) {
+  const auto piston = mpmx::test::run_cli(std::string("check ") + MPMX_SOURCE_DIR + "/examples/C1_piston_elastic_1d.toml");
+  EXPECT_EQ(piston.status, 0) << piston.output;
+  EXPECT_HAS(piston.output, "piston on left: moves at 0.5 into the grid; its face is 3 in at time.end");
+  const auto gauges = mpmx::test::run_cli(std::string("check ") + MPMX_SOURCE_DIR + "/examples/C2_plate_impact_gauges.toml");
+  EXPECT_EQ(gauges.status, 0) << gauges.output;
+  EXPECT_HAS(gauges.output, "gauge target_mid: the material point nearest [4.5, 0.03]");
+  EXPECT_HAS(gauges.output, "-> gauge_target_mid.csv");
+  EXPECT_HAS(gauges.output, "gauge rear_surface: free-surface velocity: the mean of the outermost points of target's "
+                            "x_upper face, every 1 step -> gauge_rear_surface.csv");
 }
