@@ -90,7 +90,8 @@ TEST(GuideKeys, EveryContinuumKeyHasARow) {
         "material.md.share.enabled", "material.md.share.tolerance", "material.md.share.audit",
         "material.potential.epsilon", "material.potential.cutoff", "material.potential.mass",
         "material.potential.sigma", "material.potential.shift", "material.potential.a", "material.potential.c",
-        "material.potential.n", "material.potential.m", "body.remove", "body.angular_velocity"})
+        "material.potential.n", "material.potential.m", "body.remove", "body.angular_velocity", "boundary.<face>.times",
+        "output.xt", "output.xt_every", "gauge.every"})
     keys.insert(k);
 
   std::ostringstream missing;

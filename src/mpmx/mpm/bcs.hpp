@@ -1,21 +1,26 @@
 #pragma once
 // Boundary conditions on the faces of the grid: free, fixed, a prescribed velocity
 // v(t) = value + amplitude sin(omega t) (a vector; the drive of ADMPM 8.2 and 7.7), or
-// roller (normal velocity zero, tangential free: the y faces of the copper jet).
+// roller (normal velocity zero, tangential free: the y faces of the copper jet), or a
+// piston (piston.hpp: a wall moving into the grid, holding the nodes behind it).
 #include <array>
 #include <cmath>
 #include <string>
 
+#include "mpmx/mpm/piston.hpp"
+
 namespace mpmx::mpm {
 
 struct BoundarySide {
-  enum class Type { free, fixed, velocity, roller };
+  enum class Type { free, fixed, velocity, roller, piston };
   Type type = Type::free;
   std::array<double, 3> value{};
   std::array<double, 3> amplitude{};
   double omega = 0.0;
+  Piston piston;
 
-  bool prescribed() const { return type != Type::free; }
+  // Whether the face's own nodes take a set velocity (a piston's nodes follow its face).
+  bool prescribed() const { return type != Type::free && type != Type::piston; }
   // Component `a` of the prescribed velocity (fixed: zero).
   double velocity(double t, int a = 0) const {
     return type == Type::velocity ? value[a] + amplitude[a] * std::sin(omega * t) : 0.0;

@@ -27,7 +27,12 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
                    int threads) {
   const int w = st.width;
   const std::size_t n = p.size();
-  // Node i's velocity from the points' momenta, or its face's at t where one holds it.
+  // Node i's velocity from the points' momenta, or its face's at t where one holds it, or
+  // raised to a piston's where the node's support reaches behind its face (piston.hpp).
+  std::array<int, 2 * Dim> reach{};
+  for (int f = 0; f < 2 * Dim; ++f)
+    if (bc.face[f].type == BoundarySide::Type::piston)
+      reach[f] = piston_reach(bc.face[f].piston, f, g.dx[f / 2], g.cells[f / 2], t);
   auto node_velocity = [&](std::size_t i, const std::array<int, Dim>& idx) {
     const double m = g.mass[i];
     for (int a = 0; a < Dim; ++a) {
@@ -41,6 +46,11 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
         }
       }
       v[a][i] = vi;
+    }
+    for (int f = 0; f < 2 * Dim; ++f) {
+      const BoundarySide& side = bc.face[f];
+      if (side.type == BoundarySide::Type::piston && piston_holds(f, idx[f / 2], reach[f]))
+        v[f / 2][i] = piston_velocity(v[f / 2][i], f, side.piston.speed(t));
     }
   };
   auto scatter = [&](const std::uint32_t* list, std::size_t count) {

@@ -16,6 +16,7 @@
 #include "mpmx/io/checked_file.hpp"
 #include "mpmx/core/ranks.hpp"
 #include "mpmx/app/mpm/deck.hpp"
+#include "mpmx/app/mpm/describe.hpp"
 #include "mpmx/app/mpm/preflight.hpp"
 #include "mpmx/app/mpm/run.hpp"
 #include "mpmx/app/mpm/unit_slips.hpp"
@@ -87,6 +88,7 @@ void check_continuum(const std::string& deck, bool force, int ranks) {
   if (budget.md_atom_steps > 0)
     fmt::print("  each box keeps {:.0f} bytes per atom between macro steps (its atoms and its neighbour list)\n",
                budget.md_bytes_per_atom);
+  for (const std::string& line : describe_pistons_and_gauges(cfg)) fmt::print("  {}\n", line);
   if (!pre.pending.empty()) fmt::print("  {}\n", pre.pending);
   for (const std::string& slip : unit_slips(cfg)) fmt::print("  warning: {}\n", slip);
   if (!(budget.seconds <= kWorkLimitSeconds) && !force)

@@ -45,6 +45,7 @@ struct MaterialConfig {
 struct Body {
   enum class Shape { box, circle, sphere, polygon };
   Shape shape = Shape::box;
+  std::string name;                         // what a [[gauge]] calls it ("": none)
   bool remove = false;
   std::array<double, 3> lower{}, upper{};   // box; a polygon's bounding box
   std::array<double, 3> center{};           // circle, sphere
@@ -54,6 +55,20 @@ struct Body {
   double angular_velocity = 0.0;            // 2-D: a rigid spin about `center` (circle)
   std::shared_ptr<const material::Model> material;  // its own [body.material]; null: the deck's
   bool contains(const std::array<double, 3>& x, int dim) const;
+};
+
+// A [[gauge]]: the history of one material point (the nearest to `at` at the start,
+// followed through the run), or of the outermost points of a body's face (their mean: a
+// free-surface velocity, what a VISAR measures). Written every `every` steps to
+// gauge_<name>.csv (app/mpm/gauges.hpp).
+struct GaugeConfig {
+  enum class Kind { point, free_surface };
+  Kind kind = Kind::point;
+  std::string name;
+  std::array<double, 3> at{};  // point
+  int body = -1;               // free_surface: the body's index (-1: every point of the deck)
+  int face = 1;                // free_surface: x_lower, x_upper, y_lower, ... (mpm::face_name)
+  std::int64_t every = 1;
 };
 
 struct ReferenceConfig {
@@ -116,6 +131,13 @@ struct MpmConfig {
   std::int64_t output_every = 0;   // 0 = only output_times and the last step
   bool write_nodes = true, write_particles = true, plot = true;
   bool write_vtk = true;             // 2-D, 3-D: VTK files for ParaView
+  // xt_sigma_xx.csv (app/mpm/xt_diagram.hpp) every xt_every steps (0: about 400 rows over
+  // the run): on by default where the deck has a piston or a gauge and is 1-D or
+  // quasi-1-D (every axis but x at most 8 cells)
+  bool write_xt = false;
+  std::int64_t xt_every = 0;
+  // [[gauge]]
+  std::vector<GaugeConfig> gauges;
   // [reference]
   ReferenceConfig reference;
   ManufacturedConfig manufactured;

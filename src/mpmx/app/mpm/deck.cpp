@@ -1,6 +1,7 @@
 #include "mpmx/app/mpm/deck.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -82,16 +83,51 @@ Profile read_profile(Section s, double fallback, const MpmConfig& c) {
   return p;
 }
 
-// A face's condition: free, fixed, roller (normal velocity zero) or a velocity
-// value + amplitude sin(omega t), a number in 1-D and a vector in 2-D/3-D.
-BoundarySide read_side(Section s, int dim) {
+// A piston's speed into the grid (piston.hpp): `velocity` a number, or with `times` one
+// speed per time, the times increasing from t >= 0.
+Piston read_piston(Section& s) {
+  Piston p;
+  if (!s.has("times")) {
+    p.speeds = {s.number("velocity")};
+    return p;
+  }
+  const auto t = s.numbers("times");
+  const auto v = s.numbers("velocity");
+  s.check(!t.empty() && t.size() == v.size(), "velocity",
+          fmt::format("needs one speed per entry of times ({} times, {} speeds)", t.size(), v.size()));
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (k == 0) s.check(t[0] >= 0.0, "times", fmt::format("starts at t = {}: a piston's history starts at t >= 0", t[0]));
+    else if (!(t[k] > t[k - 1]))
+      s.check(false, "times",
+              fmt::format("must increase: times[{}] = {} does not follow times[{}] = {}", k, t[k], k - 1, t[k - 1]));
+  }
+  if (t.empty() || t.size() != v.size()) return p;
+  p.times = t;
+  p.speeds = v;
+  return p;
+}
+
+// A face's condition: free, fixed, roller (normal velocity zero), a velocity
+// value + amplitude sin(omega t) (a number in 1-D and a vector in 2-D/3-D) or a piston.
+// `length`: the grid's extent along the face's axis; `end`: time.end.
+BoundarySide read_side(Section s, int dim, double length, double end) {
   BoundarySide b;
   if (!s.present()) return b;
-  const std::string type = s.choice("type", {"free", "fixed", "velocity", "roller"}, "free");
-  b.type = type == "free"    ? BoundarySide::Type::free
-           : type == "fixed" ? BoundarySide::Type::fixed
+  const std::string type = s.choice("type", {"free", "fixed", "velocity", "roller", "piston"}, "free");
+  b.type = type == "free"     ? BoundarySide::Type::free
+           : type == "fixed"  ? BoundarySide::Type::fixed
            : type == "roller" ? BoundarySide::Type::roller
+           : type == "piston" ? BoundarySide::Type::piston
                               : BoundarySide::Type::velocity;
+  if (b.type == BoundarySide::Type::piston) {
+    b.piston = read_piston(s);
+    double most = 0.0;  // the farthest the face gets: at a time of the table or at the end
+    for (double t : b.piston.times) most = std::max(most, b.piston.travel(std::min(std::max(t, 0.0), end)));
+    most = std::max(most, b.piston.travel(end));
+    s.check(!(most >= length), "velocity",
+            fmt::format("moves the piston {:.6g} into the grid by time.end = {}: past its far side, {:.6g} away", most,
+                        end, length));
+  }
   if (type == "roller" && dim == 1)
     s.check(false, "type", "a roller holds the normal velocity only: in 1-D use fixed");
   if (b.type == BoundarySide::Type::velocity) {
@@ -137,6 +173,7 @@ Body read_body(Section s, int dim, const material::Context& ctx, std::size_t num
   b.shape = shape == "box" ? Body::Shape::box : shape == "circle" ? Body::Shape::circle
             : shape == "sphere" ? Body::Shape::sphere : Body::Shape::polygon;
   b.remove = s.boolean("remove", false);
+  b.name = s.string("name", "");
   if (b.shape == Body::Shape::box) {
     b.lower = read_vector(s, "lower", dim, {}, true);
     b.upper = read_vector(s, "upper", dim, {}, true);
@@ -228,8 +265,12 @@ void read_particles(Section& root, MpmConfig& c) {
 void read_bodies(Section& root, MpmConfig& c, const std::string& deck_dir) {
   const int dim = c.dim;
   if (dim > 1)
-    for (auto& b : root.tables("body"))
+    for (auto& b : root.tables("body")) {
       c.bodies.push_back(read_body(b, dim, material_context(dim, deck_dir, c.units), c.bodies.size() + 1));
+      const std::string& name = c.bodies.back().name;  // what a gauge calls it: one body's
+      for (std::size_t k = 0; !name.empty() && k + 1 < c.bodies.size(); ++k)
+        if (c.bodies[k].name == name) b.check(false, "name", fmt::format("body {} is called {} too", k + 1, name));
+    }
   else if (root.has("body"))
     root.check(false, "body", "1-D decks fill the grid; [[body]] regions are for 2-D and 3-D");
 }
@@ -326,10 +367,75 @@ void read_boundary(Section& root, MpmConfig& c) {
   const int dim = c.dim;
   Section b = root.optional_table("boundary");
   if (dim == 1) {
-    c.boundary.left() = read_side(b.optional_table("left"), 1);
-    c.boundary.right() = read_side(b.optional_table("right"), 1);
+    c.boundary.left() = read_side(b.optional_table("left"), 1, c.upper - c.lower, c.end);
+    c.boundary.right() = read_side(b.optional_table("right"), 1, c.upper - c.lower, c.end);
   } else {
-    for (int f = 0; f < 2 * dim; ++f) c.boundary.face[f] = read_side(b.optional_table(mpm::face_name(f)), dim);
+    for (int f = 0; f < 2 * dim; ++f)
+      c.boundary.face[f] = read_side(b.optional_table(mpm::face_name(f)), dim,
+                                     c.upper_all[f / 2] - c.lower_all[f / 2], c.end);
+  }
+}
+
+// [[gauge]]: a point's history (`at`, inside the material) or a body face's free-surface
+// velocity (`type = "free_surface"`, `body` by its name, `face`).
+void read_gauges(Section& root, MpmConfig& c) {
+  const int dim = c.dim;
+  std::vector<std::string> faces = {"left", "right"};  // the x faces, as 1-D decks call them
+  for (int f = 0; f < 2 * dim; ++f) faces.push_back(mpm::face_name(f));
+  for (auto& s : root.tables("gauge")) {
+    GaugeConfig g;
+    g.name = s.string("name", fmt::format("{}", c.gauges.size() + 1));
+    const bool plain = !g.name.empty() && std::all_of(g.name.begin(), g.name.end(), [](char ch) {
+      return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
+    });
+    s.check(plain, "name", "names the file gauge_<name>.csv: letters, digits, _ and - only");
+    for (const auto& other : c.gauges)
+      if (other.name == g.name) s.check(false, "name", fmt::format("another [[gauge]] is called {}", g.name));
+    g.every = s.integer("every", 1, 1, std::numeric_limits<std::int64_t>::max());
+    g.kind = s.choice("type", {"point", "free_surface"}, "point") == "point" ? GaugeConfig::Kind::point
+                                                                             : GaugeConfig::Kind::free_surface;
+    if (g.kind == GaugeConfig::Kind::point) {
+      if (dim == 1) g.at[0] = s.number("at");
+      else g.at = read_vector(s, "at", dim, {}, true);
+      // It follows the point nearest `at`: `at` must lie in the material, not beside it.
+      bool inside = true;
+      for (int d = 0; d < dim; ++d) inside = inside && g.at[d] >= c.lower_all[d] && g.at[d] <= c.upper_all[d];
+      if (inside && !c.bodies.empty()) {
+        bool added = false, removed = false;
+        for (const auto& b : c.bodies) {
+          if (!b.contains(g.at, dim)) continue;
+          (b.remove ? removed : added) = true;
+        }
+        inside = added && !removed;
+      }
+      if (!inside) {
+        std::vector<double> at(g.at.begin(), g.at.begin() + dim);
+        s.check(false, "at",
+                fmt::format("[{}] lies outside the material ({}): a gauge follows the material point nearest it",
+                            fmt::join(at, ", "), c.bodies.empty() ? "the grid" : "every [[body]]"));
+      }
+    } else {
+      const std::string face = s.choice("face", faces);
+      g.face = face == "left" ? 0 : face == "right" ? 1
+                                                    : static_cast<int>(std::find(faces.begin() + 2, faces.end(), face) -
+                                                                       faces.begin() - 2);
+      if (s.has("body")) {
+        const std::string body = s.string("body");
+        std::vector<std::string> names;
+        for (std::size_t b = 0; b < c.bodies.size(); ++b) {
+          if (c.bodies[b].remove || c.bodies[b].name.empty()) continue;
+          names.push_back(c.bodies[b].name);
+          if (c.bodies[b].name == body) g.body = static_cast<int>(b);
+        }
+        if (g.body < 0)
+          s.check(false, "body",
+                  names.empty() ? std::string("names a [[body]] by its name, and no body has one (name = \"...\")")
+                                : fmt::format("no [[body]] is called {}: the deck's are {}", body, fmt::join(names, ", ")));
+      } else if (c.bodies.size() > 1) {
+        s.check(false, "body", "a deck of several bodies says whose face it is: body = \"<its name>\"");
+      }
+    }
+    c.gauges.push_back(g);
   }
 }
 
@@ -392,6 +498,13 @@ void read_output(Section& root, MpmConfig& c) {
   c.write_particles = o.boolean("particles", true);
   c.plot = o.boolean("plot", true);
   c.write_vtk = o.boolean("vtk", dim > 1);
+  // The x-t diagram by default where a shock user looks for it: a 1-D or quasi-1-D deck
+  // with a piston or a gauge (other runs ask for it: its table is cells x 400 numbers).
+  bool quasi_1d = true, shock = !c.gauges.empty();
+  for (int d = 1; d < dim; ++d) quasi_1d = quasi_1d && c.cells_all[d] <= 8;
+  for (const auto& side : c.boundary.face) shock = shock || side.type == BoundarySide::Type::piston;
+  c.write_xt = o.boolean("xt", quasi_1d && shock);
+  c.xt_every = o.integer("xt_every", 0, 0, std::numeric_limits<std::int64_t>::max());
 }
 
 // [manufactured]: the solution that drives the run (VALIDATION.md N4).
@@ -468,6 +581,9 @@ void check_time_step(Section& t, MpmConfig& c, double cfl_limit) {
       for (int d = 0; d < dim; ++d) v2 += body.velocity[d] * body.velocity[d];
       vmax = std::max(vmax, std::sqrt(v2) + std::abs(body.angular_velocity) * body.radius);
     }
+    for (int f = 0; f < 2 * dim; ++f)  // a piston moves its nodes at its speed
+      if (c.boundary.face[f].type == BoundarySide::Type::piston)
+        for (double v : c.boundary.face[f].piston.speeds) vmax = std::max(vmax, std::abs(v));
     cs_max += vmax;
     const double limit = cfl_limit * dx_min / cs_max;
     if (c.cfl_dt) c.dt = c.cfl * dx_min / cs_max;  // the first step's; later ones follow the state
@@ -504,10 +620,11 @@ MpmConfig read(Deck& deck) {
   read_materials(root, c, deck_dir);
   Section in = root.optional_table("initial");
   read_initial(in, c);
-  read_boundary(root, c);
   read_viscosity(root, c);
   Section t = root.table("time");
   const double cfl_limit = read_time(t, c);
+  read_boundary(root, c);  // after [time]: a piston's travel is checked against time.end
+  read_gauges(root, c);
   read_output(root, c);
   read_manufactured(root, in, c);
   read_reference(root, c, deck_dir);

@@ -44,6 +44,8 @@ Output::Output(const std::string& dir, bool nodes, bool particles, Marks resume)
 Output::~Output() {
   for (std::FILE* f : {nodes_, particles_, energy_, front_})
     if (f) std::fclose(f);
+  for (auto& [name, f] : tables_)
+    if (f) std::fclose(f);
 }
 
 std::FILE* Output::open(const std::string& name, const char* header) {
@@ -74,7 +76,9 @@ void Output::emit(std::FILE* f, std::string_view bytes, bool flush) {
 }
 
 void Output::close() {
-  for (std::FILE** f : {&nodes_, &particles_, &energy_, &front_}) {
+  std::vector<std::FILE**> files = {&nodes_, &particles_, &energy_, &front_};
+  for (auto& [name, f] : tables_) files.push_back(&f);
+  for (std::FILE** f : files) {
     if (!*f) continue;
     const std::string name = names_[*f];
     const bool ok = std::fflush(*f) == 0 && !std::ferror(*f);
@@ -151,6 +155,18 @@ void Output::front(double t, double x, double ref_x) {
   emit(front_, {buf_.data(), buf_.size()}, true);
 }
 
+void Output::row(const std::string& table, std::string_view header, const std::vector<double>& values) {
+  std::FILE*& f = tables_[table];
+  if (!f) f = open(table, std::string(header).c_str());
+  buf_.clear();
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (k) buf_.push_back(',');
+    put(buf_, values[k], 12);
+  }
+  buf_.push_back('\n');
+  emit(f, {buf_.data(), buf_.size()});
+}
+
 Output::Marks Output::marks() {
   // A table this process has not opened yet (a resumed run stopped again before its next
   // record) keeps the length its checkpoint gave it: left out, the next resume would start
@@ -160,6 +176,10 @@ Output::Marks Output::marks() {
       {"nodes.csv", nodes_}, {"particles.csv", particles_}, {"energy.csv", energy_}, {"front.csv", front_}};
   for (const auto& [name, f] : files) {
     if (!f) continue;
+    emit(f, {}, true);
+    m[name] = static_cast<std::int64_t>(std::ftell(f));
+  }
+  for (const auto& [name, f] : tables_) {
     emit(f, {}, true);
     m[name] = static_cast<std::int64_t>(std::ftell(f));
   }

@@ -36,6 +36,9 @@ class Output {
   void energy(std::int64_t step, double t, double kinetic, double internal, double momentum,
               double boundary_impulse, double ref_total);
   void front(double t, double x, double ref_x);
+  // A row of numbers to the table `table` (opened with `header`, a line, on its first row):
+  // the gauges' histories (gauges.hpp).
+  void row(const std::string& table, std::string_view header, const std::vector<double>& values);
   // Flushes every table and returns their lengths.
   Marks marks();
   // Closes every table; SystemError when the last bytes could not be written.
@@ -51,6 +54,7 @@ class Output {
   std::FILE* particles_ = nullptr;
   std::FILE* energy_ = nullptr;
   std::FILE* front_ = nullptr;
+  std::map<std::string, std::FILE*> tables_;  // row()'s, by name
   bool want_nodes_, want_particles_;
   Marks resume_;
   fmt::memory_buffer buf_;  // one record's rows, written at once

@@ -13,11 +13,13 @@
 #include "mpmx/app/mpm/checkpoint.hpp"
 #include "mpmx/app/mpm/comparison.hpp"
 #include "mpmx/app/mpm/convergence.hpp"
+#include "mpmx/app/mpm/gauges.hpp"
 #include "mpmx/app/mpm/output.hpp"
 #include "mpmx/app/mpm/run_checkpoint.hpp"
 #include "mpmx/app/mpm/run_summary.hpp"
 #include "mpmx/app/mpm/setup.hpp"
 #include "mpmx/app/mpm/vtk_output.hpp"
+#include "mpmx/app/mpm/xt_diagram.hpp"
 #include "mpmx/app/run_folder.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/interrupt.hpp"
@@ -75,6 +77,7 @@ class ContinuumRun {
       if (InterruptGuard::interrupted())
         throw Interrupted("while the run was being set up: nothing was written; start the run again");
     }
+    gauges_ = std::make_unique<Gauges<Dim>>(c, s_, o.out_dir.empty());  // from the initial state
     const material::Subscale* sub = s_.material->subscale();
     r.threads = sub ? sub->threads() : 1;
     rec_.set("version", MPMX_VERSION);
@@ -96,6 +99,7 @@ class ContinuumRun {
       std::filesystem::create_directories(folder_.dir);
       out_ = std::make_unique<Output>(folder_.dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles, marks);
       if (c.write_vtk) vtk_ = std::make_unique<VtkOutput<Dim>>(folder_.dir, o.resume ? s_.time : -1.0);
+      if (c.write_xt) xt_ = std::make_unique<XtDiagram<Dim>>(c, s_.grid);
     });
   }
 
@@ -110,10 +114,14 @@ class ContinuumRun {
       if (!o_.resume) {
         record();
         observe();
+        gauges_->sample(s_, out_.get());
+        if (xt_) xt_->sample(s_, *out_);
       }
       for (std::int64_t n = s_.step + 1; !done(n); ++n) {
         const bool at_record_time = advance(n);
         check_finite(s_);
+        gauges_->sample(s_, out_.get());
+        if (xt_) xt_->sample(s_, *out_);
         const bool last = c_.cfl_dt ? !(s_.time < c_.end) : n == schedule_.steps;
         if (schedule_.compare_steps.count(n) && comparison_) comparison_->compare(s_, book_);
         if (due_record(n, at_record_time)) record();
@@ -272,6 +280,7 @@ class ContinuumRun {
                  c_.id, r_.energy_growth, c_.energy_growth);
     if (comparison_) comparison_->finish(book_);
     r_.errors = book_.errors;
+    r_.gauges = gauges_->traces();
     r_.front_speed = book_.front_speed;
     record_run(c_, r_, failure_, checkpoint_path(o_.out_dir), rec_);
     if (!o_.out_dir.empty() && ranks::root()) {
@@ -315,14 +324,16 @@ class ContinuumRun {
   }
 
   void plot() const {
-    if (!(Dim == 1 || (Dim == 2 && vtk_)) || !io::matplotlib_present()) return;
+    if (!io::matplotlib_present()) return;
     if (Dim == 1) io::run_plot_script("mpmx_plot.py", fmt::format("--quiet '{}'", o_.out_dir));
-    else
+    else if (Dim == 2 && vtk_)
       // Frames over the run (first, peak, last): the last record alone can mislead, e.g.
       // two disks after their rebound show only their ringing.
       io::run_plot_script("points2d.py", fmt::format("'{}/particles.pvd' --field stress --component xx --frames 4 "
                                                      "--out '{}/stress_xx.png' >/dev/null",
                                                      o_.out_dir, o_.out_dir));
+    // The gauges' histories and the x-t diagram (figures/gauges.png, xt_sigma_xx.png).
+    if (!c_.gauges.empty() || xt_) io::run_plot_script("gauges.py", fmt::format("--quiet '{}'", o_.out_dir));
   }
 
   const MpmConfig& c_;
@@ -337,6 +348,8 @@ class ContinuumRun {
   RunCarry carry_;
   std::unique_ptr<Output> out_;
   std::unique_ptr<VtkOutput<Dim>> vtk_;
+  std::unique_ptr<Gauges<Dim>> gauges_;
+  std::unique_ptr<XtDiagram<Dim>> xt_;
   std::string failure_;
   std::chrono::steady_clock::time_point t0_;
   double last_checkpoint_ = 0.0;

@@ -11,6 +11,7 @@
 #include "mpmx/io/staged_dir.hpp"
 #include "mpmx/app/mpm/comparison.hpp"
 #include "mpmx/app/mpm/config.hpp"
+#include "mpmx/app/mpm/gauges.hpp"
 #include "mpmx/app/run_folder.hpp"
 #include "mpmx/mpm/state.hpp"
 
@@ -62,6 +63,9 @@ struct RunResultOf {
   // energy account. Past time.energy_growth the run's status is "energy_growth".
   double energy_growth = std::nan("");
   bool energy_grew = false;
+  // The [[gauge]]s' histories: their rows where the run wrote no folder (the tables
+  // gauge_<name>.csv hold them otherwise).
+  std::vector<GaugeTrace> gauges;
   mpm::State<Dim> state;                      // the final state
   double energy_error() const { return std::abs(kinetic_final - kinetic_initial + stress_work - boundary_work); }
   double momentum_error() const {

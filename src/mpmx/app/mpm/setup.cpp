@@ -33,6 +33,41 @@ reference::AxisAligned manufactured_solution(const MpmConfig& c, int dim) {
 
 }  // namespace
 
+PlacedPoints placed_points(const MpmConfig& c) {
+  PlacedPoints r;
+  auto& at = r.at;
+  auto& owner = r.owner;
+  place_points(c, [&](const std::array<double, 3>& x, int body) {
+    at.push_back(x);
+    owner.push_back(body);
+  });
+  if (at.empty()) throw InputError("no material points: no [[body]] region holds a point centre of the grid");
+
+  // The laws in play: the deck's [material] first, then each body's own. Points are
+  // ordered by law (stable, so a one-law deck keeps the grid order) and each law gets
+  // its block (material/composite.hpp).
+  auto& laws = r.laws;
+  laws = {c.material.spec.get()};
+  std::vector<int> law(at.size(), 0);
+  for (std::size_t q = 0; q < at.size(); ++q) {
+    const int b = owner[q];
+    if (b < 0 || !c.bodies[b].material) continue;
+    const material::Model* m = c.bodies[b].material.get();
+    auto it = std::find(laws.begin(), laws.end(), m);
+    if (it == laws.end()) it = laws.insert(laws.end(), m);
+    law[q] = static_cast<int>(it - laws.begin());
+  }
+  std::vector<std::size_t> order(at.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return law[a] < law[b]; });
+  std::vector<std::array<double, 3>> at2(at.size());
+  std::vector<int> owner2(at.size()), law2(at.size());
+  for (std::size_t k = 0; k < order.size(); ++k) at2[k] = at[order[k]], owner2[k] = owner[order[k]], law2[k] = law[order[k]];
+  at.swap(at2), owner.swap(owner2);
+  r.law.swap(law2);
+  return r;
+}
+
 template <int Dim>
 State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads) {
   State<Dim> s;
@@ -47,38 +82,13 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
   s.viscosity = c.viscosity;
   s.boundary = c.boundary;
 
-  std::vector<std::array<double, 3>> at;
-  std::vector<int> owner;
   std::array<double, Dim> l;
   for (int d = 0; d < Dim; ++d) l[d] = s.grid.dx[d] / c.per_cell_all[d];
-  place_points(c, [&](const std::array<double, 3>& x, int body) {
-    at.push_back(x);
-    owner.push_back(body);
-  });
-  if (at.empty()) throw InputError("no material points: no [[body]] region holds a point centre of the grid");
-
-  // The laws in play: the deck's [material] first, then each body's own. Points are
-  // ordered by law (stable, so a one-law deck keeps the grid order) and each law gets
-  // its block (material/composite.hpp).
-  std::vector<const material::Model*> laws{c.material.spec.get()};
-  std::vector<int> law(at.size(), 0);
-  for (std::size_t q = 0; q < at.size(); ++q) {
-    const int b = owner[q];
-    if (b < 0 || !c.bodies[b].material) continue;
-    const material::Model* m = c.bodies[b].material.get();
-    auto it = std::find(laws.begin(), laws.end(), m);
-    if (it == laws.end()) it = laws.insert(laws.end(), m);
-    law[q] = static_cast<int>(it - laws.begin());
-  }
-  {
-    std::vector<std::size_t> order(at.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return law[a] < law[b]; });
-    std::vector<std::array<double, 3>> at2(at.size());
-    std::vector<int> owner2(at.size()), law2(at.size());
-    for (std::size_t k = 0; k < order.size(); ++k) at2[k] = at[order[k]], owner2[k] = owner[order[k]], law2[k] = law[order[k]];
-    at.swap(at2), owner.swap(owner2), law.swap(law2);
-  }
+  PlacedPoints placed = placed_points(c);
+  auto& at = placed.at;
+  const auto& owner = placed.owner;
+  const auto& law = placed.law;
+  const auto& laws = placed.laws;
   if (law.front() == law.back()) {
     s.material = material::make<Dim>(*laws[law.front()]);
   } else {

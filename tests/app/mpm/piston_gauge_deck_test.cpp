@@ -1,0 +1,213 @@
+// ctest-cost: 1
+// The piston's and the gauges' deck keys: a good deck reads into the config, and each
+// bad one is refused naming the key, the value and the reason (a program of its own, so
+// that it builds without the whole unit program).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cli_util.hpp"
+#include "mpmx/app/mpm/deck.hpp"
+#include "mpmx/core/error.hpp"
+
+namespace {
+
+const char* kPiston1d = R"(
+[case]
+id = "T"
+[grid]
+upper = 10.0
+cells = 100
+[particles]
+per_cell = 2
+[scheme]
+name = "ddmp"
+[material]
+model = "linear_elastic"
+youngs_modulus = 233.0
+density = 8.9
+[boundary]
+left = { type = "piston", velocity = 0.5 }
+[[gauge]]
+at = 5.0
+[time]
+dt = 1e-2
+end = 1.0
+)";
+
+const char* kPlate2d = R"(
+[case]
+id = "T2"
+[grid]
+dim = 2
+lower = [0.0, 0.0]
+upper = [12.0, 0.1]
+cells = [120, 1]
+[particles]
+per_cell = [2, 1]
+[[body]]
+name = "flyer"
+shape = "box"
+lower = [0.0, 0.0]
+upper = [3.0, 0.1]
+velocity = [1.0, 0.0]
+[[body]]
+name = "target"
+shape = "box"
+lower = [3.0, 0.0]
+upper = [9.0, 0.1]
+[scheme]
+name = "cpdi"
+[material]
+model = "linear_elastic"
+youngs_modulus = 70.0
+density = 2.7
+[[gauge]]
+name = "mid"
+at = [4.5, 0.05]
+[[gauge]]
+name = "rear"
+type = "free_surface"
+body = "target"
+face = "x_upper"
+every = 10
+[time]
+dt = 1e-3
+end = 0.1
+)";
+
+std::string deck_error(const std::string& text) {
+  try {
+    mpmx::app::read_mpm_deck_text(text, "t.toml");
+  } catch (const mpmx::InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return s.replace(at, from.size(), to);
+}
+
+#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
+
+}  // namespace
+
+TEST(PistonDeck, ConstantSpeedReads) {
+  const auto c = mpmx::app::read_mpm_deck_text(kPiston1d);
+  const auto& left = c.boundary.left();
+  EXPECT_EQ(left.type, mpmx::mpm::BoundarySide::Type::piston);
+  EXPECT_FALSE(left.prescribed());
+  EXPECT_EQ(left.piston.speed(0.3), 0.5);
+  EXPECT_DOUBLE_EQ(left.piston.travel(0.8), 0.4);
+}
+
+TEST(PistonDeck, VelocityHistoryIsATableJoinedByLines) {
+  const auto c = mpmx::app::read_mpm_deck_text(
+      replace(kPiston1d, "velocity = 0.5 }", "times = [0.0, 0.2, 0.6], velocity = [0.0, 1.0, 1.0] }"));
+  const auto& p = c.boundary.left().piston;
+  EXPECT_DOUBLE_EQ(p.speed(0.1), 0.5);
+  EXPECT_DOUBLE_EQ(p.speed(0.9), 1.0);                   // held past the table's end
+  EXPECT_DOUBLE_EQ(p.travel(0.2), 0.1);                  // the ramp's area
+  EXPECT_DOUBLE_EQ(p.travel(0.8), 0.1 + 0.6);            // then 1.0 for 0.6
+  EXPECT_DOUBLE_EQ(p.travel(0.1), 0.5 * 0.1 * 0.5);      // half-way up the ramp
+}
+
+TEST(PistonDeck, TimesNotIncreasingAreRefused) {
+  const std::string e = deck_error(
+      replace(kPiston1d, "velocity = 0.5 }", "times = [0.0, 0.3, 0.3], velocity = [0.0, 1.0, 1.0] }"));
+  EXPECT_HAS(e, "boundary.left.times");
+  EXPECT_HAS(e, "must increase: times[2] = 0.3 does not follow times[1] = 0.3");
+}
+
+TEST(PistonDeck, OneSpeedPerTime) {
+  const std::string e =
+      deck_error(replace(kPiston1d, "velocity = 0.5 }", "times = [0.0, 0.3], velocity = [0.0, 1.0, 1.0] }"));
+  EXPECT_HAS(e, "boundary.left.velocity");
+  EXPECT_HAS(e, "one speed per entry of times (2 times, 3 speeds)");
+}
+
+TEST(PistonDeck, PistonPastTheGridIsRefused) {
+  const std::string e = deck_error(replace(kPiston1d, "velocity = 0.5 }", "velocity = 20.0 }"));
+  EXPECT_HAS(e, "boundary.left.velocity");
+  EXPECT_HAS(e, "past its far side");
+}
+
+TEST(PistonDeck, ItsSpeedCountsInTheCflCheck) {
+  // dt = 0.015 is inside the CFL limit of the bar at rest (dx / c = 0.1 / 5.12 = 0.0195),
+  // not inside dx / (c + 5) = 0.0099 with a piston at 5 km/s.
+  const std::string e = deck_error(replace(replace(kPiston1d, "velocity = 0.5 }", "velocity = 5.0 }"), "dt = 1e-2",
+                                           "dt = 1.5e-2"));
+  EXPECT_HAS(e, "exceeds the CFL limit");
+}
+
+TEST(PistonDeck, ValueIsNotAPistonKey) {
+  EXPECT_HAS(deck_error(replace(kPiston1d, "velocity = 0.5 }", "velocity = 0.5, value = 0.5 }")),
+             "boundary.left.value");
+}
+
+TEST(GaugeDeck, GaugesRead) {
+  const auto c = mpmx::app::read_mpm_deck_text(kPlate2d);
+  ASSERT_EQ(c.gauges.size(), 2u);
+  EXPECT_EQ(c.gauges[0].kind, mpmx::app::GaugeConfig::Kind::point);
+  EXPECT_EQ(c.gauges[0].at[0], 4.5);
+  EXPECT_EQ(c.gauges[1].kind, mpmx::app::GaugeConfig::Kind::free_surface);
+  EXPECT_EQ(c.gauges[1].body, 1);
+  EXPECT_EQ(c.gauges[1].face, 1);
+  EXPECT_EQ(c.gauges[1].every, 10);
+  const auto one = mpmx::app::read_mpm_deck_text(kPiston1d);
+  EXPECT_EQ(one.gauges.at(0).name, "1");  // gauge_1.csv
+}
+
+TEST(GaugeDeck, PositionOutsideTheBodiesIsRefused) {
+  const std::string e = deck_error(replace(kPlate2d, "at = [4.5, 0.05]", "at = [10.5, 0.05]"));
+  EXPECT_HAS(e, "gauge");
+  EXPECT_HAS(e, "at");
+  EXPECT_HAS(e, "[10.5, 0.05] lies outside the material (every [[body]])");
+}
+
+TEST(GaugeDeck, PositionOffTheGridIsRefused) {
+  EXPECT_HAS(deck_error(replace(kPiston1d, "at = 5.0", "at = 12.0")), "[12] lies outside the material (the grid)");
+}
+
+TEST(GaugeDeck, UnknownFaceIsRefused) {
+  const std::string e = deck_error(replace(kPlate2d, "face = \"x_upper\"", "face = \"z_upper\""));
+  EXPECT_HAS(e, "face");
+  EXPECT_HAS(e, "z_upper");
+}
+
+TEST(GaugeDeck, UnknownBodyIsRefusedWithTheNames) {
+  EXPECT_HAS(deck_error(replace(kPlate2d, "body = \"target\"", "body = \"tagret\"")),
+             "no [[body]] is called tagret: the deck's are flyer, target");
+}
+
+TEST(GaugeDeck, BodyNamesAreUnique) {
+  EXPECT_HAS(deck_error(replace(kPlate2d, "name = \"target\"", "name = \"flyer\"")), "body 1 is called flyer too");
+}
+
+TEST(GaugeDeck, SeveralBodiesNeedTheBodyNamed) {
+  EXPECT_HAS(deck_error(replace(kPlate2d, "body = \"target\"\n", "")), "says whose face it is");
+}
+
+TEST(GaugeDeck, NamesAreFileNamesAndUnique) {
+  EXPECT_HAS(deck_error(replace(kPlate2d, "name = \"mid\"", "name = \"a/b\"")), "letters, digits, _ and - only");
+  EXPECT_HAS(deck_error(replace(kPlate2d, "name = \"mid\"", "name = \"rear\"")), "another [[gauge]] is called rear");
+}
+
+TEST(GaugeDeck, UnknownKeyIsRefused) {
+  EXPECT_HAS(deck_error(replace(kPlate2d, "every = 10", "evry = 10")), "unknown key 'gauge");
+}
+
+TEST(PistonGaugeCheck, CheckDescribesThePistonAndTheGauges) {
+  const auto piston = mpmx::test::run_cli(std::string("check ") + MPMX_SOURCE_DIR + "/examples/C1_piston_elastic_1d.toml");
+  EXPECT_EQ(piston.status, 0) << piston.output;
+  EXPECT_HAS(piston.output, "piston on left: moves at 0.5 into the grid; its face is 3 in at time.end");
+  const auto gauges = mpmx::test::run_cli(std::string("check ") + MPMX_SOURCE_DIR + "/examples/C2_plate_impact_gauges.toml");
+  EXPECT_EQ(gauges.status, 0) << gauges.output;
+  EXPECT_HAS(gauges.output, "gauge target_mid: the material point nearest [4.5, 0.03]");
+  EXPECT_HAS(gauges.output, "-> gauge_target_mid.csv");
+  EXPECT_HAS(gauges.output, "gauge rear_surface: free-surface velocity: the mean of the outermost points of target's "
+                            "x_upper face, every 1 step -> gauge_rear_surface.csv");
+}
