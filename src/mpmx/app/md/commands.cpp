@@ -141,6 +141,21 @@ void check_md(const std::string& path, bool force, bool lammps = false) {
              budget.atom_steps / rate / 3600.0, rate,
              measured ? "a box of its potential timed on this core just now" : "a typical figure");
   if (!config.bar && !config.jet && !config.rod) print_lattice(config, "box", config.cells, config.strain_x);
+  if (config.ensemble != "nve") {
+    const md::NoseHooverOptions& nh = config.nose_hoover;
+    std::string what = nh.hugoniot ? fmt::format("the Hugoniostat: {:.6g} GPa along its shock axis, the thermostat's "
+                                                 "target from the Hugoniot about the box the run starts with",
+                                                 nh.pressure[0])
+                                   : "";
+    if (!nh.hugoniot && nh.thermostat) what = fmt::format("Nose-Hoover chain at {:.6g} K (t_damp {:.3g} ps)", nh.temperature, nh.t_damp);
+    if (!nh.hugoniot && nh.barostat)
+      what += fmt::format("{}MTK barostat, {} at {} GPa (p_damp {:.3g} ps)", what.empty() ? "" : ", ",
+                          nh.isotropic ? "isotropic" : "per axis",
+                          nh.isotropic ? fmt::format("{:.6g}", nh.pressure[0])
+                                       : fmt::format("[{:.6g}, {:.6g}, {:.6g}]", nh.pressure[0], nh.pressure[1], nh.pressure[2]),
+                          nh.p_damp);
+    fmt::print("  ensemble {}: {}\n", config.ensemble, what);
+  }
   else if (config.bar && !config.lattice.plain_fcc())
     print_lattice(config, "bar", {config.bar_config.cells_x, config.bar_config.cells_yz, config.bar_config.cells_yz},
                   0.0);

@@ -286,7 +286,13 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
                   {"particle_velocity_km_s", us * eta}};
     rec.insert("hugoniot", h);
   }
-  rec.insert("lattice_constant_A", toml::array{sys.box().lx / c.cells[0], sys.box().ly / c.cells[1], sys.box().lz / c.cells[2]});
+  {  // the lattice constant the box now holds along each axis: its edge over its tiles
+    const particles::LatticeTile tile = particles::lattice_tile(c.lattice);
+    const double l[3] = {sys.box().lx, sys.box().ly, sys.box().lz};
+    toml::array a;
+    for (int d = 0; d < 3; ++d) a.push_back(c.lattice.constant * l[d] / (c.cells[d] * tile.length[d]));
+    rec.insert("lattice_constant_A", a);
+  }
   rec.insert("run_seconds", run_seconds);
   rec.insert("kinetic_energy_per_atom", sys.kinetic_energy() / n);
   rec.insert("temperature_K", sys.temperature());
