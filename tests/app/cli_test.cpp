@@ -454,6 +454,10 @@ TEST(Cli, LeftTheGridNamesAxisStepAndTime) {
   EXPECT_TRUE(std::regex_search(r.output, std::regex(R"(left the grid \(y = [0-9.e+-]+, more than a cell past the )"
                                                      R"(grid's upper y end\) in step [0-9]+ \(t = [0-9.e+-]+\))")))
       << r.output;
+  // Its last state written as the final record, said in run.json.
+  const std::string json = mpmx::test::slurp(out + "/run.json");
+  EXPECT_NE(json.find("\"final_record\""), std::string::npos) << json;
+  EXPECT_NE(mpmx::test::slurp(out + "/particles.pvd").find("vtk/particles_final_"), std::string::npos);
   std::filesystem::remove_all(out);
 }
 

@@ -116,6 +116,10 @@ struct MpmConfig {
   std::int64_t output_every = 0;   // 0 = only output_times and the last step
   bool write_nodes = true, write_particles = true, plot = true;
   bool write_vtk = true;             // 2-D, 3-D: VTK files for ParaView
+  // md_dump: the points whose MD boxes are written as LAMMPS dumps, every so many steps
+  // (0: at the records)
+  std::vector<std::int64_t> md_dump_points;
+  std::int64_t md_dump_every = 0;
   // [reference]
   ReferenceConfig reference;
   ManufacturedConfig manufactured;

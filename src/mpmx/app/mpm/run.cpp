@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/app/mpm/box_dumps.hpp"
 #include "mpmx/app/mpm/checkpoint.hpp"
 #include "mpmx/app/mpm/comparison.hpp"
 #include "mpmx/app/mpm/convergence.hpp"
@@ -97,6 +98,9 @@ class ContinuumRun {
       out_ = std::make_unique<Output>(folder_.dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles, marks);
       if (c.write_vtk) vtk_ = std::make_unique<VtkOutput<Dim>>(folder_.dir, o.resume ? s_.time : -1.0);
     });
+    // Every rank takes part in a dump (the box may run on any); rank 0 writes it.
+    if (!c.md_dump_points.empty() && !o.out_dir.empty())
+      dumps_ = std::make_unique<BoxDumps<Dim>>(folder_.dir, c.md_dump_points, *s_.material);
   }
 
   // The step loop: each step, then the checks, comparisons, records and checkpoints it
@@ -117,6 +121,7 @@ class ContinuumRun {
         const bool last = c_.cfl_dt ? !(s_.time < c_.end) : n == schedule_.steps;
         if (schedule_.compare_steps.count(n) && comparison_) comparison_->compare(s_, book_);
         if (due_record(n, at_record_time)) record();
+        if (dumps_ && c_.md_dump_every > 0 && n % c_.md_dump_every == 0) dumps_->write(s_);
         if (n % schedule_.energy_every == 0 || last) {
           check_volumes(s_);
           observe();
@@ -134,6 +139,7 @@ class ContinuumRun {
       // closure and the checkpoint agree on theirs (core/ranks).
       ranks::mark_agreed();
       failure_ = e.what();
+      record_final();
     }
     finish();
   }
@@ -171,6 +177,43 @@ class ContinuumRun {
     if constexpr (Dim == 1)
       if (out_) out_->record(s_, nodal_fields(s_), comparison_ ? comparison_->solution() : nullptr);
     if (comparison_) comparison_->at_record(s_, book_, out_.get());
+    if (dumps_ && (c_.md_dump_every == 0 || s_.step == 0)) dumps_->write(s_);
+  }
+
+  // The state a stopped run ends in, written as the regular records are but named
+  // final (vtk/particles_final_NNNNNN.vtu, last in particles.pvd; final_particles.csv and
+  // final_nodes.csv in 1-D) and said in run.json's "final_record", so the failing state
+  // can be seen. A part the state cannot give (a point past the grid has no nodal
+  // fields) is left out and said there.
+  void record_final() {
+    if (o_.out_dir.empty() || !ranks::root()) return;
+    toml::table said{{"step", s_.step}, {"time", s_.time}, {"reason", failure_}};
+    toml::array files, missing;
+    auto attempt = [&](const char* what, auto&& write) {
+      try {
+        write();
+        files.push_back(what);
+      } catch (const std::exception& e) {  // what the failed state cannot give
+        missing.push_back(fmt::format("{}: {}", what, e.what()));
+      }
+    };
+    if (vtk_) attempt("vtk/particles_final (.vtu, .vti)", [&] { vtk_->record(s_, true); });
+    if constexpr (Dim == 1)
+      if (out_ && (c_.write_particles || c_.write_nodes)) {
+        if (c_.write_particles) attempt("final_particles.csv", [&] {
+          Output last(folder_.dir, false, true, {}, "final_");
+          last.record(s_, NodalFields{}, nullptr);
+          last.close();
+        });
+        if (c_.write_nodes) attempt("final_nodes.csv", [&] {
+          Output last(folder_.dir, true, false, {}, "final_");
+          last.record(s_, nodal_fields(s_), nullptr);
+          last.close();
+        });
+      }
+    said.insert("files", std::move(files));
+    if (!missing.empty()) said.insert("not_written", std::move(missing));
+    rec_.set("final_record", std::move(said));
   }
 
   // The energy balance's figures, and the energy error against a reference that knows
@@ -337,6 +380,7 @@ class ContinuumRun {
   RunCarry carry_;
   std::unique_ptr<Output> out_;
   std::unique_ptr<VtkOutput<Dim>> vtk_;
+  std::unique_ptr<BoxDumps<Dim>> dumps_;
   std::string failure_;
   std::chrono::steady_clock::time_point t0_;
   double last_checkpoint_ = 0.0;

@@ -8,10 +8,8 @@
 
 #include "mpmx/md/particles.hpp"
 
-namespace mpmx::app::md {
-
-using namespace mpmx::md;  // the MD driver speaks the engine's names
+namespace mpmx::md {
 
 void write_lammps_dump(std::ostream& out, std::int64_t step, const Atoms& atoms, const Box& box);
 
-}  // namespace mpmx::app::md
+}  // namespace mpmx::md

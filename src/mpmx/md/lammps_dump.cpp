@@ -1,10 +1,10 @@
-#include "mpmx/app/md/dump.hpp"
+#include "mpmx/md/lammps_dump.hpp"
 
 #include <algorithm>
 
 #include <fmt/format.h>
 
-namespace mpmx::app::md {
+namespace mpmx::md {
 
 void write_lammps_dump(std::ostream& out, std::int64_t step, const Atoms& a, const Box& b) {
   out << fmt::format("ITEM: TIMESTEP\n{}\nITEM: NUMBER OF ATOMS\n{}\n", step, a.size());
@@ -24,4 +24,4 @@ void write_lammps_dump(std::ostream& out, std::int64_t step, const Atoms& a, con
                        a.z[i], a.vx[i], a.vy[i], a.vz[i]);
 }
 
-}  // namespace mpmx::app::md
+}  // namespace mpmx::md
