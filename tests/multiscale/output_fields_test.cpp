@@ -303,6 +303,22 @@ TEST(FinalRecord, A2dRunStoppedByAPointLeavingTheGridWritesItsLastState) {
   EXPECT_NE(pvd.find("vtk/" + final_vtu), std::string::npos) << pvd;
   EXPECT_GT(pvd.find("vtk/" + final_vtu), pvd.find("vtk/particles_000000.vtu"));  // listed last
   EXPECT_NE(test::read_file(o.out_dir + "/vtk/" + final_vtu).find("Name=\"body\""), std::string::npos);
+
+  // Resumed from a checkpoint before the failure, the run stops again the same way: one
+  // final record in the series, the earlier one replaced.
+  app::RunOptions every = o;
+  every.out_dir = test::scratch_dir("final_record_2d_resumed");
+  every.checkpoint_every = 1;
+  EXPECT_EQ(message_of([&] { app::run_mpm_dim<2>(c, every); }), m);
+  every.resume = true;
+  EXPECT_EQ(message_of([&] { app::run_mpm_dim<2>(c, every); }), m);
+  const std::string again = test::read_file(every.out_dir + "/particles.pvd");
+  EXPECT_EQ(again.find("_final_"), again.rfind("_final_")) << again;
+  EXPECT_NE(again.find("vtk/" + final_vtu), std::string::npos) << again;
+  std::size_t finals = 0;
+  for (const auto& e : fs::directory_iterator(every.out_dir + "/vtk"))
+    finals += e.path().filename().string().find("_final_") != std::string::npos;
+  EXPECT_EQ(finals, 2u);  // its .vtu and .vti
 }
 
 // A 1-D run whose step is far past the CFL limit blows up: its last state is written as

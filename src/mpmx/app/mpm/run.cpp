@@ -95,6 +95,8 @@ class ContinuumRun {
     ranks::together([&] {  // output from rank 0 only; a folder it cannot make stops all
       if (o.out_dir.empty() || !ranks::root()) return;
       std::filesystem::create_directories(folder_.dir);
+      if (o.resume)  // a stopped run's final tables: the resumed run goes on from its checkpoint
+        for (const char* f : {"final_particles.csv", "final_nodes.csv"}) std::filesystem::remove(folder_.dir + "/" + f);
       out_ = std::make_unique<Output>(folder_.dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles, marks);
       if (c.write_vtk) vtk_ = std::make_unique<VtkOutput<Dim>>(folder_.dir, o.resume ? s_.time : -1.0);
     });

@@ -41,8 +41,13 @@ VtkOutput<Dim>::VtkOutput(const std::string& dir, double resume_time)
     : dir_(dir), particles_(dir + "/particles.pvd"), grid_(dir + "/grid.pvd") {
   std::filesystem::create_directories(dir + "/vtk");
   if (resume_time >= 0.0) {
-    particles_.restore_up_to(resume_time);
-    grid_.restore_up_to(resume_time);
+    // A final record of a stopped run goes: the resumed run writes the state from here on.
+    for (auto* s : {&particles_, &grid_}) {
+      s->restore_up_to(resume_time);
+      s->drop_files_containing("_final_");
+    }
+    for (const auto& f : std::filesystem::directory_iterator(dir + "/vtk"))
+      if (f.path().filename().string().find("_final_") != std::string::npos) std::filesystem::remove(f.path());
   }
 }
 
