@@ -1,8 +1,8 @@
 """The colour scale of a field map, one rule for every figure of mpmx (points2d.py,
 jet_maps.py, jet_compare.py): a field that takes both signs (a stress) in a diverging,
 perceptually uniform map (RdBu_r) centred on zero with symmetric limits, so that white is
-zero and equal tension and compression are equally dark; a field of one sign (density,
-temperature) in viridis. The limits are the 1st and 99th percentiles of the values (a few
+zero and equal tension and compression are equally dark (a stress or velocity component
+always: its zero means something); a field of one sign (density, temperature) in viridis. The limits are the 1st and 99th percentiles of the values (a few
 points at a contact would leave the rest one colour), and caption() says how many values
 lie beyond them and their extremes.
 """
@@ -15,14 +15,18 @@ EMPTY = "0.82"  # the axes' colour where there is no material (white is zero str
 
 
 class Scale:
-    def __init__(self, values, vmin=None, vmax=None, cmap=None):
+    """`centred`: a quantity whose zero means something (a stress, a velocity) keeps the
+    diverging map about zero even when the values shown take one sign (a gas's
+    compression: the blue half alone)."""
+
+    def __init__(self, values, vmin=None, vmax=None, cmap=None, centred=False):
         v = np.asarray(values, dtype=float).ravel()
         self.values = v[np.isfinite(v)]
         if self.values.size == 0:
             raise ValueError("no finite value to scale")
         lo = vmin if vmin is not None else float(np.percentile(self.values, CLIP_PERCENT))
         hi = vmax if vmax is not None else float(np.percentile(self.values, 100 - CLIP_PERCENT))
-        self.signed = float(self.values.min()) < 0.0 < float(self.values.max())
+        self.signed = centred or float(self.values.min()) < 0.0 < float(self.values.max())
         self.cmap = cmap or (DIVERGING if self.signed else SEQUENTIAL)
         self.symmetric = self.signed and vmin is None and vmax is None and not cmap
         self.chosen = vmin is not None or vmax is not None

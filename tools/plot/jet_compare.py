@@ -57,7 +57,7 @@ def main(argv=None):
             points2d.fail(f"{path} has no stress array")
         sxx, _ = points2d.component_values(fields["stress"], "stress", "xx")
         # One scale for both, diverging about zero with percentile limits (colour_scale.py).
-        sc = Scale(np.concatenate([values[np.isfinite(values)], sxx]))
+        sc = Scale(np.concatenate([values[np.isfinite(values)], sxx]), centred=True)
         lo, hi = sc.lo, sc.hi
         im = row[0].imshow(values, origin="lower", extent=extent, cmap=sc.cmap, vmin=lo, vmax=hi, aspect="equal",
                            interpolation="nearest")

@@ -98,7 +98,7 @@ def stress_map(run_dir, out, steps, dt, t, scale, quiet):
     values, extent = grid(run_dir, step, "sxx_GPa")
     fig, ax, orientation = map_figure(extent)
     # Diverging about zero, percentile limits (colour_scale.py); empty bins grey.
-    sc = Scale(values)
+    sc = Scale(values, centred=True)
     im = ax.imshow(values, origin="lower", extent=extent, cmap=sc.cmap, vmin=sc.lo, vmax=sc.hi, aspect="equal",
                    interpolation="nearest")
     ax.set_facecolor(EMPTY)

@@ -230,18 +230,24 @@ STACK_ASPECT = 0.6
 # A point's rectangle grows with its stretch up to this factor (a spalled layer's points
 # stay points, not bands).
 MAX_STRETCH = 3.0
+# Every rectangle a little larger than the pitch: points a scheme has jostled (CPDI at a
+# shock) leave no pinholes between them.
+COVER = 1.1
 
 
-def stretches(fields, n):
+def stretches(fields, n, volume0=None):
     """(n x 2) stretch of each point along x and y, at least 1: 1 + eps_aa of its strain
-    tensor (an integrated rate: the stretch to first order), else sqrt(V / V0) of the
-    volumes against the first record's."""
+    tensor (an integrated rate: the stretch to first order), else (a gas keeps no strain)
+    sqrt(V / V0) of its volume against the first record's."""
     s = np.ones((n, 2))
     strain = fields.get("strain")
+    volume = fields.get("volume")
     if strain is not None and strain.shape[1] == 9 and np.any(strain[:, [0, 4]] != 0):
         s[:, 0] = 1.0 + strain[:, 0]
         s[:, 1] = 1.0 + strain[:, 4]
-    return np.clip(np.nan_to_num(s, nan=1.0), 1.0, MAX_STRETCH)
+    elif volume is not None and volume0 is not None and len(volume0) == n:
+        s[:, :] = np.sqrt(volume[:, 0] / volume0)[:, None]
+    return COVER * np.clip(np.nan_to_num(s, nan=1.0), 1.0, MAX_STRETCH)
 
 
 def column_profile(xy, values, hx):
@@ -315,6 +321,10 @@ def main(argv=None):
     else:
         path, time = pick_record(args.source, args.time)
         records = [(time, path)]
+    # The first record's volumes, for the stretch of laws that keep no strain.
+    series = list_records(args.source) if (args.source.endswith(".pvd") or os.path.isdir(args.source)) else []
+    start = read_dataset(series[0][1]) if series else None
+    volume0 = start[1]["volume"][:, 0] if start and "volume" in start[1] else None
     frames = []
     for time, path in records:
         points, fields, active = read_dataset(path)
@@ -324,7 +334,7 @@ def main(argv=None):
         if name not in fields:
             fail(f"{path} has no field '{name}' (it has: {', '.join(fields)})")
         values, label = component_values(fields[name], name, args.component)
-        frames.append((time, path, points[:, :2], values * args.scale, stretches(fields, len(values))))
+        frames.append((time, path, points[:, :2], values * args.scale, stretches(fields, len(values), volume0)))
     if args.frames:
         spans = np.array([np.nanmax(v) - np.nanmin(v) if np.isfinite(v).any() else np.nan
                           for _, _, _, v, _ in frames])
@@ -342,15 +352,17 @@ def main(argv=None):
     # colour_scale.py: diverging about zero for a signed field, percentile limits (a few
     # points at a contact, N3's disks: -600 against some -50 elsewhere, would leave the
     # rest one colour); the bar's arrows and the caption say what lies beyond.
-    scale = Scale(every, args.vmin, args.vmax, args.cmap)
+    # A tensor or vector component is centred on zero whatever its sign (a magnitude is not).
+    centred = name in SYMBOLS and args.component not in ("magnitude",) and \
+        not (args.component is None and frames and fields[name].shape[1] == 3)
+    scale = Scale(every, args.vmin, args.vmax, args.cmap, centred)
     lo_v, hi_v, cmap, extend = scale.lo, scale.hi, scale.cmap, scale.extend
     # The lattice pitch of the first record of the series (undeformed), each point's
     # rectangle stretched with it; a single file's own.
     if args.marker_size:
         pitch0 = np.array([args.marker_size] * 2)
     else:
-        series = list_records(args.source) if (args.source.endswith(".pvd") or os.path.isdir(args.source)) else []
-        first = read_dataset(series[0][1])[0][:, :2] if series else frames[0][2]
+        first = start[0][:, :2] if start else frames[0][2]
         pitch0 = np.array(point_spacing(first))
     pitch = [pitch0[None, :] * (st if not args.marker_size else 1.0) for _, _, _, _, st in frames]
     h = pitch0 * 1.0
