@@ -193,6 +193,13 @@ TEST(OutputFields, TwoDBodiesOfTwoLawsReadBackWithVtk) {
     flyer += in_flyer;
   }
   EXPECT_EQ(flyer, 40u * 4u * 4u);  // 2 mm of 0.05 mm cells x 4 cells, 2 x 2 points each
+  // run.json names what the ids stand for: law 1 is the flyer's own aluminium.
+  const std::string json = test::read_file(o.out_dir + "/run.json");
+  const std::size_t at = json.find("\"materials\"");
+  ASSERT_NE(at, std::string::npos) << json;
+  EXPECT_NE(json.find("\"from\" : \"[material]\"", at), std::string::npos) << json.substr(at, 400);
+  EXPECT_NE(json.find("\"from\" : \"[[body]] 0 [body.material]\"", at), std::string::npos) << json.substr(at, 400);
+  EXPECT_LT(json.find("\"id\" : 0", at), json.find("\"id\" : 1", at));
   if (std::system("/usr/bin/python3 -c 'import vtk' >/dev/null 2>&1") != 0)
     GTEST_SKIP() << "python3-vtk9 is not installed (scripts/install-deps installs it)";
   const std::string script =

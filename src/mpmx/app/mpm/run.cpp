@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <utility>
 
@@ -91,6 +92,7 @@ class ContinuumRun {
       marks = load_run_checkpoint(checkpoint_path(folder_.dir), c, s_, carry_, book_, rec_);
     });
     rec_.set("threads", r.threads);
+    rec_.set("materials", material_labels());
     rec_.set("ranks", static_cast<std::int64_t>(ranks::size()));
     ranks::together([&] {  // output from rank 0 only; a folder it cannot make stops all
       if (o.out_dir.empty() || !ranks::root()) return;
@@ -180,6 +182,28 @@ class ContinuumRun {
       if (out_) out_->record(s_, nodal_fields(s_), comparison_ ? comparison_->solution() : nullptr);
     if (comparison_) comparison_->at_record(s_, book_, out_.get());
     if (dumps_ && (c_.md_dump_every == 0 || s_.step == 0)) dumps_->write(s_);
+  }
+
+  // What the points' `material` ids name: each law's model and the bodies whose points
+  // take it (ids in the order the laws' first points come, x fastest: the deck's
+  // [material] is 0).
+  toml::array material_labels() const {
+    const auto& p = s_.particles;
+    std::map<int, std::set<int>> bodies;
+    for (std::size_t q = 0; q < p.size(); ++q) bodies[p.law[q]].insert(p.body[q]);
+    toml::array out;
+    for (const auto& [law, of] : bodies) {
+      const int b = *of.begin();
+      const bool own = law > 0 && b < static_cast<int>(c_.bodies.size()) && c_.bodies[b].material;
+      const material::Model* m = own ? c_.bodies[b].material.get() : c_.material.spec.get();
+      toml::array ids;
+      for (int i : of) ids.push_back(i);
+      out.push_back(toml::table{{"id", law},
+                                {"model", m ? m->name() : std::string("?")},
+                                {"from", own ? "[[body]] " + std::to_string(b) + " [body.material]" : "[material]"},
+                                {"bodies", std::move(ids)}});
+    }
+    return out;
   }
 
   // The state a stopped run ends in, written as the regular records are but named
