@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <tuple>
 
@@ -179,6 +180,9 @@ TEST(MpiRanks, NonFiniteBoxOnOneRankStopsEveryRank) {
         fmt::format("rank {}: the MD box of material point {} gave a non-finite stress", owner, point);
     EXPECT_NE(log.find("mpmx: run stopped: " + message), std::string::npos) << log;
     EXPECT_EQ(log.find("mpmx: run stopped"), log.rfind("mpmx: run stopped")) << log;  // printed once
+    // With the step and the time it failed in.
+    EXPECT_TRUE(std::regex_search(log, std::regex(R"(non-finite stress \([^)]*\) in step [0-9]+ \(t = [0-9.e+-]+\))")))
+        << log;
     const std::string rec = test::read_file(out + "/run.json");
     EXPECT_NE(rec.find("\"stopped\""), std::string::npos);
     EXPECT_NE(rec.find(message), std::string::npos);
