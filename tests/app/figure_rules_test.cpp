@@ -1,5 +1,4 @@
 // ctest-label: unit
-// ctest-cost: 2
 // The colour rule of every map mpmx draws (tools/plot/colour_scale.py, issue 46 item 8): a
 // field of both signs in a diverging map centred on zero with symmetric limits from the
 // 1st and 99th percentiles, one of one sign in viridis, and a caption that says how many
@@ -14,7 +13,8 @@
 
 #include "mpm/mpm_test_util.hpp"
 
-namespace {
+// Helpers and tests in a namespace of their own: the unit tests build in unity batches.
+namespace figure_rules {
 
 using namespace mpmx;
 namespace fs = std::filesystem;
@@ -32,7 +32,6 @@ std::string scale_of(const std::string& values) {
   return test::capture(cmd);
 }
 
-}  // namespace
 
 TEST(ColourScale, SignedFieldsAreDivergingAboutZeroWithPercentileLimitsAndTheClippedSaid) {
   if (!have_matplotlib()) GTEST_SKIP() << "python3-numpy is not installed";
@@ -101,3 +100,5 @@ TEST(Figures, AQuasi1dRunDrawsItsProfileBesideTheMaps) {
   EXPECT_NEAR(static_cast<double>(with) - without, 390.0, 40.0) << with << " " << without;
   fs::remove_all(dir);
 }
+
+}  // namespace figure_rules

@@ -1,5 +1,4 @@
 // ctest-label: unit
-// ctest-cost: 2
 // The fields a user looks at (issue 46, item 3): the MD boxes' temperature and, in 1-D,
 // their sigma_yy and sigma_zz in particles.csv and the .vtu, each the box's own value;
 // the point's body and material; the MD boxes of chosen points as LAMMPS dumps OVITO
@@ -23,7 +22,8 @@
 #include "mpmx/mpm/points.hpp"
 #include "mpmx/multiscale/md_closure.hpp"
 
-namespace {
+// Helpers and tests in a namespace of their own: the unit tests build in unity batches.
+namespace output_fields {
 
 using namespace mpmx;
 namespace fs = std::filesystem;
@@ -65,7 +65,6 @@ std::string message_of(const std::function<void()>& f) {
   return "";
 }
 
-}  // namespace
 
 // 1-D DDMP-MD at 300 K: each point's temperature, sigma_yy and sigma_zz are its box's
 // (to the table's 10 digits), the box is hot and laterally stressed; the chosen points'
@@ -353,3 +352,5 @@ TEST(FinalRecord, A1dRunThatBlowsUpWritesItsLastStateAsFinalTables) {
   EXPECT_NE(json.find("final_particles.csv", at), std::string::npos) << json;
   EXPECT_NE(json.find("\"status\" : \"stopped\""), std::string::npos);
 }
+
+}  // namespace output_fields
