@@ -45,6 +45,7 @@ def main(argv=None):
     scale, face = jet["scale"], jet["piston_face_A"]
     dt_md = run["deck"]["run"]["dt"]
     steps = jet_maps.record_steps(a.md_run)
+    pitch0 = np.array(points2d.point_spacing(points2d.read_dataset(points2d.list_records(a.ddmp_run)[0][1])[0][:, :2]))
     fig, axes = plt.subplots(len(a.times), 2, figsize=(11, 3.2 * len(a.times)), squeeze=False)
     for row, t_full in zip(axes, a.times):
         t = t_full * scale
@@ -62,10 +63,12 @@ def main(argv=None):
         im = row[0].imshow(values, origin="lower", extent=extent, cmap=sc.cmap, vmin=lo, vmax=hi, aspect="equal",
                            interpolation="nearest")
         row[0].set_title(f"direct MD, t = {step * dt_md:.3g} ps (full size {t_full:g} ps)")
-        hx, hy = points2d.point_spacing(pts[:, :2])
-        squares = [[(x - hx / 2, y - hy / 2), (x + hx / 2, y - hy / 2), (x + hx / 2, y + hy / 2),
-                    (x - hx / 2, y + hy / 2)] for x, y in pts[:, :2]]
-        pc = PolyCollection(squares, array=sxx, cmap=sc.cmap, edgecolors="face", linewidths=0.3)
+        # Each point a rectangle of the initial pitch stretched by its strain, as points2d
+        # draws them: the jet's stretched points leave no gaps.
+        corners = np.array([[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]])
+        sides = pitch0[None, :] * points2d.stretches(fields, len(sxx))
+        pc = PolyCollection(pts[:, None, :2] + corners[None, :, :] * sides[:, None, :], array=sxx, cmap=sc.cmap,
+                            edgecolors="face", linewidths=0.3)
         pc.set_clim(lo, hi)
         row[1].add_collection(pc)
         row[1].set_xlim(extent[0], extent[1])
