@@ -301,10 +301,17 @@ TEST(Cli, EveryCommandTakesTheCommonOptions) {
   // The new user's command line: an md run with -o and -j, the short forms `run` takes.
   const auto r = mpmx_cli("md " + kMdDeck + " -o " + out + " -j 1 -q --no-plot");
   EXPECT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("mpmx md: --no-plot ignored: md draws no figures"), std::string::npos) << r.output;
+  // M1's [scan] draws its figure: --no-plot applies, and leaves it out.
+  EXPECT_EQ(r.output.find("--no-plot ignored"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out + "/energy_vs_lattice.png"));
   const std::string json = mpmx::test::slurp(out + "/run.json");
   EXPECT_NE(json.find("\"case\" : \"M1_cu_energy_vs_lattice\""), std::string::npos) << json;
   std::filesystem::remove_all(out);
+  if (std::system("/usr/bin/python3 -c 'import matplotlib, numpy' >/dev/null 2>&1") == 0) {
+    EXPECT_EQ(mpmx_cli("md " + kMdDeck + " -o " + out + " -j 1 -q").status, 0);
+    EXPECT_TRUE(std::filesystem::exists(out + "/energy_vs_lattice.png"));  // the E(a) curve
+    std::filesystem::remove_all(out);
+  }
 }
 
 // A deck given to the wrong command: one sentence naming the command that runs it (exit 2),
@@ -454,6 +461,10 @@ TEST(Cli, LeftTheGridNamesAxisStepAndTime) {
   EXPECT_TRUE(std::regex_search(r.output, std::regex(R"(left the grid \(y = [0-9.e+-]+, more than a cell past the )"
                                                      R"(grid's upper y end\) in step [0-9]+ \(t = [0-9.e+-]+\))")))
       << r.output;
+  // Its last state written as the final record, said in run.json.
+  const std::string json = mpmx::test::slurp(out + "/run.json");
+  EXPECT_NE(json.find("\"final_record\""), std::string::npos) << json;
+  EXPECT_NE(mpmx::test::slurp(out + "/particles.pvd").find("vtk/particles_final_"), std::string::npos);
   std::filesystem::remove_all(out);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the continuum tests: read an example deck, edit it, run it in
 // memory (no files), and read the by-time errors.
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -96,6 +97,33 @@ inline std::string slurp(const std::string& path) {
   std::stringstream s;
   s << f.rdbuf();
   return s.str();
+}
+
+// What a shell command prints on stdout.
+inline std::string capture(const std::string& cmd) {
+  std::string out;
+  if (FILE* f = popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    while (std::size_t n = fread(buf, 1, sizeof buf, f)) out.append(buf, n);
+    pclose(f);
+  }
+  return out;
+}
+
+// A1's standing wave at dt = 1, 50 times its CFL limit (allowed by raising cfl_limit),
+// which blows up within a few steps; the energy-growth stop, which would end it first,
+// out of the way; no reference and no record times.
+inline app::MpmConfig blowing_up_a1() {
+  return deck_with(example("A1_standing_wave_static.toml"), [](toml::table& t) {
+    auto& time = *t["time"].as_table();
+    time.insert_or_assign("dt", 1.0);
+    time.insert_or_assign("end", 5000.0);
+    time.insert_or_assign("cfl_limit", 100.0);
+    time.insert_or_assign("energy_growth", 1e300);
+    time.insert_or_assign("energy_growth_stop", 1e300);
+    t["output"].as_table()->insert_or_assign("times", toml::array{});
+    t.erase("reference");
+  });
 }
 
 }  // namespace mpmx::test

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <tuple>
 
@@ -27,7 +28,9 @@ std::string mpirun(int ranks, const std::string& extra = "") {
 }
 
 std::string deck_file(const std::string& name, int steps) {
-  const auto c = test::tiny_bar(7, 2, steps, 300.0);
+  auto c = test::tiny_bar(7, 2, steps, 300.0);
+  // The boxes of the first and last points dumped (they run on rank 0 and the last rank).
+  c.deck["output"].as_table()->insert_or_assign("md_dump", toml::table{{"points", toml::array{0, 6}}, {"every", 4}});
   const std::string deck = test::scratch_dir(name) + "/bar.toml";
   std::ofstream(deck) << c.deck;
   return deck;
@@ -64,7 +67,8 @@ std::string physics(const std::string& dir) {
 }
 
 void expect_same_outputs(const std::string& a, const std::string& b) {
-  for (const char* f : {"particles.csv", "nodes.csv", "energy.csv"}) {
+  for (const char* f : {"particles.csv", "nodes.csv", "energy.csv", "md_dump/point_000000_000000004.dump",
+                        "md_dump/point_000006_000000004.dump", "md_dump/point_000006_000000000.dump"}) {
     const std::string x = test::read_file(a + "/" + f);
     EXPECT_FALSE(x.empty()) << a << "/" << f;
     EXPECT_EQ(x, test::read_file(b + "/" + f)) << b << "/" << f;
@@ -176,10 +180,19 @@ TEST(MpiRanks, NonFiniteBoxOnOneRankStopsEveryRank) {
         fmt::format("rank {}: the MD box of material point {} gave a non-finite stress", owner, point);
     EXPECT_NE(log.find("mpmx: run stopped: " + message), std::string::npos) << log;
     EXPECT_EQ(log.find("mpmx: run stopped"), log.rfind("mpmx: run stopped")) << log;  // printed once
+    // With the step and the time it failed in.
+    EXPECT_TRUE(std::regex_search(log, std::regex(R"(non-finite stress \([^)]*\) in step [0-9]+ \(t = [0-9.e+-]+\))")))
+        << log;
     const std::string rec = test::read_file(out + "/run.json");
     EXPECT_NE(rec.find("\"stopped\""), std::string::npos);
     EXPECT_NE(rec.find(message), std::string::npos);
     EXPECT_FALSE(test::read_file(out + "/particles.csv").empty());  // the partial result stays
+    // The state it stopped in, written once (by rank 0) as the final record.
+    const std::size_t at = rec.find("\"final_record\"");
+    ASSERT_NE(at, std::string::npos) << rec;
+    EXPECT_NE(rec.find(message, at), std::string::npos);
+    EXPECT_NE(rec.find("final_particles.csv", at), std::string::npos) << rec;
+    EXPECT_FALSE(test::read_file(out + "/final_particles.csv").empty());
   }
 }
 

@@ -25,6 +25,7 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 import jet_maps  # noqa: E402
+from colour_scale import EMPTY, Scale  # noqa: E402
 import points2d  # noqa: E402
 
 
@@ -44,6 +45,7 @@ def main(argv=None):
     scale, face = jet["scale"], jet["piston_face_A"]
     dt_md = run["deck"]["run"]["dt"]
     steps = jet_maps.record_steps(a.md_run)
+    pitch0 = np.array(points2d.point_spacing(points2d.read_dataset(points2d.list_records(a.ddmp_run)[0][1])[0][:, :2]))
     fig, axes = plt.subplots(len(a.times), 2, figsize=(11, 3.2 * len(a.times)), squeeze=False)
     for row, t_full in zip(axes, a.times):
         t = t_full * scale
@@ -55,24 +57,31 @@ def main(argv=None):
         if "stress" not in fields:
             points2d.fail(f"{path} has no stress array")
         sxx, _ = points2d.component_values(fields["stress"], "stress", "xx")
-        finite = np.concatenate([values[np.isfinite(values)], sxx])
-        lo, hi = float(finite.min()), float(finite.max())
-        im = row[0].imshow(values, origin="lower", extent=extent, cmap="jet", vmin=lo, vmax=hi, aspect="equal")
+        # One scale for both, diverging about zero with percentile limits (colour_scale.py).
+        sc = Scale(np.concatenate([values[np.isfinite(values)], sxx]), centred=True)
+        lo, hi = sc.lo, sc.hi
+        im = row[0].imshow(values, origin="lower", extent=extent, cmap=sc.cmap, vmin=lo, vmax=hi, aspect="equal",
+                           interpolation="nearest")
         row[0].set_title(f"direct MD, t = {step * dt_md:.3g} ps (full size {t_full:g} ps)")
-        hx, hy = points2d.point_spacing(pts[:, :2])
-        squares = [[(x - hx / 2, y - hy / 2), (x + hx / 2, y - hy / 2), (x + hx / 2, y + hy / 2),
-                    (x - hx / 2, y + hy / 2)] for x, y in pts[:, :2]]
-        pc = PolyCollection(squares, array=sxx, cmap="jet", edgecolors="none")
+        # Each point a rectangle of the initial pitch stretched by its strain, as points2d
+        # draws them: the jet's stretched points leave no gaps.
+        corners = np.array([[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]])
+        sides = pitch0[None, :] * points2d.stretches(fields, len(sxx))
+        pc = PolyCollection(pts[:, None, :2] + corners[None, :, :] * sides[:, None, :], array=sxx, cmap=sc.cmap,
+                            edgecolors="face", linewidths=0.3)
         pc.set_clim(lo, hi)
         row[1].add_collection(pc)
         row[1].set_xlim(extent[0], extent[1])
         row[1].set_ylim(extent[2], extent[3])
         row[1].set_aspect("equal")
         row[1].set_title(f"DDMP-MD, t = {t_pts:.3g} ps")
+        row[1].annotate(sc.caption("GPa"), xy=(1.0, -0.32), xycoords="axes fraction", ha="right", va="top",
+                        fontsize=7, color="0.25")
         for ax in row:
+            ax.set_facecolor(EMPTY)
             ax.set_xlabel("x from the piston's face (nm)")
             ax.set_ylabel("y (nm)")
-        fig.colorbar(im, ax=list(row), label="$\\sigma_{xx}$ (GPa)", shrink=0.85)
+        fig.colorbar(im, ax=list(row), label="$\\sigma_{xx}$ (GPa)", shrink=0.85, extend=sc.extend)
     out = a.out or os.path.join(a.ddmp_run, "sxx_md_vs_ddmp.png")
     fig.savefig(out, dpi=150, bbox_inches="tight")
     plt.close(fig)

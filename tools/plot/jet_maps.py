@@ -30,6 +30,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from colour_scale import EMPTY, Scale  # noqa: E402
+
 
 class PlotError(Exception):
     """A problem with the run directory: reported in one line, exit status 1."""
@@ -77,8 +80,8 @@ def map_figure(extent):
     return fig, ax, "horizontal" if wide else "vertical"
 
 
-def colour_bar(fig, mappable, ax, orientation, label):
-    bar = fig.colorbar(mappable, ax=ax, orientation=orientation, label=label,
+def colour_bar(fig, mappable, ax, orientation, label, extend="neither"):
+    bar = fig.colorbar(mappable, ax=ax, orientation=orientation, label=label, extend=extend,
                        shrink=0.6 if orientation == "horizontal" else 0.9, aspect=30)
     bar.ax.tick_params(labelsize=9)
 
@@ -94,10 +97,15 @@ def stress_map(run_dir, out, steps, dt, t, scale, quiet):
     step = nearest_step(steps, dt, t * scale)
     values, extent = grid(run_dir, step, "sxx_GPa")
     fig, ax, orientation = map_figure(extent)
-    im = ax.imshow(values, origin="lower", extent=extent, cmap="jet", aspect="equal")
-    colour_bar(fig, im, ax, orientation, "$\\sigma_{xx}$ (GPa)")
+    # Diverging about zero, percentile limits (colour_scale.py); empty bins grey.
+    sc = Scale(values, centred=True)
+    im = ax.imshow(values, origin="lower", extent=extent, cmap=sc.cmap, vmin=sc.lo, vmax=sc.hi, aspect="equal",
+                   interpolation="nearest")
+    ax.set_facecolor(EMPTY)
+    colour_bar(fig, im, ax, orientation, "$\\sigma_{xx}$ (GPa)", sc.extend)
     ax.set_xlabel("x (nm)")
     ax.set_ylabel("y (nm)")
+    fig.supxlabel(sc.caption("GPa") + "; grey: no atoms", fontsize=7, color="0.25")
     ax.set_title(f"direct MD, $\\sigma_{{xx}}$ at t = {step * dt:.3g} ps\n(full-size {t:g} ps, s = {scale:g})",
                  fontsize=11)
     save(fig, os.path.join(out, f"sxx_map_t{t:g}.png"), quiet)

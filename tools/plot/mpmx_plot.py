@@ -160,14 +160,26 @@ class Run:
         return str(dig(self.record, "deck.scheme.name", "mpm"))
 
     @property
+    def material(self):
+        return str(dig(self.record, "deck.material.model", "the law"))
+
+    @property
     def ppc(self):
         return dig(self.record, "deck.particles.per_cell", "?")
 
     @property
     def reference_label(self):
-        """'exact' for Riemann/shock solutions, 'analytic' for the linear-wave ones."""
+        """'direct MD' for a direct-MD reference (a simulation, not a formula), 'exact' for
+        Riemann/shock solutions, 'analytic' for the linear-wave ones."""
         name = str(dig(self.record, "deck.reference.name", "")).lower()
+        if name == "direct_md":
+            return "direct MD"
         return "exact" if ("riemann" in name or "shock" in name or "tube" in name) else "analytic"
+
+    def when(self, time):
+        """'t = 0.3 ps' (the time's unit where the deck names a unit system)."""
+        unit = self.units.unit("time")
+        return f"t = {format_time(time)}" + (f" {unit}" if unit else "")
 
     def error_norms(self, field):
         l1 = dig(self.record, f"errors.{field}.l1")
@@ -276,7 +288,7 @@ def single_run(directory, quiet):
             fig, ax = plt.subplots(figsize=(6.4, 4.4))
             plot_field(ax, run, snap, field, time)
             ax.set_title(title_lines(run, f"{field}, {run.scheme}, {run.ppc} particles/cell, "
-                                          f"t = {format_time(time)}"), fontsize=10)
+                                          f"{run.when(time)}"), fontsize=10)
             l1, l2 = run.error_norms(field)
             if time == times[-1] and (l1 is not None or l2 is not None):
                 text = "  ".join(f"{n} = {v:.3g}" for n, v in (("L1", l1), ("L2", l2)) if v is not None)
@@ -298,7 +310,12 @@ def energy_figure(run, out, quiet):
         return 0
     e = read_csv(path)
     require_columns(e, ("time", "total"), path)
-    parts = [n for n in ("kinetic", "internal") if has_data(e, n)]
+    # A law that keeps no stored-energy account (md_closure: the boxes' energy is not
+    # summed) writes internal = 0 throughout: not drawn, and the total said to be kinetic.
+    no_store = has_data(e, "internal") and not np.any(e["internal"][np.isfinite(e["internal"])] != 0.0)
+    parts = [n for n in ("kinetic", "internal") if has_data(e, n) and not (n == "internal" and no_store)]
+    if no_store:
+        parts = []
     if parts:
         fig, (ax, ax2) = plt.subplots(2, 1, figsize=(6.4, 6.0), sharex=True,
                                       gridspec_kw=dict(height_ratios=[3, 2]))
@@ -306,9 +323,12 @@ def energy_figure(run, out, quiet):
         fig, ax = plt.subplots(figsize=(6.4, 4.4))
     if has_data(e, "ref_total"):
         ax.plot(e["time"], e["ref_total"], label=run.reference_label, **REFERENCE_STYLE)
-    ax.plot(e["time"], e["total"], color="C3", linewidth=1.0, label=f"{scheme_label(run)} total")
-    ax.set_ylabel(run.energy_label("total energy $E$"))
-    ax.set_title(title_lines(run, f"total energy, {run.scheme}, {run.ppc} particles/cell"), fontsize=10)
+    what = "kinetic" if no_store else "total"
+    ax.plot(e["time"], e["total"], color="C3", linewidth=1.0, label=f"{scheme_label(run)} {what}")
+    ax.set_ylabel(run.energy_label("kinetic energy" if no_store else "total energy $E$"))
+    ax.set_title(title_lines(run, f"{what} energy, {run.scheme}, {run.ppc} particles/cell"
+                             + (f" ({run.material} keeps no stored-energy account)" if no_store else "")),
+                 fontsize=10)
     axes = [ax]
     if parts:
         styles = {"kinetic": dict(color="C0", linestyle="--"), "internal": dict(color="C2", linestyle=":")}
@@ -364,12 +384,24 @@ def compare(directories, field, out_path, quiet):
     ncols = 1 if n == 1 else (2 if n <= 4 else 3)
     nrows = math.ceil(n / ncols)
     fig, axes = plt.subplots(nrows, ncols, figsize=(4.6 * ncols, 3.4 * nrows + 0.6), squeeze=False)
+    # One y range over every panel (the runs' values and references), so that the
+    # schemes' overshoots compare by eye.
+    lo, hi = math.inf, -math.inf
+    for run in runs:
+        snap = run.snapshot(run.times()[-1])
+        for col in (field, "ref_" + field):
+            v = snap.get(col)
+            if v is not None and np.isfinite(v).any():
+                lo, hi = min(lo, float(np.nanmin(v))), max(hi, float(np.nanmax(v)))
+    pad = 0.05 * (hi - lo) if hi > lo else 1.0
     for k, run in enumerate(runs):
         ax = axes[k // ncols][k % ncols]
         time = run.times()[-1]
         plot_field(ax, run, run.snapshot(time), field, time)
+        if math.isfinite(lo):
+            ax.set_ylim(lo - pad, hi + pad)
         ax.set_title(f"({chr(ord('a') + k) if k < 26 else k}) {run.scheme}, {run.ppc} particles/cell, "
-                     f"t = {format_time(time)}", fontsize=9)
+                     f"{run.when(time)}", fontsize=9)
     for k in range(n, nrows * ncols):
         axes[k // ncols][k % ncols].set_visible(False)
     first = runs[0]

@@ -80,7 +80,8 @@ def main(argv=None):
     n = len(times)
     cols = min(n, 2)
     rows = math.ceil(n / cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(6.0 * cols, 3.6 * rows), squeeze=False)
+    # One y range over the panels: the times compare by eye.
+    fig, axes = plt.subplots(rows, cols, figsize=(6.0 * cols, 3.6 * rows), squeeze=False, sharey=True)
     for k, t in enumerate(times):
         ax = axes[k // cols][k % cols]
         if bar is not None:

@@ -11,10 +11,18 @@ records evenly between; one colour scale and one frame of axes for all panels.
 --component is x|y|z|magnitude for a vector, xx|xy|...|zz,
 magnitude (Frobenius) or pressure (-trace/3) for a row-major 3x3 tensor, or a component
 index. Without --field: the file's active scalars, else its first array; without
---component: magnitude for a vector, xx for a tensor. Each point is drawn as a square
-marker whose sides are the point pitch along x and y (a rectangle on a rectangular
-lattice; --marker-size fixes a square), in data units, so the picture is filled wherever
-the material is and empty where it is not.
+--component: magnitude for a vector, xx for a tensor. Each point is drawn as a rectangle:
+the initial point pitch along x and y, stretched by the point's own strain where it has
+been stretched (--marker-size fixes a square), in data units, so the picture is filled
+wherever the material is (no white seams where it has thinned) and empty (grey) where it
+is not.
+
+Colours: a field that takes both signs (a stress) in a diverging map (RdBu_r) centred on
+zero with symmetric limits, one of one sign (density, temperature) in viridis; the limits
+are the 1st and 99th percentiles of the values shown (--vmin, --vmax override), and the
+figure says how many points lie beyond them and their extremes. A body much longer than
+high (a quasi-1-D run: a plate impact) gets the field's profile along x beside its maps
+(the mean over y per column of points, one line per frame).
 
 Units come from the run's run.json (units.name, from the deck's case.units: nm_ps_GPa,
 mm_us_GPa, metal, SI) onto the axes and the colour bar; a deck with free-text units has
@@ -40,6 +48,7 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import plot_units  # noqa: E402
+from colour_scale import DIVERGING, EMPTY, SEQUENTIAL, Scale  # noqa: E402
 
 try:
     from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -217,8 +226,42 @@ def point_spacing(xy):
 # (N6's strip is 70:1, a line at any width); one flatter than STACK_ASPECT stacks its
 # panels in a column under one horizontal colour bar, otherwise they stand in a row.
 MIN_ASPECT = 0.12
-CLIP_PERCENT = 0.5
 STACK_ASPECT = 0.6
+# A point's rectangle grows with its stretch up to this factor (a spalled layer's points
+# stay points, not bands).
+MAX_STRETCH = 3.0
+# Every rectangle a little larger than the pitch: points a scheme has jostled (CPDI at a
+# shock) leave no pinholes between them.
+COVER = 1.1
+
+
+def stretches(fields, n, volume0=None):
+    """(n x 2) stretch of each point along x and y, at least 1: 1 + eps_aa of its strain
+    tensor (an integrated rate: the stretch to first order), else (a gas keeps no strain)
+    sqrt(V / V0) of its volume against the first record's."""
+    s = np.ones((n, 2))
+    strain = fields.get("strain")
+    volume = fields.get("volume")
+    if strain is not None and strain.shape[1] == 9 and np.any(strain[:, [0, 4]] != 0):
+        s[:, 0] = 1.0 + strain[:, 0]
+        s[:, 1] = 1.0 + strain[:, 4]
+    elif volume is not None and volume0 is not None and len(volume0) == n:
+        s[:, :] = np.sqrt(volume[:, 0] / volume0)[:, None]
+    return COVER * np.clip(np.nan_to_num(s, nan=1.0), 1.0, MAX_STRETCH)
+
+
+def column_profile(xy, values, hx):
+    """(x, mean over y) of the points binned into columns hx wide along x."""
+    ok = np.isfinite(values)
+    xy, values = xy[ok], values[ok]
+    if len(values) == 0:
+        return np.array([]), np.array([])
+    lo = xy[:, 0].min()
+    k = np.floor((xy[:, 0] - lo) / hx).astype(int)
+    count = np.bincount(k)
+    used = count > 0
+    centre = np.bincount(k, weights=xy[:, 0])[used] / count[used]
+    return centre, np.bincount(k, weights=values)[used] / count[used]
 
 
 def layout(width, height, panels):
@@ -252,7 +295,8 @@ def main(argv=None):
     ap.add_argument("--times", type=float, nargs="+", help="one panel per record nearest each time")
     ap.add_argument("--frames", type=int, help="up to N panels chosen over the run (first, peak, last)")
     ap.add_argument("--out", help="PNG file (default: next to the data)")
-    ap.add_argument("--cmap", default="jet")
+    ap.add_argument("--cmap", help=f"colour map (default: {DIVERGING} centred on zero for a field of both signs, "
+                    f"{SEQUENTIAL} otherwise)")
     ap.add_argument("--vmin", type=float)
     ap.add_argument("--vmax", type=float)
     ap.add_argument("--scale", type=float, default=1.0, help="multiply values (unit change)")
@@ -261,6 +305,7 @@ def main(argv=None):
     ap.add_argument("--marker-size", type=float, help="square side in length units "
                     "(default: the point pitch along x and y)")
     ap.add_argument("--title", help="replaces the default title (case, field)")
+    ap.add_argument("--no-profile", action="store_true", help="no profile along x beneath a quasi-1-D run's maps")
     args = ap.parse_args(argv)
     if sum(a is not None for a in (args.time, args.times, args.frames)) > 1:
         fail("give one of --time, --times, --frames")
@@ -276,6 +321,10 @@ def main(argv=None):
     else:
         path, time = pick_record(args.source, args.time)
         records = [(time, path)]
+    # The first record's volumes, for the stretch of laws that keep no strain.
+    series = list_records(args.source) if (args.source.endswith(".pvd") or os.path.isdir(args.source)) else []
+    start = read_dataset(series[0][1]) if series else None
+    volume0 = start[1]["volume"][:, 0] if start and "volume" in start[1] else None
     frames = []
     for time, path in records:
         points, fields, active = read_dataset(path)
@@ -285,10 +334,10 @@ def main(argv=None):
         if name not in fields:
             fail(f"{path} has no field '{name}' (it has: {', '.join(fields)})")
         values, label = component_values(fields[name], name, args.component)
-        frames.append((time, path, points[:, :2], values * args.scale))
+        frames.append((time, path, points[:, :2], values * args.scale, stretches(fields, len(values), volume0)))
     if args.frames:
         spans = np.array([np.nanmax(v) - np.nanmin(v) if np.isfinite(v).any() else np.nan
-                          for _, _, _, v in frames])
+                          for _, _, _, v, _ in frames])
         frames = [frames[k] for k in frame_indices(spans, args.frames)]
 
     units = plot_units.Units.of_source(args.source)
@@ -296,34 +345,47 @@ def main(argv=None):
     lunit = args.length_unit if args.length_unit is not None else units.unit("length")
     tunit = units.unit("time")
 
-    every = np.concatenate([v for _, _, _, v in frames])
+    every = np.concatenate([v for _, _, _, v, _ in frames])
     every = every[np.isfinite(every)]
-    # The scale spans the values but for the outer CLIP_PERCENT: a few points at a contact
-    # (N3's disks: -600 against some -50 elsewhere) would leave the rest one colour. The
-    # bar's arrows say when values lie beyond it.
-    lo_v = args.vmin if args.vmin is not None else float(np.percentile(every, CLIP_PERCENT))
-    hi_v = args.vmax if args.vmax is not None else float(np.percentile(every, 100 - CLIP_PERCENT))
-    if not hi_v > lo_v:  # a uniform field (t = 0) still needs a scale
-        lo_v, hi_v = float(every.min()), float(every.max())
-    if not hi_v > lo_v:
-        pad = max(abs(lo_v) * 0.05, 1e-12)
-        lo_v, hi_v = lo_v - pad, hi_v + pad
-    extend = {(False, False): "neither", (True, False): "min", (False, True): "max", (True, True): "both"}[
-        (bool(every.min() < lo_v), bool(every.max() > hi_v))]
-    # Each frame its own pitch: the first is the regular lattice, later ones are deformed.
-    pitch = [np.array([args.marker_size] * 2 if args.marker_size else point_spacing(xy)) for _, _, xy, _ in frames]
-    h = np.max(pitch, axis=0)
-    lo = np.min([xy.min(axis=0) for _, _, xy, _ in frames], axis=0) - 0.6 * h  # half a square and a little
-    hi = np.max([xy.max(axis=0) for _, _, xy, _ in frames], axis=0) + 0.6 * h
+    if every.size == 0:
+        fail(f"{name} has no finite value in the records drawn")
+    # colour_scale.py: diverging about zero for a signed field, percentile limits (a few
+    # points at a contact, N3's disks: -600 against some -50 elsewhere, would leave the
+    # rest one colour); the bar's arrows and the caption say what lies beyond.
+    # A tensor or vector component is centred on zero whatever its sign (a magnitude is not).
+    centred = name in SYMBOLS and args.component not in ("magnitude",) and \
+        not (args.component is None and frames and fields[name].shape[1] == 3)
+    scale = Scale(every, args.vmin, args.vmax, args.cmap, centred)
+    lo_v, hi_v, cmap, extend = scale.lo, scale.hi, scale.cmap, scale.extend
+    # The lattice pitch of the first record of the series (undeformed), each point's
+    # rectangle stretched with it; a single file's own.
+    if args.marker_size:
+        pitch0 = np.array([args.marker_size] * 2)
+    else:
+        first = start[0][:, :2] if start else frames[0][2]
+        pitch0 = np.array(point_spacing(first))
+    pitch = [pitch0[None, :] * (st if not args.marker_size else 1.0) for _, _, _, _, st in frames]
+    h = pitch0 * 1.0
+    lo = np.min([xy.min(axis=0) for _, _, xy, _, _ in frames], axis=0) - 0.6 * h  # half a square and a little
+    hi = np.max([xy.max(axis=0) for _, _, xy, _, _ in frames], axis=0) + 0.6 * h
     rows, cols, pw, ph, stretch, orient = layout(hi[0] - lo[0], hi[1] - lo[1], len(frames))
+    # A quasi-1-D run (drawn stretched): its profile along x beside the maps.
+    profile = stretch > 1.0 and orient == "horizontal" and not args.no_profile
 
     bar_in = 0.9 if orient == "horizontal" else 0.0
     # Room for the labels, the title and the bar around the panels; equal-aspect panels
     # leave any excess as blank margin, so it is kept small.
     fig_w = cols * (pw + 0.15) + (1.0 if orient == "vertical" else 0.0) + 0.8
-    fig_h = rows * (ph + (0.35 if len(frames) > 1 else 0.0)) + bar_in + 1.0
-    fig, axes = plt.subplots(rows, cols, figsize=(fig_w, fig_h), squeeze=False, layout="constrained",
-                             sharex=True, sharey=True)
+    fig_h = rows * (ph + (0.35 if len(frames) > 1 else 0.0)) + bar_in + 1.3
+    if profile:
+        prof_h = 2.6
+        fig = plt.figure(figsize=(fig_w, fig_h + prof_h), layout="constrained")
+        sub = fig.subfigures(2, 1, height_ratios=[fig_h, prof_h])
+        axes = sub[0].subplots(rows, cols, squeeze=False, sharex=True, sharey=True)
+        pax = sub[1].subplots()
+    else:
+        fig, axes = plt.subplots(rows, cols, figsize=(fig_w, fig_h), squeeze=False, layout="constrained",
+                                 sharex=True, sharey=True)
     # Cells in data units: filled material, as in ParaView, at any figure size or DPI.
     corners = np.array([[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]])
     coll = None
@@ -331,14 +393,17 @@ def main(argv=None):
         if k >= len(frames):
             ax.set_visible(False)
             continue
-        time, path, xy, values = frames[k]
-        coll = PolyCollection(xy[:, None, :] + (corners * pitch[k])[None, :, :], array=values, cmap=args.cmap,
-                              edgecolors="none", antialiaseds=False)
+        time, path, xy, values, _ = frames[k]
+        # Each point's rectangle; the edges in the face's colour close the seams that
+        # rasterising abutting rectangles leaves.
+        coll = PolyCollection(xy[:, None, :] + corners[None, :, :] * pitch[k][:, None, :], array=values, cmap=cmap,
+                              edgecolors="face", linewidths=0.3, antialiaseds=False)
         coll.set_clim(lo_v, hi_v)
         ax.add_collection(coll)
         ax.set_xlim(lo[0], hi[0])
         ax.set_ylim(lo[1], hi[1])
         ax.set_aspect(stretch)  # 1: equal; a y unit drawn `stretch` times an x unit
+        ax.set_facecolor(EMPTY)
         ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(nbins=4 if ph > 1.5 else 2))
         if len(frames) > 1 and time is not None:
             ax.set_title(f"t = {time:g}" + (f" {tunit}" if tunit else ""), fontsize=10)
@@ -350,11 +415,24 @@ def main(argv=None):
         ax.tick_params(labelsize=9)
     used = [ax for ax in axes.flat if ax.get_visible()]
     # A bar about 0.35 inch thick, whatever the figure's size (the default is 15% of it).
-    bar = fig.colorbar(coll, ax=used, orientation=orient, extend=extend, pad=0.02,
+    bar = (sub[0] if profile else fig).colorbar(coll, ax=used, orientation=orient, extend=extend, pad=0.02,
                        fraction=0.35 / (fig_w if orient == "vertical" else fig_h), shrink=0.9 if orient == "vertical" else 0.6,
                        aspect=30 if orient == "horizontal" else 25)
     bar.set_label(f"{label} ({vunit})" if vunit else label)
     bar.ax.tick_params(labelsize=9)
+    if profile:
+        for k, (time, _, xy, values, _) in enumerate(frames):
+            px, pv = column_profile(xy, values, pitch0[0])
+            when = f"t = {time:g}" + (f" {tunit}" if tunit else "") if time is not None else os.path.basename(frames[k][1])
+            pax.plot(px, pv, linewidth=1.0, label=when)
+        pax.set_xlim(lo[0], hi[0])
+        pax.set_xlabel(f"x ({lunit})" if lunit else "x")
+        pax.set_ylabel((f"{label} ({vunit})" if vunit else label) + "\nmean over y")
+        if scale.signed:
+            pax.axhline(0.0, color="0.6", linewidth=0.5)
+        pax.grid(True, linewidth=0.3, alpha=0.5)
+        pax.legend(fontsize=8, loc="best")
+        pax.tick_params(labelsize=9)
 
     if args.title:
         title = title_text(args.title, fig_w)
@@ -375,9 +453,11 @@ def main(argv=None):
         title = title_text(case, fig_w) + "\n" if case else ""
         title += f"{label}{when}"
     fig.suptitle(title, fontsize=11)
+    # What the colour limits leave out, said where the reader looks for the scale.
+    caption = scale.caption(vunit) + "; grey: no material"
     note = units.note() if not (args.unit or args.length_unit) else ""
-    if note:
-        fig.text(0.995, 0.003, note, ha="right", va="bottom", fontsize=7, color="0.4")
+    # Under the figure, where the layout keeps room for it.
+    (sub[1] if profile else fig).supxlabel(caption + (f"\n{note}" if note else ""), fontsize=7, color="0.25")
 
     out = args.out
     if not out:

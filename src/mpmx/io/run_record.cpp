@@ -54,6 +54,10 @@ void RunRecord::set(std::string_view dotted, toml::table table) {
   std::string leaf;
   parent_of(dotted, leaf).insert_or_assign(leaf, std::move(table));
 }
+void RunRecord::set(std::string_view dotted, toml::array values) {
+  std::string leaf;
+  parent_of(dotted, leaf).insert_or_assign(leaf, std::move(values));
+}
 
 void RunRecord::append(std::string_view dotted, toml::table table) {
   std::string leaf;

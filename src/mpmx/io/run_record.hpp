@@ -26,6 +26,7 @@ class RunRecord {
   void set(std::string_view dotted, const char* value) { set(dotted, std::string(value)); }
   void set(std::string_view dotted, const std::vector<double>& values);
   void set(std::string_view dotted, toml::table table);
+  void set(std::string_view dotted, toml::array values);
   // Appends a table to the array at `dotted` (created when absent).
   void append(std::string_view dotted, toml::table table);
 

@@ -280,4 +280,8 @@ void Series::restore_up_to(double t) {
   }
 }
 
+void Series::drop_files_containing(std::string_view part) {
+  std::erase_if(entries_, [&](const auto& e) { return e.second.find(part) != std::string::npos; });
+}
+
 }  // namespace mpmx::io::vtk

@@ -6,6 +6,7 @@
 // the old file or the new one, never a truncated one; an I/O failure throws
 // mpmx::RunError naming the path. Mismatched array sizes throw std::invalid_argument.
 #include <array>
+#include <string_view>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,6 +41,9 @@ class Series {
   // For resuming a run: re-reads an existing .pvd (none: start empty) and keeps its
   // entries with time <= t. The file itself is rewritten at the next add().
   void restore_up_to(double t);
+  // Drops the entries whose file name holds `part` (a stopped run's final record, which a
+  // resumed run replaces by its own records).
+  void drop_files_containing(std::string_view part);
 
   const std::vector<std::pair<double, std::string>>& entries() const { return entries_; }
 

@@ -1,6 +1,7 @@
 #include "mpmx/material/composite.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace mpmx::material {
@@ -78,6 +79,32 @@ void Composite<Dim>::add_viscous_heat(const Points<Dim>& p, const std::array<dou
     for (auto& a : qb) a += part.begin;
     part.law->add_viscous_heat(block(p, part.begin, part.count), qb, dt);
   }
+}
+
+template <int Dim>
+std::vector<PointField> Composite<Dim>::point_fields(const Points<Dim>& p) const {
+  // Every part's fields, in the order they first appear; NaN at the points of a law
+  // that has no such field.
+  std::vector<PointField> all;
+  for (const auto& part : parts_)
+    for (auto& f : part.law->point_fields(block(p, part.begin, part.count))) {
+      auto it = std::find_if(all.begin(), all.end(), [&](const PointField& a) { return a.name == f.name; });
+      if (it == all.end()) it = all.insert(all.end(), {f.name, std::vector<double>(p.size(), std::nan(""))});
+      std::copy(f.values.begin(), f.values.end(), it->values.begin() + static_cast<std::ptrdiff_t>(part.begin));
+    }
+  return all;
+}
+
+template <int Dim>
+std::string Composite<Dim>::point_model_dump(std::size_t q, std::int64_t step) const {
+  const Part& part = part_of(q);
+  return part.law->point_model_dump(q - part.begin, step);
+}
+
+template <int Dim>
+bool Composite<Dim>::runs_point_model(std::size_t q) const {
+  const Part& part = part_of(q);
+  return part.law->runs_point_model(q - part.begin);
 }
 
 template <int Dim>

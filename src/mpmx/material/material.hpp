@@ -35,6 +35,14 @@ struct FusedElastic1d {
   double youngs_modulus = 0.0;
 };
 
+// A per-point quantity a law carries beyond the points' arrays, for the output (the MD
+// boxes' temperature, the internal energy, the stress components a 1-D run keeps no
+// array for): its name as the files write it, and one value per point.
+struct PointField {
+  std::string name;
+  std::vector<double> values;
+};
+
 template <int Dim>
 class Material {
  public:
@@ -83,6 +91,15 @@ class Material {
   // (collective; called at checkpoints). True when state moved. Results never depend
   // on it.
   virtual bool rebalance(double /*threshold*/) { return false; }
+  // What the law carries per point beyond the points' arrays, for the output (none by
+  // default). Under MPI every rank holds the same values.
+  virtual std::vector<PointField> point_fields(const Points<Dim>&) const { return {}; }
+  // Point q's own model as a file of its own (md_closure: its MD box as a LAMMPS dump
+  // frame at `step`); "" where the law runs none. Collective under MPI (the rank that runs
+  // the box sends it): rank 0's answer is the file, the others get "".
+  virtual std::string point_model_dump(std::size_t /*q*/, std::int64_t /*step*/) const { return {}; }
+  // Whether the law runs a model of its own inside point q (what point_model_dump writes).
+  virtual bool runs_point_model(std::size_t /*q*/) const { return false; }
   // Per-point state beyond the point arrays, for checkpoints (none by default).
   virtual void save(std::ostream&) const {}
   virtual void load(std::istream&) {}

@@ -70,6 +70,7 @@ void MieGruneisen<Dim>::initialize(const Points<Dim>& p) {
   e_.assign(n, 0.0);
   v_.assign(n, 0.0);
   s_.assign(n, {});
+  ep_.assign(n, 0.0);
   const double G = m_.shear_modulus;
   for (std::size_t q = 0; q < n; ++q) {
     v_[q] = p.volume[q] / p.mass[q];
@@ -115,7 +116,11 @@ void MieGruneisen<Dim>::update_stress(const Points<Dim>& p, double dt) {
     Rh3.template topLeftCorner<Dim, Dim>() = Rh;
     const Mat3 s_old = deviator(q);
     const Mat3 trial = jaumann::objective_step<3>(s_old, Rh3, (2.0 * G * dt) * jaumann::deviator(D3));
-    set_deviator(q, radial_return(jaumann::deviator(trial), Y));
+    const Mat3 s_trial = jaumann::deviator(trial);
+    // The equivalent plastic strain of the return, (|s_trial|_vM - Y) / 3G (output only).
+    const double vm = std::sqrt(1.5 * s_trial.squaredNorm());
+    if (Y > 0.0 && vm > Y) ep_[q] += (vm - Y) / (3.0 * G);
+    set_deviator(q, radial_return(s_trial, Y));
     const Mat3 s_new = deviator(q);
 
     // Energy and pressure, implicit in p^{n+1} = A(eta^{n+1}) + B e^{n+1}.
@@ -145,23 +150,44 @@ double MieGruneisen<Dim>::stored_energy(const Points<Dim>& p, std::size_t q) con
 }
 
 template <int Dim>
+std::vector<PointField> MieGruneisen<Dim>::point_fields(const Points<Dim>&) const {
+  const std::size_t n = e_.size();
+  std::vector<PointField> f{{"internal_energy", e_}};
+  if (m_.yield_stress > 0.0) f.push_back({"plastic_strain", ep_});
+  if constexpr (Dim == 1) {
+    // Uniaxial strain: the lateral stresses -p + s_yy and -p + s_zz the points do not keep.
+    PointField yy{"stress_yy", std::vector<double>(n)}, zz{"stress_zz", std::vector<double>(n)};
+    for (std::size_t q = 0; q < n; ++q) {
+      const Mat3 s = stress3(q);
+      yy.values[q] = s(1, 1), zz.values[q] = s(2, 2);
+    }
+    f.push_back(std::move(yy));
+    f.push_back(std::move(zz));
+  }
+  return f;
+}
+
+template <int Dim>
 void MieGruneisen<Dim>::save(std::ostream& out) const {
   const std::uint64_t n = e_.size();
   out.write(reinterpret_cast<const char*>(&n), sizeof n);
   out.write(reinterpret_cast<const char*>(e_.data()), static_cast<std::streamsize>(n * sizeof(double)));
   out.write(reinterpret_cast<const char*>(v_.data()), static_cast<std::streamsize>(n * sizeof(double)));
   out.write(reinterpret_cast<const char*>(s_.data()), static_cast<std::streamsize>(n * sizeof(s_[0])));
+  out.write(reinterpret_cast<const char*>(ep_.data()), static_cast<std::streamsize>(n * sizeof(double)));
 }
 
 template <int Dim>
 void MieGruneisen<Dim>::load(std::istream& in) {
-  const std::uint64_t n = read_count(in, 2 * sizeof(double) + sizeof(s_[0]), "mie_gruneisen points");
+  const std::uint64_t n = read_count(in, 3 * sizeof(double) + sizeof(s_[0]), "mie_gruneisen points");
   e_.assign(n, 0.0);
   v_.assign(n, 0.0);
   s_.assign(n, {});
+  ep_.assign(n, 0.0);
   in.read(reinterpret_cast<char*>(e_.data()), static_cast<std::streamsize>(n * sizeof(double)));
   in.read(reinterpret_cast<char*>(v_.data()), static_cast<std::streamsize>(n * sizeof(double)));
   in.read(reinterpret_cast<char*>(s_.data()), static_cast<std::streamsize>(n * sizeof(s_[0])));
+  in.read(reinterpret_cast<char*>(ep_.data()), static_cast<std::streamsize>(n * sizeof(double)));
   if (!in) throw InputError("checkpoint: the mie_gruneisen state is truncated");
 }
 

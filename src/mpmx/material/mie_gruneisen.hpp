@@ -100,7 +100,10 @@ class MieGruneisen final : public Material<Dim> {
   // m e: the internal energy of the point.
   bool keeps_energy_account() const override { return true; }
   double stored_energy(const Points<Dim>& p, std::size_t q) const override;
-  // e, v and the six deviator components of every point, in point order.
+  // The specific internal energy e, the equivalent plastic strain (with Y > 0) and in 1-D
+  // the lateral stresses sigma_yy, sigma_zz. No temperature: the law has no heat capacity.
+  std::vector<PointField> point_fields(const Points<Dim>& p) const override;
+  // e, v, the six deviator components and the plastic strain of every point, in point order.
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;
   long long state_points() const override { return static_cast<long long>(e_.size()); }
@@ -133,6 +136,7 @@ class MieGruneisen final : public Material<Dim> {
   MieGruneisenParams m_;
   std::vector<double> e_, v_;
   std::vector<std::array<double, 6>> s_;  // xx, yy, zz, xy, xz, yz
+  std::vector<double> ep_;                 // equivalent plastic strain (output only)
 };
 
 extern template class MieGruneisen<1>;

@@ -32,6 +32,10 @@ struct Particles {
   // Tensor artificial viscosity (eqs. 7.8-7.10), added to the stress in the force;
   // empty unless the run uses it.
   std::array<std::vector<double>, tensor> viscous;
+  // Labels for the output, which the step never reads: the deck's [[body]] each point was
+  // placed from (0 without bodies) and the law it takes (0 the deck's [material], then
+  // the bodies' own laws in deck order).
+  std::vector<std::int32_t> body, law;
 
   void resize(std::size_t n) {
     for (int d = 0; d < Dim; ++d) {
@@ -48,6 +52,8 @@ struct Particles {
       length[c].assign(n, 0.0);
     }
     viscous_pressure.assign(n, 0.0);
+    body.assign(n, 0);
+    law.assign(n, 0);
     if constexpr (Dim == 2) stress_zz.assign(n, 0.0);
   }
 

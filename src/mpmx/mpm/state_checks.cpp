@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 #include <utility>
 
 #include <fmt/format.h>
@@ -26,9 +27,10 @@ void check_finite(const State<Dim>& s) {
       const std::pair<const char*, double> fields[] = {
           {"velocity", p.v[a][q]}, {"stress", p.stress[a * Dim + a][q]}, {"position", p.x[a][q]}};
       for (const auto& [name, v] : fields)
-        if (!std::isfinite(v))
-          throw RunError(fmt::format("non-finite {} ({}) at particle {} in step {} (t = {})", name,
-                                     v, q, s.step, s.time));
+        if (!std::isfinite(v))  // the component by its axis: sigma_xx, the y velocity
+          throw RunError(fmt::format("non-finite {} {} ({}) at particle {} in step {} (t = {})", name,
+                                     std::string_view(&"xx\0yy\0zz"[3 * a], name[0] == 's' ? 2 : 1), v, q,
+                                     s.step, s.time));
     }
   }
   throw RunError(fmt::format("non-finite stress work in step {} (t = {})", s.step, s.time));

@@ -116,7 +116,9 @@ template <int Dim>
 void step(State<Dim>& s, double dt) {
   try {
     step_body(s, dt);
-  } catch (const shape::LeftGrid& e) {  // thrown before the clock moves: this step, from this time
+  } catch (const RunError& e) {
+    // A point past the grid, a law's failure (a Mie-Gruneisen point past its Hugoniot's
+    // limit, an MD box): thrown before the clock moves, so this step, from this time.
     throw RunError(fmt::format("{} in step {} (t = {:.6g})", e.what(), s.step + 1, s.time));
   }
 }

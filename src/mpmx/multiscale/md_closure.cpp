@@ -17,6 +17,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/binary.hpp"
 #include "mpmx/core/interrupt.hpp"
+#include "mpmx/md/lammps_dump.hpp"
 #include "mpmx/particles/lattice.hpp"
 
 namespace mpmx::multiscale {
@@ -42,7 +43,7 @@ MdClosureProperties properties(const md::FccEquilibrium& eq, const units::UnitSy
 
 // The record a group's box returns to every rank: its stress (GPa), its box, its
 // neighbour-list builds and eq. 7.11's energy in and short.
-constexpr int kGroupRecord = 18;
+constexpr int kGroupRecord = 19;
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -172,6 +173,7 @@ void MdClosure<Dim>::initialize(const Points<Dim>& p) {
   for (std::size_t g = 0; g < G; ++g)
     if (boxes_[g]) stress_[g] = boxes_[g]->stress_gpa();
   shape_.assign(G, {});
+  temperature_.assign(G, 0.0);
   group_seconds_.assign(G, 0.0);
   rotation_.assign(n, as_array(Mat3d::Identity()));
   audits_.clear();
@@ -201,11 +203,13 @@ void MdClosure<Dim>::apply_split(const BoxGroups::Split& split) {
   owner_.resize(G, 0);
   stress_.resize(G);
   shape_.resize(G);
+  temperature_.resize(G);
   group_seconds_.resize(G, 0.0);
   for (const auto& c : split.clones) {  // a new group runs where its parent did, from a copy
     owner_[c.to] = owner_[c.from];
     stress_[c.to] = stress_[c.from];
     shape_[c.to] = shape_[c.from];
+    temperature_[c.to] = temperature_[c.from];
     if (mine(c.from)) boxes_[c.to] = std::make_unique<md::System>(*boxes_[c.from]);
   }
 }
@@ -383,6 +387,7 @@ void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure>
     out.push_back(static_cast<double>(boxes_[g]->neighbor_builds()));
     out.push_back(injected.empty() ? 0.0 : injected[g]);
     out.push_back(short_of.empty() ? 0.0 : short_of[g]);
+    out.push_back(boxes_[g]->temperature());
     for (int c = 0; c < 9; ++c)
       if (!std::isfinite(stress_[g][c]))
         failed = ranks::Failure{ranks::Failure::run,
@@ -415,6 +420,7 @@ void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure>
       for (int c = 0; c < 9; ++c) stress_[g][c] = rec[c];
       for (int c = 0; c < 7; ++c) shape_[g][c] = rec[9 + c];
       injected_ev_ += rec[16], shortfall_ev_ += rec[17];
+      temperature_[g] = rec[18];
     }
     for (std::size_t q = 0; q < groups_.points() && strain; ++q) {
       if (!groups_.auditor(q) || owner_[groups_.group_of(q)] != r) continue;
@@ -442,6 +448,36 @@ void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure>
         for (int b = 0; b < Dim; ++b) p.eps(q, a, b) += 0.5 * dt * (p.L(q, a, b) + p.L(q, b, a));
     }
   }
+}
+
+template <int Dim>
+std::vector<material::PointField> MdClosure<Dim>::point_fields(const Points<Dim>&) const {
+  const std::size_t n = groups_.points();
+  material::PointField T{"temperature", std::vector<double>(n)};
+  for (std::size_t q = 0; q < n; ++q) T.values[q] = temperature_[groups_.group_of(q)];
+  std::vector<material::PointField> f{std::move(T)};
+  if constexpr (Dim == 1) {
+    // The box's lateral stresses, which the 1-D points keep no array for (continuum units).
+    material::PointField yy{"stress_yy", std::vector<double>(n)}, zz{"stress_zz", std::vector<double>(n)};
+    for (std::size_t q = 0; q < n; ++q) {
+      const md::Mat3& box = stress_[groups_.group_of(q)];
+      yy.values[q] = box[4] / cfg_.units.stress_GPa, zz.values[q] = box[8] / cfg_.units.stress_GPa;
+    }
+    f.push_back(std::move(yy));
+    f.push_back(std::move(zz));
+  }
+  return f;
+}
+
+template <int Dim>
+std::string MdClosure<Dim>::point_model_dump(std::size_t q, std::int64_t step) const {
+  // The rank that runs q's box writes it; rank 0 gathers (the others send nothing).
+  std::ostringstream text;
+  if (q < groups_.points() && mine(groups_.group_of(q))) {
+    const md::System& box = *boxes_[groups_.group_of(q)];
+    md::write_lammps_dump(text, step, box.snapshot(), box.box());
+  }
+  return ranks::size() > 1 ? ranks::gather_to_root(text.str()) : text.str();
 }
 
 template <int Dim>
@@ -544,11 +580,13 @@ void MdClosure<Dim>::load(std::istream& in) {
   spread_groups(std::vector<double>(G, 1.0));
   boxes_.clear();
   boxes_.resize(G);
+  temperature_.assign(G, 0.0);
   // Every box is read (the run's own figures follow them); this rank keeps its own.
   for (std::size_t g = 0; g < G; ++g) {
     try {
       md::System box = md::System::load(in, pot_, box_options());
       box.compact();  // as the run keeps it between macro steps
+      temperature_[g] = box.temperature();
       if (mine(g)) boxes_[g] = std::make_unique<md::System>(std::move(box));
     } catch (const RunError& e) {  // a box the file describes that no run makes
       throw InputError(fmt::format("the MD box of group {} (point {}): {}", g, groups_.members(g).front(), e.what()));

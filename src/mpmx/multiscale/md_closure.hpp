@@ -90,6 +90,12 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   // every rank.
   void initialize(const Points<Dim>& p) override;
   void update_stress(const Points<Dim>& p, double dt) override;
+  // The boxes' kinetic temperature (K, about their mean velocity) at every point; in 1-D
+  // also the boxes' sigma_yy and sigma_zz.
+  std::vector<material::PointField> point_fields(const Points<Dim>& p) const override;
+  // Point q's box (its group's) as a LAMMPS dump frame at `step`.
+  std::string point_model_dump(std::size_t q, std::int64_t step) const override;
+  bool runs_point_model(std::size_t) const override { return true; }
   // sqrt(C11 / rho): the 0 K uniaxial-strain wave speed, for the viscosity.
   double sound_speed(const Points<Dim>& p, std::size_t q) const override;
   // The groups and every rank's boxes in group order, written by rank 0 alone: the file
@@ -166,6 +172,7 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   std::map<std::size_t, md::Mat3> audit_stress_;     // their last stress (box frame, GPa)
   std::vector<md::Mat3> stress_;                     // by group, box frame, GPa (every rank)
   std::vector<std::array<double, 7>> shape_;         // by group: lx, ly, lz, xy, xz, yz, neighbour builds
+  std::vector<double> temperature_;                  // by group, K (every rank)
   std::vector<md::Mat3> rotation_;                   // every point, on every rank
   std::vector<double> group_seconds_;                // each group's cost since the last rebalance check
   std::int64_t atom_steps_ = 0, atom_steps_unshared_ = 0;

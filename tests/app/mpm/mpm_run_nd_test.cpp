@@ -21,20 +21,6 @@
 using namespace mpmx;
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string capture(const std::string& cmd) {
-  std::string out;
-  if (FILE* f = popen(cmd.c_str(), "r")) {
-    char buf[4096];
-    while (std::size_t n = fread(buf, 1, sizeof buf, f)) out.append(buf, n);
-    pclose(f);
-  }
-  return out;
-}
-
-}  // namespace
-
 TEST(NdOutput, VtkFilesReadBackWithVtkAndRunJsonHasTheKeys) {
   const fs::path dir = fs::temp_directory_path() / "mpmx_nd_output_test";
   fs::remove_all(dir);
@@ -79,10 +65,14 @@ TEST(NdOutput, VtkFilesReadBackWithVtkAndRunJsonHasTheKeys) {
       "print(o.GetNumberOfPoints(), s.GetNumberOfComponents(), v.GetNumberOfComponents(), "
       "repr(s.GetComponent(7, 0)), repr(v.GetComponent(7, 1)), repr(o.GetPoint(7)[0]), i.GetDimensions()[0], "
       "i.GetDimensions()[1], i.GetPointData().GetArray('mass').GetNumberOfTuples(), repr(s.GetComponent(7, 8)), "
-      "repr(o.GetPointData().GetArray('pressure').GetComponent(7, 0)))\n";
+      "repr(o.GetPointData().GetArray('pressure').GetComponent(7, 0)))\n"
+      // The labels: every point's body (two disks: 0 and 1), its id and its law.
+      "d = o.GetPointData()\n"
+      "print(' '.join(repr(d.GetArray(a).GetComponent(q, 0)) for a in ('body', 'id', 'material') "
+      "for q in range(o.GetNumberOfPoints())))\n";
   const fs::path py = dir / "read.py";
   std::ofstream(py) << script;
-  const std::string out = capture("/usr/bin/python3 " + py.string() + " " + (dir / "vtk/particles_000050.vtu").string() +
+  const std::string out = test::capture("/usr/bin/python3 " + py.string() + " " + (dir / "vtk/particles_000050.vtu").string() +
                                   " " + (dir / "vtk/grid_000050.vti").string());
   std::istringstream in(out);
   std::size_t n = 0;
@@ -105,6 +95,22 @@ TEST(NdOutput, VtkFilesReadBackWithVtkAndRunJsonHasTheKeys) {
   EXPECT_EQ(nx, 21);
   EXPECT_EQ(ny, 21);
   EXPECT_EQ(nodes, 21u * 21u);
+  // body, id and material of every point, as the run placed them: the left disk body 0.
+  std::size_t left = 0;
+  for (const int label : {0, 1, 2})
+    for (std::size_t q = 0; q < n; ++q) {
+      double v = -1;
+      in >> v;
+      ASSERT_TRUE(in) << out;
+      const double want = label == 0 ? p.body[q] : label == 1 ? static_cast<double>(q) : p.law[q];
+      EXPECT_EQ(v, want) << label << " " << q;
+      if (label == 0) {
+        EXPECT_EQ(p.body[q], r.state.particles.x[0][q] < 0.0 ? 0 : 1) << q;
+        left += p.body[q] == 0;
+      }
+    }
+  EXPECT_GT(left, 0u);
+  EXPECT_LT(left, n);
   fs::remove_all(dir);
 }
 

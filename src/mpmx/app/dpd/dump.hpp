@@ -1,6 +1,6 @@
 #pragma once
 // LAMMPS text dump of one DPD frame (OVITO reads it): id type mass x y z vx vy vz u
-// [structure], u the internal energy (eV), structure the CNA code (cna.hpp) when given. md/dump.hpp writes MD frames of fully periodic boxes with
+// [structure], u the internal energy (eV), structure the CNA code (cna.hpp) when given. md/lammps_dump.hpp writes MD frames of fully periodic boxes with
 // type masses; a DPD frame also has open axes (bounds "ss", spanning the particles
 // and the box) and per-particle mass and internal energy, hence this writer.
 #include <cstdint>

@@ -25,6 +25,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
 #include "mpmx/io/deck.hpp"
+#include "mpmx/io/plot.hpp"
 #include "mpmx/io/staged_dir.hpp"
 #include "mpmx/md/bar.hpp"
 
@@ -184,7 +185,8 @@ void add_md_commands(CLI::App& app) {
   md->add_flag("--check", args->check,
                "validate the deck, the potential file and the memory and work estimates; write nothing");
   md->add_flag("--quiet,-q", args->quiet, "no progress line");
-  md->add_flag("--no-plot", args->no_plot, "ignored: md draws no figures (accepted as every command takes it)");
+  md->add_flag("--no-plot", args->no_plot,
+               "no figure of a deck's [scan] (energy_vs_lattice.png); other md decks draw none");
   md->add_flag("--force", args->force, "run even when the work estimate exceeds about a day (never the memory one)");
   md->add_flag("--resume", args->resume,
                "continue from OUT/checkpoint.bin, written by Ctrl-C or SIGTERM at a record (bit-for-bit; refused when "
@@ -211,9 +213,9 @@ void add_md_commands(CLI::App& app) {
       say_ignored_by_check(*md);
       return check_md(args->deck, args->force || args->lammps_write_only, args->lammps || args->lammps_write_only);
     }
-    say_ignored(*md, {{"--no-plot", "md draws no figures"}});
     auto deck = io::Deck::from_file(args->deck);
     md::MdConfig config = md::read_md_config(deck);  // parses the potential file too
+    if (config.scan_points == 0) say_ignored(*md, {{"--no-plot", "md draws figures only of a [scan]"}});
     if (args->still && !config.rod) throw InputError(fmt::format("{}: --still needs a deck with a [rod] table", args->deck));
     config.still = args->still;
     // mpmx md advances one large system: its threaded form (the same bits for any count).
@@ -256,6 +258,9 @@ void add_md_commands(CLI::App& app) {
         r.steps_now == r.steps ? std::string() : fmt::format(" ({} of them now, after --resume)", r.steps_now);
     fmt::print("{} atoms, {} steps{}, {:.3g} s, {:.4g} atom-steps/s, PE {:.6f} eV/atom -> {}/run.json\n", r.atoms,
                r.steps, now, r.wall_seconds, r.atom_steps_per_second, r.potential_energy_per_atom, out);
+    // The scan's curve (M1, fig. 7.2), as a continuum run draws its figures.
+    if (config.scan_points > 0 && !args->no_plot && io::matplotlib_present())
+      io::run_plot_script("md_scan.py", fmt::format("'{}' >/dev/null", out));
   });
 }
 

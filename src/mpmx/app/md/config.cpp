@@ -11,7 +11,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/app/case_table.hpp"
-#include "mpmx/app/md/dump.hpp"
+#include "mpmx/md/lammps_dump.hpp"
 #include "mpmx/core/checked_count.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/physical_bounds.hpp"

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "mpmx/app/md/dump.hpp"
+#include "mpmx/md/lammps_dump.hpp"
 #include "mpmx/app/md/run.hpp"
 #include "mpmx/app/reported_quantities.hpp"
 #include "mpmx/core/error.hpp"

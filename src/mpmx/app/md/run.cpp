@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "mpmx/app/md/dump.hpp"
+#include "mpmx/md/lammps_dump.hpp"
 #include "mpmx/app/md/jet_run.hpp"
 #include "mpmx/app/md/rod_run.hpp"
 #include "mpmx/app/reported_quantities.hpp"

@@ -138,6 +138,10 @@ struct MpmConfig {
   std::int64_t xt_every = 0;
   // [[gauge]]
   std::vector<GaugeConfig> gauges;
+  // md_dump: the points whose MD boxes are written as LAMMPS dumps, every so many steps
+  // (0: at the records)
+  std::vector<std::int64_t> md_dump_points;
+  std::int64_t md_dump_every = 0;
   // [reference]
   ReferenceConfig reference;
   ManufacturedConfig manufactured;

@@ -494,9 +494,17 @@ void read_output(Section& root, MpmConfig& c) {
     o.check(x >= 0.0 && x <= c.end * (1 + 1e-12), "times",
             fmt::format("every time must lie in [0, time.end = {}]", c.end));
   c.output_every = o.integer("every", 0, 0, std::numeric_limits<std::int64_t>::max());
-  c.write_nodes = o.boolean("nodes", true);
-  c.write_particles = o.boolean("particles", true);
-  c.plot = o.boolean("plot", true);
+  // Every key works in every dimension or is refused there: the CSV tables are 1-D's
+  // (a 2-D or 3-D run writes its points and nodes as VTK files), the figures 1-D's and 2-D's.
+  c.write_nodes = o.boolean("nodes", dim == 1);
+  c.write_particles = o.boolean("particles", dim == 1);
+  for (const char* key : {"nodes", "particles"})
+    if (dim > 1 && o.boolean(key, false))
+      o.check(false, key,
+              fmt::format("the CSV tables are written in 1-D only; a {}-D run writes its {} as VTK files "
+                          "(output.vtk, on by default: vtk/*.vtu and particles.pvd for ParaView)",
+                          dim, key[0] == 'n' ? "nodes (grid_*.vti)" : "points (particles_*.vtu)"));
+  c.plot = o.boolean("plot", true);  // 3-D: checked with [convergence] (read_reference)
   c.write_vtk = o.boolean("vtk", dim > 1);
   // The x-t diagram by default where a shock user looks for it: a 1-D or quasi-1-D deck
   // with a piston or a gauge (other runs ask for it: its table is cells x 400 numbers).
@@ -505,6 +513,22 @@ void read_output(Section& root, MpmConfig& c) {
   for (const auto& side : c.boundary.face) shock = shock || side.type == BoundarySide::Type::piston;
   c.write_xt = o.boolean("xt", quasi_1d && shock);
   c.xt_every = o.integer("xt_every", 0, 0, std::numeric_limits<std::int64_t>::max());
+  // md_dump = { points = [...], every = n }: the MD boxes of these points (their index in
+  // the output: the `particle` column, the `id` array) as LAMMPS dumps OVITO reads.
+  Section d = o.optional_table("md_dump");
+  if (d.present()) {
+    const bool boxes = c.material.spec && c.material.spec->point_cost(1.0).atoms > 0;
+    bool any = boxes;
+    for (const auto& b : c.bodies) any = any || (b.material && b.material->point_cost(1.0).atoms > 0);
+    if (!any) d.error("no law of this deck runs MD boxes in its points (material.model = \"md_closure\")");
+    const std::int64_t n = count_points(c);
+    for (std::int64_t q : d.integers("points", 0, std::numeric_limits<std::int64_t>::max())) {
+      d.check(q < n, "points", fmt::format("point {} is not one of the deck's {} points (0 to {})", q, n, n - 1));
+      c.md_dump_points.push_back(q);
+    }
+    d.check(!c.md_dump_points.empty(), "points", "name at least one point");
+    c.md_dump_every = d.integer("every", 0, 0, std::numeric_limits<std::int64_t>::max());
+  }
 }
 
 // [manufactured]: the solution that drives the run (VALIDATION.md N4).
@@ -628,6 +652,9 @@ MpmConfig read(Deck& deck) {
   read_output(root, c);
   read_manufactured(root, in, c);
   read_reference(root, c, deck_dir);
+  if (Section o = root.optional_table("output"); c.dim == 3 && c.convergence_levels <= 1 && o.has("plot") && c.plot)
+    o.check(false, "plot",
+            "a 3-D run draws no figures but a convergence study's (open particles.pvd in ParaView; or plot = false)");
   check_time_step(t, c, cfl_limit);
   deck.finish();
   return c;

@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstring>
 #include <iterator>
+#include <stdexcept>
 #include <filesystem>
 
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/app/mpm/reference.hpp"
+#include "mpmx/mpm/points.hpp"
 
 namespace mpmx::app {
 
@@ -38,8 +40,8 @@ void put_row(fmt::memory_buffer& b, double t, std::size_t index, double x, int x
 
 }  // namespace
 
-Output::Output(const std::string& dir, bool nodes, bool particles, Marks resume)
-    : dir_(dir), want_nodes_(nodes), want_particles_(particles), resume_(std::move(resume)) {}
+Output::Output(const std::string& dir, bool nodes, bool particles, Marks resume, std::string prefix)
+    : dir_(dir), want_nodes_(nodes), want_particles_(particles), resume_(std::move(resume)), prefix_(std::move(prefix)) {}
 
 Output::~Output() {
   for (std::FILE* f : {nodes_, particles_, energy_, front_})
@@ -109,7 +111,7 @@ void Output::record(const State<1>& s, const NodalFields& nf, const Reference* r
   };
   if (want_nodes_) {
     if (!nodes_)
-      nodes_ = open("nodes.csv",
+      nodes_ = open(prefix_ + "nodes.csv",
                     ref_header("time,node,x,mass,density,velocity,strain,stress,pressure,force").c_str());
     buf_.clear();
     for (int i = 0; i <= g.cells[0]; ++i) {
@@ -122,13 +124,23 @@ void Output::record(const State<1>& s, const NodalFields& nf, const Reference* r
     emit(nodes_, {buf_.data(), buf_.size()}, true);
   }
   if (want_particles_) {
-    if (!particles_)
-      particles_ = open("particles.csv",
-                        ref_header("time,particle,x,mass,volume,density,velocity,strain,stress,pressure").c_str());
+    // The law's own fields (temperature, the lateral stresses, ...) after ADMPM's columns
+    // and the labels; the columns are those of the first record.
+    const auto extra = s.material ? s.material->point_fields(points(p)) : std::vector<material::PointField>{};
+    if (!particles_) {
+      std::string h = "time,particle,x,mass,volume,density,velocity,strain,stress,pressure,body,material";
+      for (const auto& f : extra) h += "," + f.name;
+      particles_ = open(prefix_ + "particles.csv", ref_header(h).c_str());
+      extra_columns_ = extra.size();
+    }
+    if (extra.size() != extra_columns_)
+      throw std::logic_error(fmt::format("particles.csv: {} law fields where its header has {}", extra.size(),
+                                         extra_columns_));
     buf_.clear();
     for (std::size_t q = 0; q < p.size(); ++q) {
       put_row(buf_, t, q, p.x[0][q], 12, p.mass[q], p.volume[q], p.density(q), p.v[0][q], p.strain[0][q],
-              p.stress[0][q], -p.stress[0][q]);
+              p.stress[0][q], -p.stress[0][q], p.body.empty() ? 0.0 : p.body[q], p.law.empty() ? 0.0 : p.law[q]);
+      for (const auto& f : extra) buf_.push_back(','), put(buf_, f.values[q]);
       ref_columns(p.x[0][q]);
       buf_.push_back('\n');
     }

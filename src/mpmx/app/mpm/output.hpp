@@ -1,6 +1,7 @@
 #pragma once
 // The tables a 1-D run writes: particles.csv and nodes.csv at the recorded times
-// (ADMPM's columns and more, plus ref_<field> where a reference exists), energy.csv
+// (ADMPM's columns, the point's body and material, the law's own fields such as
+// temperature, plus ref_<field> where a reference exists), energy.csv
 // over time, front.csv for shock-front cases. Rows of one record are written and
 // flushed together, so a stopped run leaves whole records only.
 #include <cstdint>
@@ -26,8 +27,9 @@ class Output {
   using Marks = std::map<std::string, std::int64_t>;
 
   // With `resume`, each table is cut back to its recorded length and appended to, so a
-  // resumed run's tables equal an uninterrupted run's.
-  Output(const std::string& dir, bool nodes, bool particles, Marks resume = {});
+  // resumed run's tables equal an uninterrupted run's. `prefix` names the files
+  // (final_: a stopped run's last state, written once).
+  Output(const std::string& dir, bool nodes, bool particles, Marks resume = {}, std::string prefix = "");
   ~Output();
   Output(const Output&) = delete;
   Output& operator=(const Output&) = delete;
@@ -57,6 +59,8 @@ class Output {
   std::map<std::string, std::FILE*> tables_;  // row()'s, by name
   bool want_nodes_, want_particles_;
   Marks resume_;
+  std::string prefix_;
+  std::size_t extra_columns_ = 0;  // the law's fields in particles.csv
   fmt::memory_buffer buf_;  // one record's rows, written at once
 };
 

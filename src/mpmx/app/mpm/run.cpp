@@ -5,11 +5,13 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <utility>
 
 #include <fmt/format.h>
 
+#include "mpmx/app/mpm/box_dumps.hpp"
 #include "mpmx/app/mpm/checkpoint.hpp"
 #include "mpmx/app/mpm/comparison.hpp"
 #include "mpmx/app/mpm/convergence.hpp"
@@ -93,14 +95,20 @@ class ContinuumRun {
       marks = load_run_checkpoint(checkpoint_path(folder_.dir), c, s_, carry_, book_, rec_);
     });
     rec_.set("threads", r.threads);
+    rec_.set("materials", material_labels());
     rec_.set("ranks", static_cast<std::int64_t>(ranks::size()));
     ranks::together([&] {  // output from rank 0 only; a folder it cannot make stops all
       if (o.out_dir.empty() || !ranks::root()) return;
       std::filesystem::create_directories(folder_.dir);
+      if (o.resume)  // a stopped run's final tables: the resumed run goes on from its checkpoint
+        for (const char* f : {"final_particles.csv", "final_nodes.csv"}) std::filesystem::remove(folder_.dir + "/" + f);
       out_ = std::make_unique<Output>(folder_.dir, Dim == 1 && c.write_nodes, Dim == 1 && c.write_particles, marks);
       if (c.write_vtk) vtk_ = std::make_unique<VtkOutput<Dim>>(folder_.dir, o.resume ? s_.time : -1.0);
       if (c.write_xt) xt_ = std::make_unique<XtDiagram<Dim>>(c, s_.grid);
     });
+    // Every rank takes part in a dump (the box may run on any); rank 0 writes it.
+    if (!c.md_dump_points.empty() && !o.out_dir.empty())
+      dumps_ = std::make_unique<BoxDumps<Dim>>(folder_.dir, c.md_dump_points, *s_.material);
   }
 
   // The step loop: each step, then the checks, comparisons, records and checkpoints it
@@ -125,6 +133,7 @@ class ContinuumRun {
         const bool last = c_.cfl_dt ? !(s_.time < c_.end) : n == schedule_.steps;
         if (schedule_.compare_steps.count(n) && comparison_) comparison_->compare(s_, book_);
         if (due_record(n, at_record_time)) record();
+        if (dumps_ && c_.md_dump_every > 0 && n % c_.md_dump_every == 0) dumps_->write(s_);
         if (n % schedule_.energy_every == 0 || last) {
           check_volumes(s_);
           observe();
@@ -142,6 +151,7 @@ class ContinuumRun {
       // closure and the checkpoint agree on theirs (core/ranks).
       ranks::mark_agreed();
       failure_ = e.what();
+      record_final();
     }
     finish();
   }
@@ -179,6 +189,65 @@ class ContinuumRun {
     if constexpr (Dim == 1)
       if (out_) out_->record(s_, nodal_fields(s_), comparison_ ? comparison_->solution() : nullptr);
     if (comparison_) comparison_->at_record(s_, book_, out_.get());
+    if (dumps_ && (c_.md_dump_every == 0 || s_.step == 0)) dumps_->write(s_);
+  }
+
+  // What the points' `material` ids name: each law's model and the bodies whose points
+  // take it (ids in the order the laws' first points come, x fastest: the deck's
+  // [material] is 0).
+  toml::array material_labels() const {
+    const auto& p = s_.particles;
+    std::map<int, std::set<int>> bodies;
+    for (std::size_t q = 0; q < p.size(); ++q) bodies[p.law[q]].insert(p.body[q]);
+    toml::array out;
+    for (const auto& [law, of] : bodies) {
+      const int b = *of.begin();
+      const bool own = law > 0 && b < static_cast<int>(c_.bodies.size()) && c_.bodies[b].material;
+      const material::Model* m = own ? c_.bodies[b].material.get() : c_.material.spec.get();
+      toml::array ids;
+      for (int i : of) ids.push_back(i);
+      out.push_back(toml::table{{"id", law},
+                                {"model", m ? m->name() : std::string("?")},
+                                {"from", own ? "[[body]] " + std::to_string(b) + " [body.material]" : "[material]"},
+                                {"bodies", std::move(ids)}});
+    }
+    return out;
+  }
+
+  // The state a stopped run ends in, written as the regular records are but named
+  // final (vtk/particles_final_NNNNNN.vtu, last in particles.pvd; final_particles.csv and
+  // final_nodes.csv in 1-D) and said in run.json's "final_record", so the failing state
+  // can be seen. A part the state cannot give (a point past the grid has no nodal
+  // fields) is left out and said there.
+  void record_final() {
+    if (o_.out_dir.empty() || !ranks::root()) return;
+    toml::table said{{"step", s_.step}, {"time", s_.time}, {"reason", failure_}};
+    toml::array files, missing;
+    auto attempt = [&](const char* what, auto&& write) {
+      try {
+        write();
+        files.push_back(what);
+      } catch (const std::exception& e) {  // what the failed state cannot give
+        missing.push_back(fmt::format("{}: {}", what, e.what()));
+      }
+    };
+    if (vtk_) attempt("vtk/particles_final (.vtu, .vti)", [&] { vtk_->record(s_, true); });
+    if constexpr (Dim == 1)
+      if (out_ && (c_.write_particles || c_.write_nodes)) {
+        if (c_.write_particles) attempt("final_particles.csv", [&] {
+          Output last(folder_.dir, false, true, {}, "final_");
+          last.record(s_, NodalFields{}, nullptr);
+          last.close();
+        });
+        if (c_.write_nodes) attempt("final_nodes.csv", [&] {
+          Output last(folder_.dir, true, false, {}, "final_");
+          last.record(s_, nodal_fields(s_), nullptr);
+          last.close();
+        });
+      }
+    said.insert("files", std::move(files));
+    if (!missing.empty()) said.insert("not_written", std::move(missing));
+    rec_.set("final_record", std::move(said));
   }
 
   // The energy balance's figures, and the energy error against a reference that knows
@@ -350,6 +419,7 @@ class ContinuumRun {
   std::unique_ptr<VtkOutput<Dim>> vtk_;
   std::unique_ptr<Gauges<Dim>> gauges_;
   std::unique_ptr<XtDiagram<Dim>> xt_;
+  std::unique_ptr<BoxDumps<Dim>> dumps_;
   std::string failure_;
   std::chrono::steady_clock::time_point t0_;
   double last_checkpoint_ = 0.0;

@@ -119,6 +119,8 @@ State<Dim> make_state(const MpmConfig& c, bool initialize_material, int threads)
       p.v[1 % Dim][q] += b.angular_velocity * (at[q][0] - b.center[0]);
     }
     p.volume[q] = p.volume0[q] = V;
+    p.body[q] = std::max(owner[q], 0);
+    p.law[q] = law[q];
     const double v_profile = c.velocity(c.velocity.along(at[q], Dim), c.lower, L, dx);
     for (int d = 0; d < Dim; ++d) p.v[d][q] += v_profile * c.velocity.normal[d];
     const material::Model& m = *laws[law[q]];

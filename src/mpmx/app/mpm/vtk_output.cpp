@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/mpm/points.hpp"
+
 namespace mpmx::app {
 
 using namespace mpm;
@@ -39,13 +41,18 @@ VtkOutput<Dim>::VtkOutput(const std::string& dir, double resume_time)
     : dir_(dir), particles_(dir + "/particles.pvd"), grid_(dir + "/grid.pvd") {
   std::filesystem::create_directories(dir + "/vtk");
   if (resume_time >= 0.0) {
-    particles_.restore_up_to(resume_time);
-    grid_.restore_up_to(resume_time);
+    // A final record of a stopped run goes: the resumed run writes the state from here on.
+    for (auto* s : {&particles_, &grid_}) {
+      s->restore_up_to(resume_time);
+      s->drop_files_containing("_final_");
+    }
+    for (const auto& f : std::filesystem::directory_iterator(dir + "/vtk"))
+      if (f.path().filename().string().find("_final_") != std::string::npos) std::filesystem::remove(f.path());
   }
 }
 
 template <int Dim>
-void VtkOutput<Dim>::record(const State<Dim>& s) {
+void VtkOutput<Dim>::record(const State<Dim>& s, bool final) {
   const auto& p = s.particles;
   const std::size_t n = p.size();
   std::vector<double> xyz(3 * n, 0.0);
@@ -66,7 +73,20 @@ void VtkOutput<Dim>::record(const State<Dim>& s) {
     pressure.values.push_back(-tr / (Dim == 2 ? 3 : Dim));
   }
   for (auto* x : {&mass, &volume, &density, &pressure}) f.push_back(std::move(*x));
-  const std::string pname = fmt::format("vtk/particles_{:06d}.vtu", s.step);
+  // Labels, so that bodies and laws can be told apart (ParaView's Threshold on `body`), and
+  // the index the deck's md_dump and the 1-D tables name a point by.
+  io::vtk::Field id{"id", 1, {}}, body{"body", 1, {}}, law{"material", 1, {}};
+  for (std::size_t q = 0; q < n; ++q) {
+    id.values.push_back(static_cast<double>(q));
+    body.values.push_back(p.body.empty() ? 0.0 : p.body[q]);
+    law.values.push_back(p.law.empty() ? 0.0 : p.law[q]);
+  }
+  for (auto* x : {&id, &body, &law}) f.push_back(std::move(*x));
+  // What the law carries beyond the points (temperature, internal energy, plastic strain,
+  // 1-D's lateral stresses).
+  if (s.material)
+    for (auto& lf : s.material->point_fields(points(p))) f.push_back({lf.name, 1, std::move(lf.values)});
+  const std::string pname = fmt::format("vtk/particles_{}{:06d}.vtu", final ? "final_" : "", s.step);
   io::vtk::write_points(dir_ + "/" + pname, xyz, f);
   particles_.add(s.time, pname);
 
@@ -83,7 +103,7 @@ void VtkOutput<Dim>::record(const State<Dim>& s) {
     gm.values.push_back(g.mass[i]);
     for (int a = 0; a < 3; ++a) gv.values.push_back(a < Dim && g.mass[i] > 0.0 ? g.velocity_L[a][i] : 0.0);
   });
-  const std::string gname = fmt::format("vtk/grid_{:06d}.vti", s.step);
+  const std::string gname = fmt::format("vtk/grid_{}{:06d}.vti", final ? "final_" : "", s.step);
   io::vtk::write_image(dir_ + "/" + gname, nodes, origin, spacing, {gm, gv});
   grid_.add(s.time, gname);
 }

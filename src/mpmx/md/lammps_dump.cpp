@@ -1,4 +1,4 @@
-#include "mpmx/app/md/dump.hpp"
+#include "mpmx/md/lammps_dump.hpp"
 
 #include <algorithm>
 #include <iterator>
@@ -7,7 +7,7 @@
 
 #include "mpmx/md/structure.hpp"
 
-namespace mpmx::app::md {
+namespace mpmx::md {
 
 void write_lammps_dump(std::ostream& out, std::int64_t step, const Atoms& a, const Box& b,
                        const std::vector<DumpColumn>& more) {
@@ -70,4 +70,4 @@ void write_dump_frame(std::ostream& out, const System& sys, const std::vector<st
   write_lammps_dump(out, sys.step(), atoms, sys.box(), more);
 }
 
-}  // namespace mpmx::app::md
+}  // namespace mpmx::md

@@ -12,9 +12,7 @@
 #include "mpmx/md/particles.hpp"
 #include "mpmx/md/system.hpp"
 
-namespace mpmx::app::md {
-
-using namespace mpmx::md;  // the MD driver speaks the engine's names
+namespace mpmx::md {
 
 // A per-atom column: its name in the ITEM: ATOMS line and a value per atom (atoms' order).
 struct DumpColumn {
@@ -36,4 +34,4 @@ bool dump_needs_per_atom(const std::vector<std::string>& fields);
 // velocities; the structure is found within the potential's cut-off.
 void write_dump_frame(std::ostream& out, const System& sys, const std::vector<std::string>& fields, int threads = 1);
 
-}  // namespace mpmx::app::md
+}  // namespace mpmx::md
