@@ -115,13 +115,15 @@ PreparedLattice prepare_npt(const md::Potential& pot, const MdClosureConfig& c, 
   nh.barostat = true, nh.isotropic = true, nh.pressure = {0.0, 0.0, 0.0}, nh.p_damp = 1.0;
   md::NoseHoover coupling(nh, box);
   const std::int64_t half = c.prepare_steps / 2, rest = c.prepare_steps - half;
-  for (std::int64_t done = 0; done < half;) {
-    const int chunk = static_cast<int>(std::min<std::int64_t>(half - done, 1 << 20));
+  // In chunks of 1000 steps, so that Ctrl-C stops it (initialize then ends the run).
+  for (std::int64_t done = 0; done < half && !InterruptGuard::interrupted();) {
+    const int chunk = static_cast<int>(std::min<std::int64_t>(half - done, 1000));
     box.advance_coupled(chunk, c.dt, coupling);
     done += chunk;
   }
   double volume = 0.0, pressure = 0.0, temperature = 0.0;
   for (std::int64_t k = 0; k < rest; ++k) {  // the second half, sampled every step
+    if (k % 1000 == 0 && InterruptGuard::interrupted()) return PreparedLattice{a0, 0.0, 0.0};
     box.advance_coupled(1, c.dt, coupling);
     const md::Mat3 s = box.stress_gpa();
     volume += box.box().volume(), pressure -= (s[0] + s[4] + s[8]) / 3.0, temperature += box.temperature();

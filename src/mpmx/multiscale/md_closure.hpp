@@ -87,7 +87,8 @@ MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, co
 // The NPT preparation (prepare = npt): one box of `cells`^3 tiles of the crystal at the
 // 0 K constant a0, its atoms at `temperature` (stream `seed`), run by the Nose-Hoover
 // chain and the isotropic MTK barostat (target 0 GPa, Tdamp 0.1 ps, Pdamp 1 ps) for
-// `steps`; the lattice constant of its mean volume over the second half.
+// `steps`; the lattice constant of its mean volume over the second half. Interrupted
+// (Ctrl-C), it returns a0 at once: the caller ends the run.
 struct PreparedLattice {
   double lattice_constant = 0.0;  // Angstrom
   double pressure_gpa = 0.0;      // the mean pressure over the second half

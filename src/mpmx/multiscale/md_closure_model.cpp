@@ -83,7 +83,12 @@ double MdClosureModel::measured_rate() const {
 }
 
 std::string MdClosureModel::build_note() const {
-  return fmt::format("building the MD box of every point ({} atoms each, section 6.2)...", md.atoms_per_point());
+  const std::string npt = md.prepare == BoxPrepare::npt
+                              ? fmt::format("relaxing one box by NPT at {} K, 0 GPa ({} steps), then ", md.temperature,
+                                            md.prepare_steps)
+                              : std::string();
+  return fmt::format("{}building the MD box of every point ({} atoms each, section 6.2)...", npt,
+                     md.atoms_per_point());
 }
 std::vector<std::string> MdClosureModel::check_notes() const {
   const auto& o = md.lattice.orient;
