@@ -128,12 +128,7 @@ PreparedLattice prepare_npt(const md::Potential& pot, const MdClosureConfig& c, 
     const md::Mat3 s = box.stress_gpa();
     volume += box.box().volume(), pressure -= (s[0] + s[4] + s[8]) / 3.0, temperature += box.temperature();
   }
-  if (rest == 0) {
-    volume = box.box().volume(), temperature = box.temperature();
-    const md::Mat3 s = box.stress_gpa();
-    pressure = -(s[0] + s[4] + s[8]) / 3.0;
-  }
-  const double n = static_cast<double>(std::max<std::int64_t>(rest, 1));
+  const double n = static_cast<double>(rest);  // >= 1: the deck asks for 2 steps or more
   PreparedLattice r;
   r.lattice_constant = a0 * std::cbrt(volume / n / v0);
   r.pressure_gpa = pressure / n;
