@@ -13,6 +13,7 @@
 #include "../md/md_test_util.hpp"
 #include "../mpm/mpm_test_util.hpp"
 #include "mpmx/app/mpm/materials.hpp"
+#include "mpmx/mpm/particles.hpp"
 #include "mpmx/multiscale/md_closure_model.hpp"
 
 namespace mpmx::test {
@@ -43,6 +44,17 @@ inline app::MpmConfig tiny_bar(int points, int cells, int steps, double temperat
     t["output"].as_table()->insert_or_assign("times", toml::array{});
     t.erase("reference");
   });
+}
+
+// Two points of unit mass and volume at rest, the first unstrained and the second at
+// engineering strain `strain` along x: what a closure's initialize takes.
+inline mpm::Particles<1> two_points(double strain) {
+  mpm::Particles<1> p;
+  p.resize(2);
+  p.strain[0] = {0.0, strain};
+  p.mass = {1.0, 1.0};
+  p.volume = {1.0, 1.0};
+  return p;
 }
 
 // A copper flyer (x < 1.1 nm) moving at 0.5 km/s into copper at rest, 2-D DDMP-MD: 4 x 2

@@ -57,6 +57,19 @@ TEST(H2Small, DdmpMdCloserToDirectMdThanElastic) {
   EXPECT_LT(std::abs(mixed - md), 0.002);
 }
 
+// H5 (issue 47): the H2 recipe off copper, bcc Ta shocked along [110], 108-atom boxes
+// prepared by NPT at 10 K, against the direct MD of the same bar at the prepared lattice
+// constant. Measured 0.126 against the elastic closure's 0.173 (C11' of the [110] crystal):
+// the bounds are H2 small's, which the copper bar meets at 0.123 against 0.154.
+TEST(H5Small, TaAlong110DdmpMdCloserToDirectMdThanElastic) {
+  const std::string ref = direct_md("H5_ta_110");
+  const double md = error_vs("H5_ta_110_small.toml", ref);
+  const double elastic = error_vs("H5_ta_110_ddmp_elastic_small.toml", ref);
+  fmt::print("H5 small (Ta [110], NPT at 10 K), eq. 7.12: DDMP-MD {:.4f}, DDMP elastic {:.4f}\n", md, elastic);
+  EXPECT_LT(md, 0.9 * elastic);  // measured 0.126 vs 0.173
+  EXPECT_LT(md, 0.16);
+}
+
 }  // namespace
 
 namespace {

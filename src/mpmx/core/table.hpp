@@ -29,6 +29,9 @@ class Table {
   virtual int integer_int(std::string_view key, int lo, int hi) = 0;
   virtual int integer_int(std::string_view key, int fallback, int lo, int hi) = 0;
   virtual std::vector<std::int64_t> integers(std::string_view key, std::int64_t lo, std::int64_t hi) = 0;
+  // An array of arrays of integers, each entry in [lo, hi]; {} after an error.
+  virtual std::vector<std::vector<std::int64_t>> integer_rows(std::string_view key, std::int64_t lo,
+                                                              std::int64_t hi) = 0;
   virtual bool boolean(std::string_view key, bool fallback) = 0;
   virtual std::string string(std::string_view key) = 0;
   virtual std::string string(std::string_view key, std::string fallback) = 0;

@@ -55,7 +55,8 @@ class Section final : public Table {
   std::vector<std::int64_t> integers(std::string_view key, std::int64_t lo, std::int64_t hi) override;
   // An array of arrays of integers (`orient = [[1,1,0],[-1,1,0],[0,0,1]]`), each entry in
   // [lo, hi]; {} after an error (which names the row and entry).
-  std::vector<std::vector<std::int64_t>> integer_rows(std::string_view key, std::int64_t lo, std::int64_t hi);
+  std::vector<std::vector<std::int64_t>> integer_rows(std::string_view key, std::int64_t lo,
+                                                      std::int64_t hi) override;
   bool boolean(std::string_view key, bool fallback) override;
   std::string string(std::string_view key) override;
   std::string string(std::string_view key, std::string fallback) override;

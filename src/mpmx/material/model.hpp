@@ -80,6 +80,8 @@ class Model {
   virtual PointCost point_cost(double /*dt*/) const { return {}; }
   // A line to show before the points are built, when building them takes a while.
   virtual std::string build_note() const { return ""; }
+  // What `mpmx check` says of the law beyond the deck's figures (none by default).
+  virtual std::vector<std::string> check_notes() const { return {}; }
   // What the law is, for the code that needs its constants: linear isotropic elasticity,
   // an ideal gas, and the modulus of uniaxial strain a 1-D record names (0: none).
   virtual std::optional<IsotropicElastic> isotropic_elastic() const { return std::nullopt; }

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "mpmx/md/system.hpp"
+#include "mpmx/particles/oriented_lattice.hpp"
 
 namespace mpmx::md {
 
@@ -41,6 +42,11 @@ double box_bytes(const double n[3], double a, double reach);
 inline constexpr double kMaxTimedPairs = 2e6;  // a 500-atom copper box holds 19,000
 double measure_atom_steps_per_second(const Potential& pot, const SystemOptions& options, double a, int cells,
                                      double temperature, std::uint64_t seed, double dt);
+// The same for any crystal (particles/oriented_lattice), `tiles` per axis; its pairs
+// estimated as those of the fcc box of its atoms and density.
+double measure_atom_steps_per_second(const Potential& pot, const SystemOptions& options,
+                                     const particles::LatticeSpec& lattice, int tiles, double temperature,
+                                     std::uint64_t seed, double dt);
 
 // Bytes of a box's atoms (positions, velocities, forces, types and ids) and of its own
 // small state.

@@ -18,6 +18,7 @@
 #include "mpmx/core/binary.hpp"
 #include "mpmx/core/interrupt.hpp"
 #include "mpmx/md/lammps_dump.hpp"
+#include "mpmx/md/nose_hoover.hpp"
 #include "mpmx/particles/lattice.hpp"
 
 namespace mpmx::multiscale {
@@ -77,12 +78,66 @@ void read_raw(std::istream& in, T& v) {
   in.read(reinterpret_cast<char*>(&v), sizeof v);
 }
 
+// fcc along the axes by the scan it always had (the seed's numbers bit for bit); any
+// other crystal by lattice_equilibrium's, its constants in the box frame.
+md::CrystalEquilibrium equilibrium_of(const md::Potential& pot, const particles::LatticeSpec& lattice) {
+  return lattice.plain_fcc() ? md::fcc_equilibrium(pot) : md::lattice_equilibrium(pot, lattice);
+}
+
 }  // namespace
 
-MdClosureProperties md_closure_properties(const md::PotentialSpec& spec, const units::UnitSystem& u) {
+MdClosureProperties md_closure_properties(const md::PotentialSpec& spec, const units::UnitSystem& u,
+                                          const particles::LatticeSpec& lattice) {
   const md::Potential pot(spec);
-  MdClosureProperties r = properties(md::fcc_equilibrium(pot), u);
+  MdClosureProperties r = properties(equilibrium_of(pot, lattice), u);
   r.cutoff = pot.cutoff();
+  return r;
+}
+
+int MdClosureConfig::atoms_per_point() const {
+  if (lattice.plain_fcc()) return 4 * cells * cells * cells;
+  particles::LatticeSpec unit = lattice;
+  unit.constant = 1.0;  // the tile's atoms do not depend on the constant
+  return static_cast<int>(particles::lattice_tile(unit).atoms) * cells * cells * cells;
+}
+
+PreparedLattice prepare_npt(const md::Potential& pot, const MdClosureConfig& c, double a0) {
+  particles::LatticeSpec spec = c.lattice;
+  spec.constant = a0;
+  md::SystemOptions o;
+  o.skin = c.skin;
+  o.threads = 1;  // one box: the same numbers on any thread count
+  md::System box(particles::oriented_crystal(spec, {c.cells, c.cells, c.cells}), pot, o);
+  const double v0 = box.box().volume();
+  // Its own random stream: the points' boxes take streams 0, 1, ... (their indices).
+  box.thermalize(c.temperature, c.seed, std::numeric_limits<std::uint64_t>::max());
+  md::NoseHooverOptions nh;
+  nh.thermostat = true, nh.temperature = c.temperature, nh.t_damp = 0.1;
+  nh.barostat = true, nh.isotropic = true, nh.pressure = {0.0, 0.0, 0.0}, nh.p_damp = 1.0;
+  md::NoseHoover coupling(nh, box);
+  const std::int64_t half = c.prepare_steps / 2, rest = c.prepare_steps - half;
+  // In chunks of 1000 steps, so that Ctrl-C stops it (initialize then ends the run).
+  for (std::int64_t done = 0; done < half && !InterruptGuard::interrupted();) {
+    const int chunk = static_cast<int>(std::min<std::int64_t>(half - done, 1000));
+    box.advance_coupled(chunk, c.dt, coupling);
+    done += chunk;
+  }
+  double volume = 0.0, pressure = 0.0, temperature = 0.0;
+  for (std::int64_t k = 0; k < rest; ++k) {  // the second half, sampled every step
+    if (k % 1000 == 0 && InterruptGuard::interrupted()) return PreparedLattice{a0, 0.0, 0.0};
+    box.advance_coupled(1, c.dt, coupling);
+    const md::Mat3 s = box.stress_gpa();
+    volume += box.box().volume(), pressure -= (s[0] + s[4] + s[8]) / 3.0, temperature += box.temperature();
+  }
+  const double n = static_cast<double>(rest);  // >= 1: the deck asks for 2 steps or more
+  PreparedLattice r;
+  r.lattice_constant = a0 * std::cbrt(volume / n / v0);
+  r.pressure_gpa = pressure / n;
+  r.temperature = temperature / n;
+  if (!std::isfinite(r.lattice_constant) || !(r.lattice_constant > 0))
+    throw RunError(fmt::format("the NPT preparation of the MD boxes ({} steps at {} K) did not settle: its mean "
+                               "volume is {}; try a smaller material.md.dt",
+                               c.prepare_steps, c.temperature, volume / n));
   return r;
 }
 
@@ -96,7 +151,7 @@ int MdClosureConfig::md_steps(double dt_continuum) const {
 
 template <int Dim>
 MdClosure<Dim>::MdClosure(const MdClosureConfig& config)
-    : cfg_(config), pot_(config.potential), props_(properties(md::fcc_equilibrium(pot_), config.units)),
+    : cfg_(config), pot_(config.potential), props_(properties(equilibrium_of(pot_, config.lattice), config.units)),
       batch_(config.threads) {}
 
 template <int Dim>
@@ -127,8 +182,20 @@ void MdClosure<Dim>::initialize(const Points<Dim>& p) {
   groups_ = BoxGroups(std::vector<double>(p.strain[0], p.strain[0] + n), cfg_.share);
   const std::size_t G = groups_.groups();
   spread_groups(std::vector<double>(G, 1.0));
-  const double a0 = props_.equilibrium.lattice_constant;
   const auto t0 = std::chrono::steady_clock::now();
+  // prepare = npt: the one box relaxed at (T, 0 GPa) first, on every rank alike (one
+  // thread: the same numbers everywhere), whose mean lattice constant all boxes take.
+  std::optional<ranks::Failure> failed;
+  prepared_.reset();
+  if (cfg_.prepare == BoxPrepare::npt) {
+    try {
+      prepared_ = prepare_npt(pot_, cfg_, props_.equilibrium.lattice_constant);
+    } catch (const std::exception&) {
+      failed = ranks::current_failure();
+    }
+  }
+  particles::LatticeSpec spec = cfg_.lattice;
+  spec.constant = box_lattice_constant();
   // Each group's box built on the threads (section 6.2) from its first point's strain
   // and random stream: one group per point gives every point the box it had alone.
   std::vector<std::size_t> todo;
@@ -136,13 +203,13 @@ void MdClosure<Dim>::initialize(const Points<Dim>& p) {
     if (mine(g)) todo.push_back(g);
   boxes_.clear();
   boxes_.resize(G);
-  std::optional<ranks::Failure> failed;
-  try {
+  if (!failed) try {
     batch_.for_each(todo.size(), [&](std::size_t k) {
       const std::size_t g = todo[k], q = groups_.members(g).front();
       if (InterruptGuard::interrupted()) return;  // Ctrl-C: the boxes left are not built
       try {
-        md::System box(md::fcc(cfg_.cells, cfg_.cells, cfg_.cells, a0, p.strain[0][q]), pot_, box_options());
+        md::System box(particles::oriented_crystal(spec, {cfg_.cells, cfg_.cells, cfg_.cells}, p.strain[0][q]), pot_,
+                       box_options());
         if (cfg_.temperature > 0) box.thermalize(cfg_.temperature, cfg_.seed, q);
         box.advance(static_cast<int>(cfg_.relax_steps), cfg_.dt);  // zero strain rate
         box.compact();
@@ -562,6 +629,11 @@ void MdClosure<Dim>::save(std::ostream& out) const {
   for (const auto& r : rotation_) out.write(reinterpret_cast<const char*>(r.data()), sizeof(double) * 9);
   for (const auto& s : stress_) out.write(reinterpret_cast<const char*>(s.data()), sizeof(double) * 9);
   for (const auto& s : shape_) out.write(reinterpret_cast<const char*>(s.data()), sizeof(double) * 7);
+  // prepare = npt: the prepared lattice (decks that place the lattice write nothing more).
+  if (cfg_.prepare == BoxPrepare::npt) {
+    const PreparedLattice l = prepared_.value_or(PreparedLattice{});
+    for (const double v : {l.lattice_constant, l.pressure_gpa, l.temperature}) write_raw(out, v);
+  }
 }
 
 template <int Dim>
@@ -613,6 +685,12 @@ void MdClosure<Dim>::load(std::istream& in) {
   for (auto& r : rotation_) in.read(reinterpret_cast<char*>(r.data()), sizeof(double) * 9);
   for (auto& s : stress_) in.read(reinterpret_cast<char*>(s.data()), sizeof(double) * 9);
   for (auto& s : shape_) in.read(reinterpret_cast<char*>(s.data()), sizeof(double) * 7);
+  prepared_.reset();
+  if (cfg_.prepare == BoxPrepare::npt) {
+    PreparedLattice l;
+    for (double* v : {&l.lattice_constant, &l.pressure_gpa, &l.temperature}) read_raw(in, *v);
+    prepared_ = l;
+  }
   if (!in) throw InputError("checkpoint: the MD boxes' rotations and stresses are truncated");
   neighbor_builds_ = 0;
   for (const auto& s : shape_) {
@@ -692,7 +770,7 @@ std::vector<material::Figure> MdClosure<Dim>::figures() const {
   const auto& eq = props_.equilibrium;
   std::vector<material::Figure> f{{"md.atoms_per_point", std::int64_t{atoms_per_point()}},
                                   {"md.points", static_cast<std::int64_t>(groups_.points())},
-                                  {"md.lattice_constant_A", eq.lattice_constant},
+                                  {"md.lattice_constant_A", box_lattice_constant()},
                                   {"md.energy_per_atom_eV", eq.energy_per_atom},
                                   {"md.c11_GPa", eq.c11_gpa},
                                   {"md.density", density()},
@@ -704,6 +782,12 @@ std::vector<material::Figure> MdClosure<Dim>::figures() const {
                                   {"md.boxes.initial", static_cast<std::int64_t>(groups_.groups_initial())},
                                   {"md.boxes.max", static_cast<std::int64_t>(groups_.groups_max())},
                                   {"md.boxes.final", static_cast<std::int64_t>(groups_.groups())}};
+  if (prepared_) {  // prepare = npt: the constant above is NPT's; the 0 K one and the NPT run's means
+    f.emplace_back("md.lattice_constant_0K_A", eq.lattice_constant);
+    f.emplace_back("md.prepare.pressure_GPa", prepared_->pressure_gpa);
+    f.emplace_back("md.prepare.temperature_K", prepared_->temperature);
+    f.emplace_back("md.prepare.steps", std::int64_t{cfg_.prepare_steps});
+  }
   if (audit_samples_ > 0) {
     f.emplace_back("md.share.audit_rel_rms", audit_rel_rms());
     f.emplace_back("md.share.audit_max_gpa", audit_max_gpa());

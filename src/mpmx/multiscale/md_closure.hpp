@@ -6,6 +6,10 @@
 // never re-initialised; each continuum step its velocity gradient (eq. 6.3) deforms
 // the box for dt / dt_md MD steps and the box's virial stress (eq. 2.25) is the point's
 // stress. Units are converted here only (core/units).
+// The crystal is any of particles/oriented_lattice's (fcc, bcc, hcp in any orientation;
+// `cells` periodic tiles per axis, fcc along the axes as it always was), at the 0 K
+// lattice constant or, with `prepare = npt`, at the mean lattice constant of one box
+// relaxed by NPT at the deck's temperature and zero pressure before any point's box is built.
 //
 // Points whose boxes follow one history share one box (multiscale/box_groups.hpp: a
 // group is cloned when a member's history departs, a few members are audited on private
@@ -34,15 +38,22 @@
 #include "mpmx/multiscale/batch.hpp"
 #include "mpmx/multiscale/box_groups.hpp"
 #include "mpmx/multiscale/spread.hpp"
+#include "mpmx/particles/oriented_lattice.hpp"
 
 namespace mpmx::multiscale {
 
 using material::Material;
 using material::Points;
 
+// How the boxes' lattice constant is chosen: the 0 K crystal's, or NPT's at the temperature.
+enum class BoxPrepare { lattice, npt };
+
 struct MdClosureConfig {
   md::PotentialSpec potential;
-  int cells = 4;                   // n x n x n fcc cells: 4 -> 256 atoms, 5 -> 500
+  particles::LatticeSpec lattice;  // style, orientation, c/a (its constant is not read)
+  int cells = 4;                   // n x n x n tiles: fcc along the axes, 4 -> 256 atoms, 5 -> 500
+  BoxPrepare prepare = BoxPrepare::lattice;
+  std::int64_t prepare_steps = 10000;  // prepare = npt: the NPT run's steps
   double temperature = 0.0;        // K
   std::uint64_t seed = 1;          // with a group's first point: one random stream per box
   double dt = 0.001;               // MD step, ps
@@ -55,7 +66,8 @@ struct MdClosureConfig {
   int energy_consistency = -1;     // eq. 7.11: 1 on, 0 off, -1 the default (on in 2-D and 3-D)
   ShareOptions share;              // [material.md.share]: boxes shared by history
 
-  int atoms_per_point() const { return 4 * cells * cells * cells; }
+  // The atoms of one tile times cells^3 (4 cells^3 for fcc along the axes).
+  int atoms_per_point() const;
   // MD steps in a continuum step `dt` (continuum units); 0 when not a whole number.
   int md_steps(double dt) const;
 };
@@ -68,7 +80,21 @@ struct MdClosureProperties {
   double c12 = 0.0, c44 = 0.0;  // the other cubic constants (continuum units)
   double cutoff = 0.0;          // the potential's, Angstrom
 };
-MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, const units::UnitSystem& u);
+// Of fcc along the axes unless `lattice` names another crystal (its box-frame constants).
+MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, const units::UnitSystem& u,
+                                          const particles::LatticeSpec& lattice = {});
+
+// The NPT preparation (prepare = npt): one box of `cells`^3 tiles of the crystal at the
+// 0 K constant a0, its atoms at `temperature` (stream `seed`), run by the Nose-Hoover
+// chain and the isotropic MTK barostat (target 0 GPa, Tdamp 0.1 ps, Pdamp 1 ps) for
+// `steps`; the lattice constant of its mean volume over the second half. Interrupted
+// (Ctrl-C), it returns a0 at once: the caller ends the run.
+struct PreparedLattice {
+  double lattice_constant = 0.0;  // Angstrom
+  double pressure_gpa = 0.0;      // the mean pressure over the second half
+  double temperature = 0.0;       // the mean temperature over the second half, K
+};
+PreparedLattice prepare_npt(const md::Potential& pot, const MdClosureConfig& c, double a0);
 
 // In 2-D and 3-D the point's full velocity gradient drives its box (eqs. 5.7-5.8; a lower
 // triangle is turned upper triangular by eq. 5.20, the z length of a 2-D run stays
@@ -107,6 +133,10 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   long long state_points() const override { return static_cast<long long>(groups_.points()); }
 
   const md::FccEquilibrium& equilibrium() const { return props_.equilibrium; }
+  // The lattice constant the boxes are built at (the 0 K one, or NPT's), Angstrom.
+  double box_lattice_constant() const {
+    return prepared_ ? prepared_->lattice_constant : props_.equilibrium.lattice_constant;
+  }
   double density() const { return props_.density; }  // unstrained crystal, continuum units
   double modulus() const { return props_.modulus; }  // C11, continuum units
   int atoms_per_point() const { return cfg_.atoms_per_point(); }
@@ -182,6 +212,7 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   std::int64_t neighbor_builds_ = 0;
   double audit_d2_ = 0.0, audit_s2_ = 0.0, audit_max_gpa_ = 0.0;
   std::int64_t audit_samples_ = 0;
+  std::optional<PreparedLattice> prepared_;          // prepare = npt, from initialize (or the checkpoint)
   // MPMX_TEST_NAN_POINT: the point whose stress comes back NaN (tests only).
   std::optional<std::size_t> nan_point_;
 };

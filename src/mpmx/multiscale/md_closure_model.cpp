@@ -5,17 +5,31 @@
 #include <limits>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/budget.hpp"
 #include "mpmx/md/equilibrium.hpp"
 #include "mpmx/md/potential/registry.hpp"
+#include "mpmx/particles/lattice_keys.hpp"
 
 namespace mpmx::multiscale {
 
 using material::Context;
 using material::Material;
 using material::Model;
+
+namespace {
+constexpr double kMaxAtomsPerPoint = 1e6;  // a box past this is no material point's
+
+// The volume of a point's unstrained box at lattice constant a, A^3.
+double box_volume(const MdClosureConfig& md, double a) {
+  particles::LatticeSpec spec = md.lattice;
+  spec.constant = a;
+  const auto t = particles::lattice_tile(spec);
+  return t.length[0] * t.length[1] * t.length[2] * md.cells * md.cells * md.cells;
+}
+}  // namespace
 
 double MdClosureModel::wave_speed(int, double density, double) const { return std::sqrt(c11 / density); }
 
@@ -32,7 +46,11 @@ material::PointCost MdClosureModel::point_cost(double dt) const {
   material::PointCost c;
   const double n[3] = {double(md.cells), double(md.cells), double(md.cells)};
   constexpr double kClosureBytesPerPoint = 256;  // rotation, group, deviation, stress and shape records
-  c.bytes = md::kept_box_bytes(md.cells, a0, cutoff + md.skin) + kClosureBytesPerPoint;
+  // Another crystal than fcc along the axes: as the fcc box of its atoms and density.
+  const double atoms = md.atoms_per_point(), cells = std::cbrt(atoms / 4.0);
+  const double a_fcc = md.lattice.plain_fcc() ? a0 : std::cbrt(4.0 / number_density);
+  c.bytes = md::kept_box_bytes(md.lattice.plain_fcc() ? md.cells : cells, a_fcc, cutoff + md.skin) +
+            kClosureBytesPerPoint;
   // A Cu-like fcc box (a = 3.615 A) reached by an 8 A cutoff plus skin, whole (md/budget's fit).
   c.scratch_bytes = md::box_bytes(n, 3.615, 8.0 + md.skin);
   c.atoms = md.atoms_per_point();
@@ -53,16 +71,39 @@ double MdClosureModel::measured_rate() const {
     md::SystemOptions o;
     o.skin = md.skin;
     o.mixed_precision = md.mixed_precision;
-    return md::measure_atom_steps_per_second(pot, o, md::fcc_equilibrium(pot).lattice_constant, md.cells,
-                                             md.temperature, md.seed, md.dt);
+    if (md.lattice.plain_fcc())
+      return md::measure_atom_steps_per_second(pot, o, md::fcc_equilibrium(pot).lattice_constant, md.cells,
+                                               md.temperature, md.seed, md.dt);
+    particles::LatticeSpec spec = md.lattice;
+    spec.constant = a0;
+    return md::measure_atom_steps_per_second(pot, o, spec, md.cells, md.temperature, md.seed, md.dt);
   } catch (const std::exception&) {
     return 0.0;  // the run itself reports what is wrong with the box
   }
 }
 
 std::string MdClosureModel::build_note() const {
-  return fmt::format("building the MD box of every point ({} atoms each, section 6.2)...", md.atoms_per_point());
+  const std::string npt = md.prepare == BoxPrepare::npt
+                              ? fmt::format("relaxing one box by NPT at {} K, 0 GPa ({} steps), then ", md.temperature,
+                                            md.prepare_steps)
+                              : std::string();
+  return fmt::format("{}building the MD box of every point ({} atoms each, section 6.2)...", npt,
+                     md.atoms_per_point());
 }
+std::vector<std::string> MdClosureModel::check_notes() const {
+  const auto& o = md.lattice.orient;
+  std::vector<std::string> r{fmt::format(
+      "each point's box: {} tiles of {} ({} atoms), x [{}], y [{}], z [{}], at {:.6f} A (the potential's 0 K lattice)",
+      md.cells, particles::lattice_name(md.lattice.style), md.atoms_per_point(), fmt::join(o[0], " "),
+      fmt::join(o[1], " "), fmt::join(o[2], " "), a0)};
+  if (md.prepare == BoxPrepare::npt)
+    r.push_back(fmt::format("prepared by NPT: one box at {} K and 0 GPa for {} steps (Nose-Hoover, Tdamp 0.1 ps, "
+                            "isotropic Pdamp 1 ps) before the run; every box is built at its mean lattice constant "
+                            "over the second half (run.json's md.lattice_constant_A)",
+                            md.temperature, md.prepare_steps));
+  return r;
+}
+
 std::unique_ptr<Material<1>> MdClosureModel::make1() const { return std::make_unique<MdClosure<1>>(md); }
 std::unique_ptr<Material<2>> MdClosureModel::make2() const { return std::make_unique<MdClosure<2>>(md); }
 std::unique_ptr<Material<3>> MdClosureModel::make3() const { return std::make_unique<MdClosure<3>>(md); }
@@ -79,7 +120,23 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   md.potential = md::read_potential(*m.sub("potential"), ctx.deck_dir);
   auto md_table = m.sub("md");
   Table& s = *md_table;
-  md.cells = s.integer_int("cells", 4, 1, 20);  // 4 x cells^3 atoms per point
+  // The crystal: md decks' [lattice] keys (lattice for their type), `cells` tiles per axis.
+  particles::read_crystal_keys(s, "lattice", md.lattice);
+  s.check(md.lattice.style != particles::LatticeStyle::b2, "lattice",
+          "b2 needs two elements on one lattice; a closure's box is of one element (use fcc, bcc or hcp)");
+  if (md.lattice.style == particles::LatticeStyle::b2) md.lattice.style = particles::LatticeStyle::fcc;
+  md.cells = s.integer_int("cells", 4, 1, 20);  // fcc along the axes: 4 x cells^3 atoms per point
+  if (!md.lattice.plain_fcc() && particles::orient_problem(md.lattice).empty()) {
+    particles::LatticeSpec unit = md.lattice;
+    unit.constant = 1.0;
+    const double atoms = static_cast<double>(particles::lattice_tile(unit).atoms) * md.cells * md.cells * md.cells;
+    s.check(atoms <= kMaxAtomsPerPoint, "cells",
+            fmt::format("gives {:.0f} atoms per point (a tile of this orientation holds {}); at most {} are allowed",
+                        atoms, particles::lattice_tile(unit).atoms, kMaxAtomsPerPoint));
+    if (!(atoms <= kMaxAtomsPerPoint)) md.lattice = particles::LatticeSpec{};
+  } else if (!md.lattice.plain_fcc()) {
+    md.lattice = particles::LatticeSpec{};  // the orientation's problem is said; read on with fcc
+  }
   md.temperature = s.number("temperature", 0.0);
   s.temperature("temperature", md.temperature);
   md.seed = static_cast<std::uint64_t>(s.integer("seed", 1, 0, std::numeric_limits<std::int64_t>::max()));
@@ -87,6 +144,13 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   s.positive("dt", md.dt);
   s.check(md.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
   md.relax_steps = s.integer("relax_steps", 0, 0, std::numeric_limits<int>::max());  // one advance of the box
+  // "npt": one box relaxed at (temperature, 0 GPa) sets every box's lattice constant.
+  md.prepare = s.choice("prepare", {"lattice", "npt"}, "lattice") == "npt" ? BoxPrepare::npt : BoxPrepare::lattice;
+  md.prepare_steps = s.integer("prepare_steps", 10000, 2, 100000000);
+  s.check(md.prepare == BoxPrepare::npt || !s.has("prepare_steps"), "prepare_steps",
+          "has no use without prepare = \"npt\"");
+  s.check(md.prepare != BoxPrepare::npt || md.temperature > 0, "prepare",
+          "npt needs material.md.temperature > 0 (its thermostat's target); at 0 K the 0 K lattice is the one");
   md.sample = s.choice("stress", {"last", "average"}, "last") == "last" ? multiscale::StressSample::last
                                                                         : multiscale::StressSample::average;
   md.skin = s.number("skin", 1.0);
@@ -103,10 +167,12 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   md.share.seed = md.seed;
   if (md::complete(md.potential)) {
     try {
-      const auto props = md_closure_properties(md.potential, md.units);
+      const auto props = md_closure_properties(md.potential, md.units, md.lattice);
       r->rho = props.density;
       r->c11 = props.modulus;
       r->a0 = props.equilibrium.lattice_constant;
+      // its atoms per A^3 (the budget takes another crystal as the fcc box of its atoms)
+      r->number_density = static_cast<double>(md.atoms_per_point()) / box_volume(md, r->a0);
       r->cutoff = props.cutoff;
     } catch (const std::exception& e) {
       m.check(false, "potential", e.what());

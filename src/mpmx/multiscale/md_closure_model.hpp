@@ -14,6 +14,7 @@ struct MdClosureModel final : material::Model {
   MdClosureConfig md;
   double rho = 1.0, c11 = 1.0;   // the unstrained crystal's, continuum units
   double a0 = 3.615, cutoff = 8.0;  // its lattice constant and the potential's cutoff, Angstrom
+  double number_density = 4.0 / (3.615 * 3.615 * 3.615);  // its atoms per A^3
 
   std::string name() const override { return "md_closure"; }
   double density() const override { return rho; }
@@ -31,6 +32,8 @@ struct MdClosureModel final : material::Model {
   material::PointCost point_cost(double dt) const override;
   double measured_rate() const;
   std::string build_note() const override;
+  // The boxes' crystal and, with prepare = npt, the NPT run before the points' boxes.
+  std::vector<std::string> check_notes() const override;
   std::unique_ptr<material::Material<1>> make1() const override;
   std::unique_ptr<material::Material<2>> make2() const override;
   std::unique_ptr<material::Material<3>> make3() const override;

@@ -15,6 +15,7 @@
 #include "mpmx/core/checked_count.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/physical_bounds.hpp"
+#include "mpmx/particles/lattice_keys.hpp"
 
 namespace mpmx::app::md {
 
@@ -31,34 +32,14 @@ void check_constant(io::Section& s, std::string_view key, double a, const partic
   if (!why.empty()) s.check(false, key, why);
 }
 
-// [lattice].orient: three integer directions for x, y, z (LAMMPS's `orient`).
-void read_orient(io::Section& lat, particles::LatticeSpec& spec) {
-  if (!lat.has("orient")) return;
-  const auto rows = lat.integer_rows("orient", -1000, 1000);
-  if (rows.empty()) return;  // the reader said why
-  const bool shaped = rows.size() == 3 && rows[0].size() == 3 && rows[1].size() == 3 && rows[2].size() == 3;
-  lat.check(shaped, "orient", "expected three directions [[u,v,w], [u,v,w], [u,v,w]] for x, y and z");
-  if (!shaped) return;
-  for (int d = 0; d < 3; ++d)
-    for (int k = 0; k < 3; ++k) spec.orient[d][k] = static_cast<int>(rows[d][k]);
-  if (const std::string why = particles::orient_problem(spec); !why.empty()) lat.check(false, "orient", why);
-}
-
 // [lattice]: the crystal (fcc, bcc or hcp in any orientation) and its initial strain.
 // `sample`: the deck builds a [jet] or [rod], whose samples are fcc cells along the axes.
 void read_lattice(io::Section& lat, bool sample, MdConfig& c) {
   particles::LatticeSpec& spec = c.lattice;
-  spec.style = particles::lattice_style(lat.choice("type", {"fcc", "bcc", "hcp", "b2"}, "fcc"));
+  particles::read_crystal_keys(lat, "type", spec);
   c.lattice_constant = lat.number("constant");
   lat.positive("constant", c.lattice_constant);
   spec.constant = c.lattice_constant;
-  if (lat.has("c_over_a")) {
-    spec.c_over_a = lat.number("c_over_a");
-    lat.check(spec.style == particles::LatticeStyle::hcp, "c_over_a", "applies to an hcp lattice only");
-    lat.check(spec.c_over_a >= 0.5 && spec.c_over_a <= 5, "c_over_a",
-              "must lie in [0.5, 5] (the ideal sqrt(8/3) = 1.633; Zn's 1.86 is the largest of the elements)");
-  }
-  read_orient(lat, spec);
   if (spec.style == particles::LatticeStyle::b2) {
     const auto* eam = std::get_if<EamSpec>(&c.potential);
     lat.check(eam && eam->elements.size() >= 2, "type",

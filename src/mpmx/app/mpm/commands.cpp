@@ -88,6 +88,8 @@ void check_continuum(const std::string& deck, bool force, int ranks) {
   if (budget.md_atom_steps > 0)
     fmt::print("  each box keeps {:.0f} bytes per atom between macro steps (its atoms and its neighbour list)\n",
                budget.md_bytes_per_atom);
+  if (cfg.material.spec)
+    for (const std::string& line : cfg.material.spec->check_notes()) fmt::print("  {}\n", line);
   for (const std::string& line : describe_pistons_and_gauges(cfg)) fmt::print("  {}\n", line);
   if (!pre.pending.empty()) fmt::print("  {}\n", pre.pending);
   for (const std::string& slip : unit_slips(cfg)) fmt::print("  warning: {}\n", slip);
