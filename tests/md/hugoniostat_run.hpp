@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mpmx/core/units.hpp"
+#include "mpmx/md/hugoniot.hpp"
 #include "mpmx/md/nose_hoover.hpp"
 #include "mpmx/particles/lattice.hpp"
 
@@ -37,11 +38,9 @@ inline Shocked hugoniostat(double a, double temperature, double p_gpa) {
   Shocked r;
   r.ratio = block_stats(ratio), r.t = block_stats(t);
   r.p = block_stats(p).mean;
-  double mass = 0;
-  for (int type : s.atoms().type) mass += s.type_mass()[type];
-  const double rho0 = 1.66053906660 * mass / nh.v0(), eta = 1 - r.ratio.mean;
-  r.us = std::sqrt((r.p - nh.p0() * units::eV_per_A3_in_GPa) / (rho0 * eta));
-  r.up = r.us * eta;
+  const md::HugoniotPoint jump =
+      md::jump_conditions(s, nh.v0(), nh.p0() * units::eV_per_A3_in_GPa, r.ratio.mean * nh.v0(), r.p);
+  r.us = jump.us, r.up = jump.up;
   return r;
 }
 

@@ -26,13 +26,11 @@ NoseHoover::NoseHoover(const NoseHooverOptions& o, const System& s) : o_(o) {
     throw InputError("a Hugoniostat needs the thermostat and a barostat along one axis");
   e0_ = s.potential_energy() + s.thermal_kinetic_energy(), v0_ = s.box().volume(), p0_ = axis_pressure(s);
   const int m = o.chain;
-  eta_.assign(m, 0.0), eta_dot_.assign(m + 1, 0.0), eta_dotdot_.assign(m, 0.0), eta_mass_.assign(m, 0.0);
+  eta_.assign(m, 0.0), eta_dot_.assign(m + 1, 0.0), eta_dotdot_.assign(m, 0.0);
   etap_.assign(m, 0.0), etap_dot_.assign(m + 1, 0.0), etap_dotdot_.assign(m, 0.0), etap_mass_.assign(m, 0.0);
   // Masses from the periods: Q_0 = N_f kT / omega^2, the others kT / omega^2.
-  const double tf = 1 / o.t_damp, pf = 1 / o.p_damp;
-  eta_mass_[0] = tdof_ * kt_ / (tf * tf);
-  for (int k = 1; k < m; ++k) eta_mass_[k] = kt_ / (tf * tf);
-  for (int k = 1; k < m; ++k) eta_dotdot_[k] = -kt_ / eta_mass_[k];  // eta_dot starts at 0
+  const double pf = 1 / o.p_damp;
+  for (int k = 1; k < m; ++k) eta_dotdot_[k] = -kt_ / eta_mass(k, kt_);  // eta_dot starts at 0
   for (int i = 0; i < 3; ++i) omega_mass_[i] = (natoms_ + 1) * kt_ / (pf * pf);
   for (int k = 0; k < m; ++k) etap_mass_[k] = kt_ / (pf * pf);
   for (int k = 1; k < m; ++k) etap_dotdot_[k] = -kt_ / etap_mass_[k];
@@ -43,6 +41,12 @@ double NoseHoover::axis_pressure(const System& s) const {
   if (o_.isotropic || pdim_ != 1) return -(sigma[0] + sigma[4] + sigma[8]) / 3;
   const int i = o_.axes[0] ? 0 : o_.axes[1] ? 1 : 2;
   return -sigma[4 * i];
+}
+
+// Q_0 = N_f kT / omega^2 and Q_k = kT / omega^2, omega = 1 / t_damp.
+double NoseHoover::eta_mass(int k, double kt) const {
+  const double tf = 1 / o_.t_damp;
+  return (k == 0 ? tdof_ : 1.0) * kt / (tf * tf);
 }
 
 void NoseHoover::initial(System& s, double dt) {
@@ -80,12 +84,10 @@ void NoseHoover::final(System& s, double dt) {
 void NoseHoover::thermostat_chain(System& s, double dt) {
   const int m = o_.chain;
   // Masses from the target now (LAMMPS keeps the chain's periods as its target moves).
-  const double kt = units::boltzmann_eV_per_K * t_target_, tf = 1 / o_.t_damp;
-  eta_mass_[0] = tdof_ * kt / (tf * tf);
-  for (int k = 1; k < m; ++k) eta_mass_[k] = kt / (tf * tf);
+  const double kt = units::boltzmann_eV_per_K * t_target_;
   const double dt4 = 0.25 * dt, dt8 = 0.125 * dt, ke_target = tdof_ * kt;
   double ke = 2 * s.thermal_kinetic_energy();  // N_f k T
-  eta_dotdot_[0] = (ke - ke_target) / eta_mass_[0];
+  eta_dotdot_[0] = (ke - ke_target) / eta_mass(0, kt);
   for (int k = m - 1; k > 0; --k) {
     const double e = std::exp(-dt8 * eta_dot_[k + 1]);
     eta_dot_[k] = (eta_dot_[k] * e + eta_dotdot_[k] * dt4) * e;
@@ -95,12 +97,12 @@ void NoseHoover::thermostat_chain(System& s, double dt) {
   const double f = std::exp(-0.5 * dt * eta_dot_[0]);
   s.scale_velocities({f, f, f});
   ke *= f * f;
-  eta_dotdot_[0] = (ke - ke_target) / eta_mass_[0];
+  eta_dotdot_[0] = (ke - ke_target) / eta_mass(0, kt);
   for (int k = 0; k < m; ++k) eta_[k] += 0.5 * dt * eta_dot_[k];
   eta_dot_[0] = (eta_dot_[0] * e + eta_dotdot_[0] * dt4) * e;
   for (int k = 1; k < m; ++k) {
     e = std::exp(-dt8 * eta_dot_[k + 1]);
-    eta_dotdot_[k] = (eta_mass_[k - 1] * eta_dot_[k - 1] * eta_dot_[k - 1] - kt) / eta_mass_[k];
+    eta_dotdot_[k] = (eta_mass(k - 1, kt) * eta_dot_[k - 1] * eta_dot_[k - 1] - kt) / eta_mass(k, kt);
     eta_dot_[k] = (eta_dot_[k] * e + eta_dotdot_[k] * dt4) * e;
   }
 }

@@ -50,12 +50,13 @@ class NoseHoover : public System::Coupling {
   double kt_ = 0, tdof_ = 0, natoms_ = 0, pdim_ = 3;
   double t_target_ = 0;         // K, the thermostat's target now (moves under `hugoniot`)
   double e0_ = 0, v0_ = 0, p0_ = 0;
-  std::vector<double> eta_, eta_dot_, eta_dotdot_, eta_mass_;      // thermostat chain
+  std::vector<double> eta_, eta_dot_, eta_dotdot_;  // thermostat chain
   std::vector<double> etap_, etap_dot_, etap_dotdot_, etap_mass_;  // the barostat's chain
   std::array<double, 3> omega_dot_{}, omega_mass_{};              // barostat (1/ps, eV ps^2)
   double mtk_term2_ = 0;
 
   void thermostat_chain(System& s, double dt);
+  double eta_mass(int k, double kt) const;  // the thermostat chain's masses at kT
   void barostat_chain(double dt);
   void omega_force(const System& s, double dt);
   void v_press(System& s, double dt);

@@ -8,6 +8,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/app/mpm/deck.hpp"
+#include "mpm_deck_test_util.hpp"
 
 namespace {
 
@@ -29,24 +30,10 @@ dt = 1e-3
 end = 0.1
 )";
 
-std::string mpm_deck_error(const std::string& text) {
-  try {
-    mpmx::app::read_mpm_deck_text(text, "t.toml");
-  } catch (const mpmx::InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-  const auto at = s.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return s.replace(at, from.size(), to);
-}
-
-#define EXPECT_HAS(text, part) EXPECT_NE((text).find(part), std::string::npos) << (text)
-
 }  // namespace
+
+using mpmx::test::mpm_deck_error;
+using mpmx::test::replace;
 
 TEST(MpmDeck, GoodDeckReads) {
   const auto c = mpmx::app::read_mpm_deck_text(kGoodMpmDeck);

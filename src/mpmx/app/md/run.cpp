@@ -19,6 +19,7 @@
 #include "mpmx/core/units.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/md/bar.hpp"
+#include "mpmx/md/hugoniot.hpp"
 #include "mpmx/md/nose_hoover.hpp"
 #include "mpmx/md/particles.hpp"
 #include "mpmx/md/system.hpp"
@@ -264,26 +265,20 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   rec.insert("relax_steps", static_cast<std::int64_t>(c.relax_steps));
   rec.insert("ensemble", c.ensemble);
   if (nh && c.nose_hoover.hugoniot && hug_rows > 0) {
-    // The jump conditions (eqs. of Rankine-Hugoniot) from the reference and the mean
-    // shocked state: P - P0 = rho0 Us up, V / V0 = 1 - up / Us.
     const double v = hug_v / hug_rows, p = hug_p / hug_rows, v0 = nh->v0();
     const double p0 = nh->p0() * units::eV_per_A3_in_GPa;
-    double mass = 0;
-    for (int t : sys.atoms().type) mass += sys.type_mass()[t];
-    const double rho0 = 1.66053906660 * mass / v0;  // g/cm^3
-    const double eta = 1 - v / v0;
-    const double us = eta > 0 && p > p0 ? std::sqrt((p - p0) / (rho0 * eta)) : 0.0;  // km/s
+    const HugoniotPoint jump = jump_conditions(sys, v0, p0, v, p);
     toml::table h{{"shock_axis", std::string(1, static_cast<char>('x' + axis))},
                   {"reference_volume_A3", v0},
                   {"reference_pressure_GPa", p0},
                   {"reference_energy_eV", nh->e0()},
-                  {"reference_density_g_cm3", rho0},
+                  {"reference_density_g_cm3", jump.rho0},
                   {"rows_averaged", static_cast<std::int64_t>(hug_rows)},
                   {"volume_ratio", v / v0},
                   {"pressure_GPa", p},
                   {"temperature_K", hug_t / hug_rows},
-                  {"shock_speed_km_s", us},
-                  {"particle_velocity_km_s", us * eta}};
+                  {"shock_speed_km_s", jump.us},
+                  {"particle_velocity_km_s", jump.up}};
     rec.insert("hugoniot", h);
   }
   {  // the lattice constant the box now holds along each axis: its edge over its tiles
