@@ -7,6 +7,7 @@
 // streams and relaxation are exercised, and 7 points split unevenly over 2 and 3 ranks).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -328,4 +329,46 @@ TEST(MpiRanks, ARankThatNeverAnswersEndsTheJobAfterTheBound) {
   EXPECT_NE(log.find("[rank 0 of 2] mpmx: the other ranks did not reach"), std::string::npos) << log;
   EXPECT_NE(log.find("within 3 s"), std::string::npos) << log;
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// Issue 47 in 2-D under ranks: the CI-size jet block of bcc Ta with x along [110] in
+// every point's box, the boxes built at the lattice constant one NPT box found at 10 K
+// (prepared once on every rank alike): the same VTK files and run.json under 1 and 2
+// ranks and 2 threads, and that constant is NPT's, not the 0 K one.
+TEST(MpiRanks, OrientedBccBoxesPreparedByNptGiveTheSameBytes) {
+  const auto c = test::deck_with(test::example("J3_ddmp_md_10x5_1ppc_tiny.toml"), [&](toml::table& t) {
+    t.erase("reference");
+    t["time"].as_table()->insert_or_assign("end", 0.25);
+    t["output"].as_table()->insert_or_assign("times", toml::array{0.25});
+    auto& mat = *t["material"].as_table();
+    mat.insert_or_assign("potential", toml::table{{"style", "eam"}, {"file", "CuTa.eam.alloy"},
+                                                  {"elements", toml::array{"Ta"}}});
+    auto& md = *mat["md"].as_table();
+    md.insert_or_assign("lattice", "bcc");
+    md.insert_or_assign("orient", toml::array{toml::array{1, 1, 0}, toml::array{-1, 1, 0}, toml::array{0, 0, 1}});
+    md.insert_or_assign("prepare", "npt");
+    md.insert_or_assign("prepare_steps", 2000);
+  });
+  const std::string deck = test::scratch_dir("mpi_ta") + "/ta.toml";
+  std::ofstream(deck) << c.deck;
+  const std::string single = test::scratch_dir("mpi_ta_single");
+  ASSERT_EQ(run(0, deck, single, "--threads 1"), 0) << test::read_file(single + ".log");
+  const std::string rec = test::read_file(single + "/run.json");
+  auto number = [&](const std::string& key) {
+    const auto at = rec.find("\"" + key + "\"");
+    return at == std::string::npos ? std::nan("") : std::stod(rec.substr(rec.find(':', at) + 1));
+  };
+  const double a = number("lattice_constant_A"), a0 = number("lattice_constant_0K_A");
+  EXPECT_NEAR(a0, 3.302531, 1e-6);  // CuTa's Ta at 0 K
+  EXPECT_GT(a, a0);                 // 10 K expands it, a little
+  EXPECT_LT(a, a0 * 1.001);
+  for (const auto& [ranks, threads] : {std::pair{2, 1}, std::pair{0, 2}}) {
+    const std::string out = test::scratch_dir(fmt::format("mpi_ta_{}_{}", ranks, threads));
+    ASSERT_EQ(run(ranks, deck, out, fmt::format("--threads {}", threads)), 0) << test::read_file(out + ".log");
+    for (const auto& f : std::filesystem::recursive_directory_iterator(single + "/vtk")) {
+      const std::string rel = std::filesystem::relative(f.path(), single).string();
+      EXPECT_EQ(test::read_file(single + "/" + rel), test::read_file(out + "/" + rel)) << out << "/" << rel;
+    }
+    EXPECT_EQ(physics(single), physics(out)) << out;
+  }
 }
