@@ -87,6 +87,12 @@ TEST(MdClosureCrystal, NptPreparationSetsEveryBoxsLatticeConstant) {
   EXPECT_LT(std::abs(prep.pressure_gpa), 0.05);       // its mean pressure about zero
   EXPECT_NEAR(prep.temperature, 10.0, 2.0);
   EXPECT_EQ(multiscale::prepare_npt(pot, md, a0).lattice_constant, prep.lattice_constant);  // deterministic
+  // The deck's reading ran the same box, and the points carry its crystal's density.
+  ASSERT_TRUE(md.prepared);
+  EXPECT_EQ(md.prepared->lattice_constant, prep.lattice_constant);
+  const double rho0 = multiscale::md_closure_properties(md.potential, md.units, md.lattice).density;
+  EXPECT_NEAR(c.material.density, rho0 * std::pow(a0 / prep.lattice_constant, 3), 1e-12 * rho0);
+  EXPECT_LT(c.material.density, rho0);
 
   app::RunOptions o;
   o.quiet = true;
@@ -97,6 +103,7 @@ TEST(MdClosureCrystal, NptPreparationSetsEveryBoxsLatticeConstant) {
   EXPECT_EQ(figure(one, "md.lattice_constant_A"), prep.lattice_constant);
   EXPECT_EQ(figure(one, "md.lattice_constant_0K_A"), a0);
   EXPECT_EQ(figure(one, "md.prepare.pressure_GPa"), prep.pressure_gpa);
+  EXPECT_NEAR(figure(one, "md.density"), c.material.density, 1e-14 * c.material.density);
   const std::string json = test::read_file(o.out_dir + "/run.json");
   EXPECT_NE(json.find("\"lattice_constant_0K_A\""), std::string::npos);
   o.threads = 2;

@@ -187,7 +187,9 @@ void MdClosure<Dim>::initialize(const Points<Dim>& p) {
   // thread: the same numbers everywhere), whose mean lattice constant all boxes take.
   std::optional<ranks::Failure> failed;
   prepared_.reset();
-  if (cfg_.prepare == BoxPrepare::npt) {
+  if (cfg_.prepare == BoxPrepare::npt && cfg_.prepared) {
+    prepared_ = cfg_.prepared;  // run when the deck was read
+  } else if (cfg_.prepare == BoxPrepare::npt) {
     try {
       prepared_ = prepare_npt(pot_, cfg_, props_.equilibrium.lattice_constant);
     } catch (const std::exception&) {

@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -48,12 +49,22 @@ using material::Points;
 // How the boxes' lattice constant is chosen: the 0 K crystal's, or NPT's at the temperature.
 enum class BoxPrepare { lattice, npt };
 
+// What the NPT preparation found (prepare_npt below).
+struct PreparedLattice {
+  double lattice_constant = 0.0;  // Angstrom
+  double pressure_gpa = 0.0;      // the mean pressure over the second half
+  double temperature = 0.0;       // the mean temperature over the second half, K
+};
+
 struct MdClosureConfig {
   md::PotentialSpec potential;
   particles::LatticeSpec lattice;  // style, orientation, c/a (its constant is not read)
   int cells = 4;                   // n x n x n tiles: fcc along the axes, 4 -> 256 atoms, 5 -> 500
   BoxPrepare prepare = BoxPrepare::lattice;
   std::int64_t prepare_steps = 10000;  // prepare = npt: the NPT run's steps
+  // prepare = npt: its result when the deck's reading found it (the points' density is
+  // then the prepared crystal's); without it initialize() runs the preparation itself.
+  std::optional<PreparedLattice> prepared;
   double temperature = 0.0;        // K
   std::uint64_t seed = 1;          // with a group's first point: one random stream per box
   double dt = 0.001;               // MD step, ps
@@ -89,11 +100,6 @@ MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, co
 // chain and the isotropic MTK barostat (target 0 GPa, Tdamp 0.1 ps, Pdamp 1 ps) for
 // `steps`; the lattice constant of its mean volume over the second half. Interrupted
 // (Ctrl-C), it returns a0 at once: the caller ends the run.
-struct PreparedLattice {
-  double lattice_constant = 0.0;  // Angstrom
-  double pressure_gpa = 0.0;      // the mean pressure over the second half
-  double temperature = 0.0;       // the mean temperature over the second half, K
-};
 PreparedLattice prepare_npt(const md::Potential& pot, const MdClosureConfig& c, double a0);
 
 // In 2-D and 3-D the point's full velocity gradient drives its box (eqs. 5.7-5.8; a lower
@@ -137,7 +143,10 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   double box_lattice_constant() const {
     return prepared_ ? prepared_->lattice_constant : props_.equilibrium.lattice_constant;
   }
-  double density() const { return props_.density; }  // unstrained crystal, continuum units
+  // The unstrained boxes' crystal (prepared by NPT or at 0 K), continuum units.
+  double density() const {
+    return props_.density * std::pow(props_.equilibrium.lattice_constant / box_lattice_constant(), 3);
+  }
   double modulus() const { return props_.modulus; }  // C11, continuum units
   int atoms_per_point() const { return cfg_.atoms_per_point(); }
   std::int64_t atom_steps() const { return atom_steps_; }  // all ranks' boxes, audits included

@@ -83,7 +83,7 @@ double MdClosureModel::measured_rate() const {
 }
 
 std::string MdClosureModel::build_note() const {
-  const std::string npt = md.prepare == BoxPrepare::npt
+  const std::string npt = md.prepare == BoxPrepare::npt && !md.prepared
                               ? fmt::format("relaxing one box by NPT at {} K, 0 GPa ({} steps), then ", md.temperature,
                                             md.prepare_steps)
                               : std::string();
@@ -96,11 +96,13 @@ std::vector<std::string> MdClosureModel::check_notes() const {
       "each point's box: {} tiles of {} ({} atoms), x [{}], y [{}], z [{}], at {:.6f} A (the potential's 0 K lattice)",
       md.cells, particles::lattice_name(md.lattice.style), md.atoms_per_point(), fmt::join(o[0], " "),
       fmt::join(o[1], " "), fmt::join(o[2], " "), a0)};
-  if (md.prepare == BoxPrepare::npt)
+  if (md.prepare == BoxPrepare::npt && md.prepared)
     r.push_back(fmt::format("prepared by NPT: one box at {} K and 0 GPa for {} steps (Nose-Hoover, Tdamp 0.1 ps, "
-                            "isotropic Pdamp 1 ps) before the run; every box is built at its mean lattice constant "
-                            "over the second half (run.json's md.lattice_constant_A)",
-                            md.temperature, md.prepare_steps));
+                            "isotropic Pdamp 1 ps), just now: every box is built at its mean lattice constant over "
+                            "the second half, {:.6f} A (mean {:.4f} GPa, {:.2f} K), and the points take that "
+                            "crystal's density, {:.6g} (run.json's md.lattice_constant_A, md.density)",
+                            md.temperature, md.prepare_steps, md.prepared->lattice_constant,
+                            md.prepared->pressure_gpa, md.prepared->temperature, rho));
   return r;
 }
 
@@ -171,6 +173,12 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
       r->rho = props.density;
       r->c11 = props.modulus;
       r->a0 = props.equilibrium.lattice_constant;
+      // prepare = npt: the one NPT box runs here, so that the points carry the prepared
+      // crystal's density (the same numbers on every rank and at every reading).
+      if (md.prepare == BoxPrepare::npt && md.temperature > 0) {
+        md.prepared = prepare_npt(md::Potential(md.potential), md, r->a0);
+        r->rho *= std::pow(r->a0 / md.prepared->lattice_constant, 3);
+      }
       // its atoms per A^3 (the budget takes another crystal as the fcc box of its atoms)
       r->number_density = static_cast<double>(md.atoms_per_point()) / box_volume(md, r->a0);
       r->cutoff = props.cutoff;
