@@ -171,6 +171,55 @@ TEST(OutputFields, TwoDMdFlyerWritesTemperatureBodiesAndDumps) {
     }
 }
 
+// output.md_dump's fields: the dumped box's per-atom energy, stress and structure, as
+// `mpmx md` writes them (OVITO's columns): their means are the box's own energy and stress
+// at that step, and the crystal is labelled fcc; a field that is not one is refused.
+TEST(OutputFields, MdDumpCarriesPerAtomFields) {
+  std::string text = test::flyer_2d_deck(0.0, 2);
+  text.replace(text.find("[output]\ntimes = []"), 19,
+               "[output]\ntimes = []\nmd_dump = { points = [7], fields = [\"pe\", \"stress\", \"structure\"] }");
+  const auto c = app::read_mpm_deck_text(text, "flyer_2d_fields");
+  EXPECT_EQ(c.md_dump_fields, (std::vector<std::string>{"pe", "stress", "structure"}));
+  app::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  o.out_dir = test::scratch_dir("output_fields_2d_atoms");
+  const auto r = app::run_mpm_dim<2>(c, o);
+  const auto& closure = dynamic_cast<const multiscale::MdClosure<2>&>(*r.state.material);
+  const md::System& box = *closure.box(closure.groups().group_of(7));
+  std::istringstream d(test::read_file(fmt::format("{}/md_dump/point_{:06d}_{:09d}.dump", o.out_dir, 7, r.steps)));
+  std::string line;
+  while (std::getline(d, line) && line.rfind("ITEM: ATOMS", 0) != 0) {
+  }
+  EXPECT_EQ(line, "ITEM: ATOMS id type x y z vx vy vz pe sxx syy szz sxy sxz syz structure");
+  double pe = 0, sxx = 0, syy = 0, sxy = 0;
+  int atoms = 0, fcc = 0;
+  for (double v[16]; std::getline(d, line); ++atoms) {
+    std::istringstream in(line);
+    for (double& x : v) in >> x;
+    ASSERT_TRUE(in) << line;
+    pe += v[8], sxx += v[9], syy += v[10], sxy += v[12];
+    fcc += v[15] == 1.0;
+  }
+  ASSERT_EQ(atoms, static_cast<int>(box.atoms().size()));
+  const md::Mat3 s = box.stress_gpa();
+  EXPECT_NEAR(pe, box.potential_energy(), 1e-9 * std::abs(box.potential_energy()));
+  EXPECT_NEAR(sxx / atoms, s[0], 1e-9 * std::abs(s[0]) + 1e-9);
+  EXPECT_NEAR(syy / atoms, s[4], 1e-9 * std::abs(s[4]) + 1e-9);
+  EXPECT_NEAR(sxy / atoms, s[1], 1e-9);
+  EXPECT_GT(fcc, atoms / 2);  // 300 K fcc copper: most atoms keep their label
+
+  std::string bad = test::flyer_2d_deck(0.0, 2);
+  bad.replace(bad.find("[output]\ntimes = []"), 19, "[output]\ntimes = []\nmd_dump = { points = [7], fields = [\"ke\"] }");
+  try {
+    app::read_mpm_deck_text(bad, "flyer_2d_bad_field");
+    ADD_FAILURE() << "a field that is not one was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("output.md_dump.fields"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'ke' is not a per-atom field"), std::string::npos) << e.what();
+  }
+}
+
 // Two Mie-Gruneisen bodies (aluminium on copper, N6): VTK's own reader finds the body
 // and material of every point, the internal energy and the plastic strain, equal to the
 // run's; the flyer and the target are told apart.

@@ -96,9 +96,10 @@ std::vector<PointField> Composite<Dim>::point_fields(const Points<Dim>& p) const
 }
 
 template <int Dim>
-std::string Composite<Dim>::point_model_dump(std::size_t q, std::int64_t step) const {
+std::string Composite<Dim>::point_model_dump(std::size_t q, std::int64_t step,
+                                             const std::vector<std::string>& fields) const {
   const Part& part = part_of(q);
-  return part.law->point_model_dump(q - part.begin, step);
+  return part.law->point_model_dump(q - part.begin, step, fields);
 }
 
 template <int Dim>

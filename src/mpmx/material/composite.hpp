@@ -37,7 +37,7 @@ class Composite final : public Material<Dim> {
   void add_viscous_heat(const Points<Dim>& p, const std::array<double*, Dim * Dim>& q, double dt) override;
   void set_threads(int threads) override;
   std::vector<PointField> point_fields(const Points<Dim>& p) const override;
-  std::string point_model_dump(std::size_t q, std::int64_t step) const override;
+  std::string point_model_dump(std::size_t q, std::int64_t step, const std::vector<std::string>& fields) const override;
   bool runs_point_model(std::size_t q) const override;
   void save(std::ostream& out) const override;
   void load(std::istream& in) override;

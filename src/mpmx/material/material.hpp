@@ -97,7 +97,10 @@ class Material {
   // Point q's own model as a file of its own (md_closure: its MD box as a LAMMPS dump
   // frame at `step`); "" where the law runs none. Collective under MPI (the rank that runs
   // the box sends it): rank 0's answer is the file, the others get "".
-  virtual std::string point_model_dump(std::size_t /*q*/, std::int64_t /*step*/) const { return {}; }
+  virtual std::string point_model_dump(std::size_t /*q*/, std::int64_t /*step*/,
+                                       const std::vector<std::string>& /*fields*/) const {
+    return {};
+  }
   // Whether the law runs a model of its own inside point q (what point_model_dump writes).
   virtual bool runs_point_model(std::size_t /*q*/) const { return false; }
   // Per-point state beyond the point arrays, for checkpoints (none by default).

@@ -44,7 +44,18 @@ bool dump_needs_per_atom(const std::vector<std::string>& fields) {
   return std::any_of(fields.begin(), fields.end(), [](const std::string& f) { return f == "pe" || f == "stress"; });
 }
 
-void write_dump_frame(std::ostream& out, const System& sys, const std::vector<std::string>& fields, int threads) {
+std::string dump_fields_problem(const std::vector<std::string>& fields) {
+  const auto& known = dump_field_names();
+  for (const std::string& f : fields) {
+    if (std::find(known.begin(), known.end(), f) == known.end())
+      return fmt::format("'{}' is not a per-atom field (fields: pe, stress, structure)", f);
+    if (std::count(fields.begin(), fields.end(), f) > 1) return fmt::format("'{}' is named twice", f);
+  }
+  return {};
+}
+
+void write_dump_frame(std::ostream& out, const System& sys, const std::vector<std::string>& fields, int threads,
+                      std::int64_t step) {
   const Atoms atoms = sys.snapshot();
   const std::size_t n = atoms.size();
   std::vector<DumpColumn> more;
@@ -67,7 +78,7 @@ void write_dump_frame(std::ostream& out, const System& sys, const std::vector<st
       more.push_back(std::move(col));
     }
   }
-  write_lammps_dump(out, sys.step(), atoms, sys.box(), more);
+  write_lammps_dump(out, step >= 0 ? step : sys.step(), atoms, sys.box(), more);
 }
 
 }  // namespace mpmx::md

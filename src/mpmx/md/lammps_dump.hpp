@@ -29,9 +29,13 @@ void write_lammps_dump(std::ostream& out, std::int64_t step, const Atoms& atoms,
 const std::vector<std::string>& dump_field_names();
 // Whether a System must keep per-atom sums (SystemOptions::per_atom) for these fields.
 bool dump_needs_per_atom(const std::vector<std::string>& fields);
+// What is wrong with a deck's list of fields (a name not among them, one named twice), or "".
+std::string dump_fields_problem(const std::vector<std::string>& fields);
 
 // One frame of a System's current state with the named fields after the positions and
-// velocities; the structure is found within the potential's cut-off.
-void write_dump_frame(std::ostream& out, const System& sys, const std::vector<std::string>& fields, int threads = 1);
+// velocities; the structure is found within the potential's cut-off. `step`: the
+// TIMESTEP written (-1: the system's own step).
+void write_dump_frame(std::ostream& out, const System& sys, const std::vector<std::string>& fields, int threads = 1,
+                      std::int64_t step = -1);
 
 }  // namespace mpmx::md

@@ -539,12 +539,21 @@ std::vector<material::PointField> MdClosure<Dim>::point_fields(const Points<Dim>
 }
 
 template <int Dim>
-std::string MdClosure<Dim>::point_model_dump(std::size_t q, std::int64_t step) const {
+std::string MdClosure<Dim>::point_model_dump(std::size_t q, std::int64_t step,
+                                             const std::vector<std::string>& fields) const {
   // The rank that runs q's box writes it; rank 0 gathers (the others send nothing).
   std::ostringstream text;
   if (q < groups_.points() && mine(groups_.group_of(q))) {
     const md::System& box = *boxes_[groups_.group_of(q)];
-    md::write_lammps_dump(text, step, box.snapshot(), box.box());
+    if (fields.empty()) {
+      md::write_lammps_dump(text, step, box.snapshot(), box.box());
+    } else {  // per-atom sums of the same state on a copy that keeps them
+      md::SystemOptions o = box_options();
+      o.per_atom = md::dump_needs_per_atom(fields);
+      md::System copy(box.snapshot(), box.box(), box.potential(), o);
+      copy.refresh();
+      md::write_dump_frame(text, copy, fields, 1, step);
+    }
   }
   return ranks::size() > 1 ? ranks::gather_to_root(text.str()) : text.str();
 }

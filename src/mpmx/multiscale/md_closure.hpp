@@ -126,7 +126,9 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   // also the boxes' sigma_yy and sigma_zz.
   std::vector<material::PointField> point_fields(const Points<Dim>& p) const override;
   // Point q's box (its group's) as a LAMMPS dump frame at `step`.
-  std::string point_model_dump(std::size_t q, std::int64_t step) const override;
+  // Its group's box as a LAMMPS dump frame; `fields` (md/lammps_dump.hpp: pe, stress,
+  // structure) are evaluated on a copy of the box, so the run's own box is not touched.
+  std::string point_model_dump(std::size_t q, std::int64_t step, const std::vector<std::string>& fields) const override;
   bool runs_point_model(std::size_t) const override { return true; }
   // sqrt(C11 / rho): the 0 K uniaxial-strain wave speed, for the viscosity.
   double sound_speed(const Points<Dim>& p, std::size_t q) const override;

@@ -130,13 +130,8 @@ void read_run(io::Section& run, bool jet, MdConfig& c) {
   run.check(c.dump_every == 0 || c.dump_every % c.thermo == 0 || jet, "dump_every",
             "must be 0 (no dump) or a multiple of thermo");
   c.dump_fields = run.strings("dump_fields", {});
-  for (const std::string& f : c.dump_fields) {
-    const auto& known = dump_field_names();
-    run.check(std::find(known.begin(), known.end(), f) != known.end(), "dump_fields",
-              fmt::format("'{}' is not a per-atom field (fields: pe, stress, structure)", f));
-    run.check(std::count(c.dump_fields.begin(), c.dump_fields.end(), f) == 1, "dump_fields",
-              fmt::format("'{}' is named twice", f));
-  }
+  const std::string fields_problem = dump_fields_problem(c.dump_fields);
+  run.check(fields_problem.empty(), "dump_fields", fields_problem);
   run.check(c.dump_fields.empty() || c.dump_every > 0, "dump_fields", "needs dump_every > 0 (there is no dump)");
   if (dump_needs_per_atom(c.dump_fields)) c.options.per_atom = true;
   c.options.skin = run.number("skin", 1.0);

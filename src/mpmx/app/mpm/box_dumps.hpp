@@ -14,13 +14,16 @@ namespace mpmx::app {
 template <int Dim>
 class BoxDumps {
  public:
-  BoxDumps(const std::string& dir, std::vector<std::int64_t> points, const material::Material<Dim>& law);
+  // `fields`: per-atom columns after the positions and velocities (md/lammps_dump.hpp).
+  BoxDumps(const std::string& dir, std::vector<std::int64_t> points, std::vector<std::string> fields,
+           const material::Material<Dim>& law);
   // The boxes of the points at the state's step. Collective under MPI; rank 0 writes.
   void write(const mpm::State<Dim>& s) const;
 
  private:
   std::string dir_;
   std::vector<std::int64_t> points_;
+  std::vector<std::string> fields_;
 };
 
 }  // namespace mpmx::app

@@ -142,6 +142,7 @@ struct MpmConfig {
   // (0: at the records)
   std::vector<std::int64_t> md_dump_points;
   std::int64_t md_dump_every = 0;
+  std::vector<std::string> md_dump_fields;  // per-atom columns (md/lammps_dump.hpp)
   // [reference]
   ReferenceConfig reference;
   ManufacturedConfig manufactured;

@@ -18,6 +18,7 @@
 #include "mpmx/app/mpm/materials.hpp"
 #include "mpmx/app/mpm/references.hpp"
 #include "mpmx/io/deck.hpp"
+#include "mpmx/md/lammps_dump.hpp"
 
 namespace mpmx::app {
 
@@ -528,6 +529,9 @@ void read_output(Section& root, MpmConfig& c) {
     }
     d.check(!c.md_dump_points.empty(), "points", "name at least one point");
     c.md_dump_every = d.integer("every", 0, 0, std::numeric_limits<std::int64_t>::max());
+    c.md_dump_fields = d.strings("fields", {});
+    const std::string fields_problem = md::dump_fields_problem(c.md_dump_fields);
+    d.check(fields_problem.empty(), "fields", fields_problem);
   }
 }
 

@@ -108,7 +108,7 @@ class ContinuumRun {
     });
     // Every rank takes part in a dump (the box may run on any); rank 0 writes it.
     if (!c.md_dump_points.empty() && !o.out_dir.empty())
-      dumps_ = std::make_unique<BoxDumps<Dim>>(folder_.dir, c.md_dump_points, *s_.material);
+      dumps_ = std::make_unique<BoxDumps<Dim>>(folder_.dir, c.md_dump_points, c.md_dump_fields, *s_.material);
   }
 
   // The step loop: each step, then the checks, comparisons, records and checkpoints it
