@@ -1,13 +1,12 @@
 #include "mpmx/md/bar.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/md/particles.hpp"
 #include "mpmx/md/stress.hpp"
+#include "mpmx/particles/tile_planes.hpp"
 
 namespace mpmx::md {
 
@@ -22,13 +21,7 @@ System Bar::build(const BarConfig& c, Potential pot, SystemOptions o) {
   Crystal cr = particles::oriented_crystal(lat, {c.cells_x, c.cells_yz, c.cells_yz});
   const double a = c.lattice_constant, length = lat.plain_fcc() ? c.cells_x * a : cr.box.lx;
   // From the last atomic plane to the bar's periodic length: fcc's a / 2, or the tile's.
-  double end_space = 0.5 * a;
-  if (!lat.plain_fcc()) {
-    const particles::LatticeTile tile = particles::lattice_tile(lat);
-    double last = 0;
-    for (const auto& f : tile.sites) last = std::max(last, f[0]);
-    end_space = (1.0 - last) * tile.length[0];
-  }
+  const double end_space = particles::tile_planes(lat).end_gap[0];
   const double xs = c.split * length, gap = 2.0 * (pot.cutoff() + o.skin) + a;
   for (auto& x : cr.atoms.x) {
     // Strain the left part (x and its length times 1 + e), shift the rest with it.

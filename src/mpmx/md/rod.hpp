@@ -1,23 +1,27 @@
 #pragma once
-// All-atom MD of seed 004's flyer-on-target rod (sec. 4.1.1): a rigid fcc flyer, then the
-// fcc target continuing its lattice along x, both with the same y-z cross-section, open on
+// All-atom MD of seed 004's flyer-on-target rod (sec. 4.1.1): a rigid flyer, then the
+// target continuing its lattice along x (fcc cells along the axes, or the periodic tiles
+// of any one-element lattice and orientation of particles/oriented_lattice.hpp), both with the same y-z cross-section, open on
 // every side (vacuum around the sample in the periodic box, wider than twice the pair reach,
 // so no pair crosses it). The DPD rod's all-atom reference: 8 atoms per mesoparticle.
 //
-// The deck's frame is the DPD deck's: the flyer's first plane at x = 0, its last cell ending
-// where the target's first plane sits (x = flyer_cells a), the sample's corner at y = z = 0.
+// The deck's frame is the DPD deck's: the flyer's first plane at x = 0, its last tile ending
+// where the target's first plane sits (x = flyer_cells tile lengths), the sample's corner
+// at y = z = 0.
 // The box holds the sample shifted by `offset` along each axis.
 #include <array>
 #include <cstdint>
 
 #include "mpmx/md/system.hpp"
+#include "mpmx/particles/oriented_lattice.hpp"
 
 namespace mpmx::md {
 
 struct RodConfig {
   double lattice_constant = 3.6414;          // Angstrom (the crystal's zero-pressure constant at the temperature)
-  std::array<int, 3> target_cells{60, 20, 20};
-  int flyer_cells = 4;                       // along x; the target's y and z cells
+  particles::LatticeSpec lattice;            // type and orient (one element); its constant is lattice_constant
+  std::array<int, 3> target_cells{60, 20, 20};  // tiles of `lattice` (fcc along the axes: cubic cells)
+  int flyer_cells = 4;                       // tiles along x; the target's y and z tiles
   double temperature = 0;                    // K target; the target's atoms start at twice it (sec. 6.2)
   std::uint64_t seed = 1;
 };
@@ -25,7 +29,7 @@ struct RodConfig {
 struct RodGeometry {
   Vec3 offset{};                 // box position = deck position + offset
   double impact_face = 0;        // deck x of the target's first plane
-  double length = 0;             // target length along x (cells x a)
+  double length = 0;             // target length along x (tiles x tile length)
   double ly = 0, lz = 0;         // cross-section
   std::int64_t flyer_atoms = 0;  // ids 1..flyer_atoms
 };

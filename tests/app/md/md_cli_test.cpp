@@ -124,6 +124,33 @@ TEST(MdCli, CheckStatesTheOrientedTile) {
       << r.output;
 }
 
+// A [jet] and a [rod] of an oriented lattice: check states the tile their counts count.
+TEST(MdCli, CheckStatesTheTileOfAJetAndARod) {
+  const std::string head = "[potential]\nfile = \"" + mpmx::test::kLammpsPotentials +
+                           "Fe_mm.eam.fs\"\nelements = [\"Fe\"]\n[lattice]\ntype = \"bcc\"\nconstant = 2.8553\n"
+                           "orient = [[1, 1, 0], [-1, 1, 0], [0, 0, 1]]\ncells = [1, 1, 1]\n[run]\ndt = 0.001\n";
+  auto r = run_cli("md " + write_deck("jet_bcc.toml", head + "[jet]\ncells = [16, 8, 3]\npiston_cells = 2\n"
+                                                             "notch_depth_nm = 0.5\nbins = [8, 2]\n"
+                                                             "duration_ps = 0.02\nrecord_every_ps = 0.01\n")
+                             .string() +
+                   " --check");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("lattice: bcc a = 2.8553 A, x [1,1,0] y [-1,1,0] z [0,0,1]: periodic tile 4.038 x 4.038 x "
+                          "2.8553 A of 4 atoms; jet (scale 1, piston 2 tiles; before the notch) 16 x 8 x 3 tiles = "
+                          "64.6081 x 32.304 x 8.5659 A, 1536 atoms"),
+            std::string::npos)
+      << r.output;
+  r = run_cli("md " + write_deck("rod_bcc.toml", head + "steps = 10\n[rod]\ntarget_cells = [6, 2, 2]\n"
+                                                        "flyer_cells = 2\nflyer_velocity = 5.0\nrescale_every = 0\n")
+                          .string() +
+              " --check");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("periodic tile 4.038 x 4.038 x 2.8553 A of 4 atoms; rod (flyer 2 + target 6 tiles along "
+                          "x) 8 x 2 x 2 tiles = 32.304 x 8.07601 x 5.7106 A, 128 atoms"),
+            std::string::npos)
+      << r.output;
+}
+
 TEST(MdCli, BadDeckNamesKeyValueReason) {
   std::string text = kGoodMdDeck;
   text.replace(text.find("dt = 0.001"), 10, "dt = -0.5");

@@ -199,7 +199,7 @@ TEST(MdConfigHostile, StepSumsPastAnInt64AreRefused) {
 }
 
 // [lattice]'s type, orient and c_over_a (M6): an oriented bcc box read; a bad set refused
-// naming the key, the value and the reason; c_over_a only for hcp; a [bar] of any, a [rod] fcc only.
+// naming the key, the value and the reason; c_over_a only for hcp; a [bar] of any, a [rod] of one element.
 TEST(MdConfigLattice, OrientedCrystalsReadAndBadSetsRefused) {
   auto deck = [](const std::string& lattice) {
     std::string t = lj_deck("3", "10");
@@ -230,8 +230,48 @@ TEST(MdConfigLattice, OrientedCrystalsReadAndBadSetsRefused) {
       << msg;
   c = md_config_of(deck("type = \"bcc\"") + "[bar]\ncells_x = 10\ncells_yz = 3\n");
   EXPECT_EQ(c.bar_config.lattice.style, mpmx::particles::LatticeStyle::bcc);
-  msg = error(deck("type = \"bcc\"") + "[rod]\ntarget_cells = [4, 4, 4]\nflyer_cells = 2\nflyer_velocity = 5.0\n");
-  EXPECT_NE(msg.find("key 'lattice.type' = \"bcc\": a [jet] or [rod] sample is built of fcc cells"),
+  c = md_config_of(deck("type = \"bcc\"") +
+                   "[rod]\ntarget_cells = [4, 4, 4]\nflyer_cells = 2\nflyer_velocity = 5.0\nrescale_every = 0\n");
+  EXPECT_EQ(c.rod_config.lattice.style, mpmx::particles::LatticeStyle::bcc);
+  msg = error(deck("type = \"b2\"") +
+              "[rod]\ntarget_cells = [4, 4, 4]\nflyer_cells = 2\nflyer_velocity = 5.0\nrescale_every = 0\n");
+  EXPECT_NE(msg.find("key 'lattice.type' = \"b2\": a [jet] or [rod] sample is of one element"), std::string::npos)
+      << msg;
+}
+
+// A [jet] and a [rod] of an oriented lattice count its tiles: their checks state the
+// tiles' lengths, the notch stays in nm against the block's length in Angstrom, and a
+// rod's track between two of the target's planes is refused naming where they lie.
+TEST(MdConfigLattice, JetAndRodCountTilesOfTheOrientedLattice) {
+  const std::string lattice = "[lattice]\ntype = \"bcc\"\nconstant = 2.8553\norient = [[1, 1, 1], [-1, 1, 0], "
+                              "[-1, -1, 2]]\ncells = [1, 1, 1]\n";
+  const std::string head = "[potential]\nfile = \"" + mpmx::test::kLammpsPotentials +
+                           "Fe_mm.eam.fs\"\nelements = [\"Fe\"]\n" + lattice + "[run]\ndt = 0.001\n";
+  const std::string jet = "[jet]\ncells = [24, 6, 2]\npiston_cells = 3\nbins = [8, 2]\nduration_ps = 0.04\n"
+                          "record_every_ps = 0.01\nscale = 1.0\n";
+  MdConfig c = md_config_of(head + jet + "notch_depth_nm = 0.5\n");
+  EXPECT_EQ(c.jet_config.lattice.style, mpmx::particles::LatticeStyle::bcc);
+  EXPECT_EQ(c.jet_config.lattice.orient[0][2], 1);
+  // 21 block tiles of sqrt(3)/2 a = 2.4728 A: 51.928 A; a 6 nm notch is deeper.
+  std::string msg = error(head + jet + "notch_depth_nm = 6.0\n");
+  EXPECT_NE(msg.find("key 'jet.notch_depth_nm' = 6: at scale 1 the notch (60 A) is not shallower than the block "
+                     "(51.928009"),
+            std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("21 tiles of 2.47276 x 4.038 x 6.99403 A)"), std::string::npos) << msg;
+  msg = error(head + "[jet]\ncells = [24, 6, 2]\npiston_cells = 24\nbins = [8, 2]\nduration_ps = 0.04\n"
+                     "record_every_ps = 0.01\nnotch_depth_nm = 0.5\n");
+  EXPECT_NE(msg.find("key 'jet.piston_cells' = 24: at scale 1 the piston is 24 of 24 tiles of 2.47276"),
+            std::string::npos)
+      << msg;
+  // The rod's target planes along [111]: three per tile, at 0, 0.824 and 1.649 A.
+  const std::string rod = "[rod]\ntarget_cells = [10, 2, 1]\nflyer_cells = 2\nflyer_velocity = 5.0\n"
+                          "rescale_every = 0\n[[track]]\nname = \"r\"\nx = [";
+  c = md_config_of(head + "steps = 10\n" + rod + "5.5, 6.0]\n");  // the face at 4.9455 A, a plane at 5.7698
+  EXPECT_EQ(c.rod_config.lattice.orient[1][0], -1);
+  msg = error(head + "steps = 10\n" + rod + "5.0, 5.7]\n");
+  EXPECT_NE(msg.find("track \"r\": x = [5, 5.7) A holds no atomic plane of the target (planes at 0, 0.824254, "
+                     "1.64851 A in each tile of 2.47276 A from the impact face at"),
             std::string::npos)
       << msg;
 }

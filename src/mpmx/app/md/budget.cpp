@@ -7,12 +7,19 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/machine.hpp"
+#include "mpmx/particles/tile_planes.hpp"
 
 namespace mpmx::app::md {
 
 MdBudget estimate_md(const MdConfig& c, double cutoff) {
   MdBudget b;
-  const double a = c.lattice_constant, reach = cutoff + c.options.skin;
+  const double reach = cutoff + c.options.skin;
+  // The cell: fcc's cube of 4 atoms, or the oriented lattice's periodic tile.
+  particles::LatticeSpec spec = c.lattice;
+  spec.constant = c.lattice_constant;
+  const particles::TilePlanes tile = particles::tile_planes(spec);
+  const double* len = tile.length.data();
+  const double per_cell = static_cast<double>(tile.atoms);
   double n[3];
   double filled = 1.0;  // the part of the cells that holds atoms
   if (c.bar) {
@@ -21,7 +28,7 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
   } else if (c.jet) {
     const JetConfig& j = c.jet_config;
     n[0] = j.nx(), n[1] = j.ny(), n[2] = j.nz();
-    filled = 1.0 - j.notch_depth_A() / (2.0 * n[0] * a);  // the V notch: half its depth's share
+    filled = 1.0 - j.notch_depth_A() / (2.0 * n[0] * len[0]);  // the V notch: half its depth's share
     b.size_key = "jet.cells and jet.scale";
   } else if (c.rod) {
     const RodConfig& r = c.rod_config;
@@ -30,13 +37,6 @@ MdBudget estimate_md(const MdConfig& c, double cutoff) {
   } else {
     for (int d = 0; d < 3; ++d) n[d] = c.cells[d];
     b.size_key = "lattice.cells";
-  }
-  // The cell: fcc's cube of 4 atoms, or the oriented lattice's periodic tile.
-  double len[3] = {a, a, a}, per_cell = 4.0;
-  if (!c.jet && !c.rod && !c.lattice.plain_fcc()) {
-    const particles::LatticeTile tile = particles::lattice_tile(c.lattice);
-    for (int d = 0; d < 3; ++d) len[d] = tile.length[d];
-    per_cell = static_cast<double>(tile.atoms);
   }
   b.atoms = std::round(per_cell * n[0] * n[1] * n[2] * filled);
   b.images = reach / std::min({n[0] * len[0], n[1] * len[1], n[2] * len[2]});

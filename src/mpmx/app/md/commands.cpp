@@ -98,8 +98,8 @@ void run_jet_lammps(const md::MdConfig& c, const std::string& out, const std::st
 }
 
 // The oriented crystal's periodic tile and box: what `check` states of [lattice].
-// `what`: "box" or "bar"; `cells`: its tiles along x, y, z.
-void print_lattice(const md::MdConfig& c, const char* what, const std::array<int, 3>& cells, double strain_x) {
+// `what`: "box", "bar", the jet or the rod; `cells`: its tiles along x, y, z.
+void print_lattice(const md::MdConfig& c, const std::string& what, const std::array<int, 3>& cells, double strain_x) {
   const particles::LatticeSpec& l = c.lattice;
   const particles::LatticeTile tile = particles::lattice_tile(l);
   const auto& o = l.orient;
@@ -128,7 +128,7 @@ void check_md(const std::string& path, bool force, bool lammps = false) {
   one.threaded = false;
   // Timed on an fcc box of the crystal's atom density (as many neighbours a pair list holds).
   double timed_a = config.lattice_constant;
-  if (!config.lattice.plain_fcc() && !config.jet && !config.rod) {
+  if (!config.lattice.plain_fcc()) {
     const particles::LatticeTile tile = particles::lattice_tile(config.lattice);
     timed_a = std::cbrt(4.0 * tile.length[0] * tile.length[1] * tile.length[2] / static_cast<double>(tile.atoms));
   }
@@ -142,6 +142,20 @@ void check_md(const std::string& path, bool force, bool lammps = false) {
              budget.atom_steps / rate / 3600.0, rate,
              measured ? "a box of its potential timed on this core just now" : "a typical figure");
   if (!config.bar && !config.jet && !config.rod) print_lattice(config, "box", config.cells, config.strain_x);
+  // A sample's counts are tiles of the oriented lattice: say how long they are.
+  if (!config.lattice.plain_fcc()) {
+    const md::JetConfig& j = config.jet_config;
+    const md::RodConfig& r = config.rod_config;
+    if (config.bar)
+      print_lattice(config, "bar", {config.bar_config.cells_x, config.bar_config.cells_yz, config.bar_config.cells_yz},
+                    0.0);
+    if (config.jet)
+      print_lattice(config, fmt::format("jet (scale {:.6g}, piston {} tiles; before the notch)", j.scale, j.npiston()),
+                    {j.nx(), j.ny(), j.nz()}, 0.0);
+    if (config.rod)
+      print_lattice(config, fmt::format("rod (flyer {} + target {} tiles along x)", r.flyer_cells, r.target_cells[0]),
+                    {r.flyer_cells + r.target_cells[0], r.target_cells[1], r.target_cells[2]}, 0.0);
+  }
   if (config.ensemble != "nve") {
     const md::NoseHooverOptions& nh = config.nose_hoover;
     std::string what = nh.hugoniot ? fmt::format("the Hugoniostat: {:.6g} GPa along its shock axis, the thermostat's "
@@ -157,9 +171,6 @@ void check_md(const std::string& path, bool force, bool lammps = false) {
                           nh.p_damp);
     fmt::print("  ensemble {}: {}\n", config.ensemble, what);
   }
-  else if (config.bar && !config.lattice.plain_fcc())
-    print_lattice(config, "bar", {config.bar_config.cells_x, config.bar_config.cells_yz, config.bar_config.cells_yz},
-                  0.0);
   if (budget.bins > 0)
     fmt::print("  {:.4g} bins: about {} of bin tables and images over the run\n", budget.bins,
                format_bytes(budget.output_bytes));

@@ -16,6 +16,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/physical_bounds.hpp"
 #include "mpmx/particles/lattice_keys.hpp"
+#include "mpmx/particles/tile_planes.hpp"
 
 namespace mpmx::app::md {
 
@@ -32,14 +33,39 @@ void check_constant(io::Section& s, std::string_view key, double a, const partic
   if (!why.empty()) s.check(false, key, why);
 }
 
+// What a [jet]'s or [rod]'s counts count: fcc's cubic cells, or the oriented lattice's tiles.
+std::string sample_unit(const particles::LatticeSpec& spec) {
+  if (spec.plain_fcc()) return "cells";
+  const particles::TilePlanes t = particles::tile_planes(spec);
+  return fmt::format("tiles of {:.6g} x {:.6g} x {:.6g} A", t.length[0], t.length[1], t.length[2]);
+}
+
+// Whether the [lattice] read makes a tile (else its keys were refused already).
+bool tiles_known(const particles::LatticeSpec& spec) {
+  return spec.constant > 0 && particles::orient_problem(spec).empty() &&
+         (spec.style != particles::LatticeStyle::hcp || spec.c_over_a > 0);
+}
+
+// The target's planes along x, as a track's error states them.
+std::string plane_spacing(const particles::TilePlanes& t) {
+  if (t.x_planes.size() == 2 && t.x_planes[1] == 0.5) return fmt::format("every {} A", 0.5 * t.length[0]);
+  std::string f;
+  for (double x : t.x_planes) f += fmt::format("{}{:.6g}", f.empty() ? "" : ", ", x * t.length[0]);
+  return fmt::format("at {} A in each tile of {:.6g} A", f, t.length[0]);
+}
+
 // [lattice]: the crystal (fcc, bcc or hcp in any orientation) and its initial strain.
-// `sample`: the deck builds a [jet] or [rod], whose samples are fcc cells along the axes.
+// `sample`: the deck builds a [jet] or [rod], whose samples hold one element.
 void read_lattice(io::Section& lat, bool sample, MdConfig& c) {
   particles::LatticeSpec& spec = c.lattice;
   particles::read_crystal_keys(lat, "type", spec);
   c.lattice_constant = lat.number("constant");
   lat.positive("constant", c.lattice_constant);
   spec.constant = c.lattice_constant;
+  if (sample)
+    lat.check(spec.style != particles::LatticeStyle::b2, "type",
+              "a [jet] or [rod] sample is of one element (fcc, bcc or hcp); b2 applies to the periodic box and the "
+              "[bar]");
   if (spec.style == particles::LatticeStyle::b2) {
     const auto* eam = std::get_if<EamSpec>(&c.potential);
     lat.check(eam && eam->elements.size() >= 2, "type",
@@ -47,10 +73,6 @@ void read_lattice(io::Section& lat, bool sample, MdConfig& c) {
               "eam potential with two elements");
   }
   check_constant(lat, "constant", c.lattice_constant, spec);
-  if (sample && !spec.plain_fcc())
-    lat.check(false, spec.style != particles::LatticeStyle::fcc ? "type" : "orient",
-              "a [jet] or [rod] sample is built of fcc cells along the cube axes; type and orient apply to the "
-              "periodic box and the [bar]");
   const auto cells = lat.integers("cells", 1, 1000);  // unit cells along x, y, z
   if (cells.size() == 3 || cells.size() == 1) {
     for (int d = 0; d < 3; ++d) c.cells[d] = static_cast<int>(cells[cells.size() == 3 ? d : 0]);
@@ -200,7 +222,8 @@ void read_jet_sample(io::Section& jet, io::Section& run, bool has_bar, MdConfig&
   if (cells.size() == 3) {
     for (int d = 0; d < 3; ++d) j.cells[d] = static_cast<int>(cells[d]);
   } else {
-    jet.check(false, "cells", "expected [nx, ny, nz] (fcc cells at scale 1; z is not scaled)");
+    jet.check(false, "cells",
+              "expected [nx, ny, nz] (fcc cells, or an oriented [lattice]'s tiles, at scale 1; z is not scaled)");
   }
   j.piston_cells = jet.integer_int("piston_cells", 1, 100000);
   j.notch_depth_nm = jet.number("notch_depth_nm");
@@ -208,17 +231,21 @@ void read_jet_sample(io::Section& jet, io::Section& run, bool has_bar, MdConfig&
   j.velocity_km_s = jet.number("velocity_km_s", 2.5);
   jet.check(j.velocity_km_s > 0 && j.velocity_km_s <= 20, "velocity_km_s", "must lie in (0, 20] km/s");
   j.lattice_constant = c.lattice_constant;
+  j.lattice = c.lattice;
   j.temperature = c.temperature;
   j.seed = c.seed;
-  if (cells.size() == 3 && j.scale > 0 && j.scale <= 10) {
+  if (cells.size() == 3 && j.scale > 0 && j.scale <= 10 && tiles_known(c.lattice)) {
+    const std::string tiles = sample_unit(c.lattice);
+    const double tx = particles::tile_planes(c.lattice).length[0];
     jet.check(j.nx() >= 2 && j.ny() >= 1, "cells",
-              fmt::format("at scale {} the sample is {} x {} cells: needs at least 2 x 1", j.scale, j.nx(), j.ny()));
+              fmt::format("at scale {} the sample is {} x {} {}: needs at least 2 x 1", j.scale, j.nx(), j.ny(),
+                          tiles));
     jet.check(j.npiston() >= 1 && j.npiston() < j.nx(), "piston_cells",
-              fmt::format("at scale {} the piston is {} of {} cells: needs at least 1 and fewer than the sample",
-                          j.scale, j.npiston(), j.nx()));
-    jet.check(j.notch_depth_A() < (j.nx() - j.npiston()) * c.lattice_constant, "notch_depth_nm",
-              fmt::format("at scale {} the notch ({} A) is not shallower than the block ({} A)", j.scale,
-                          j.notch_depth_A(), (j.nx() - j.npiston()) * c.lattice_constant));
+              fmt::format("at scale {} the piston is {} of {} {}: needs at least 1 and fewer than the sample",
+                          j.scale, j.npiston(), j.nx(), tiles));
+    jet.check(j.notch_depth_A() < (j.nx() - j.npiston()) * tx, "notch_depth_nm",
+              fmt::format("at scale {} the notch ({} A) is not shallower than the block ({} A: {} {})", j.scale,
+                          j.notch_depth_A(), (j.nx() - j.npiston()) * tx, j.nx() - j.npiston(), tiles));
   }
 }
 
@@ -259,6 +286,31 @@ void read_jet_records(io::Section& jet, io::Section& run, MdConfig& c) {
   }
 }
 
+// The rod's tracks: each region must hold an atomic plane of the target at the start.
+void check_track_planes(io::Section& an, const MdConfig& c) {
+  if (!tiles_known(c.lattice)) return;  // the [lattice] said why
+  const RodConfig& r = c.rod_config;
+  // The target's atomic planes lie at face + (i + f) L, i = 0 .. nx - 1, f the tile's
+  // plane fractions (md/rod.hpp's frame; fcc along the axes: every a/2): a region between
+  // two planes would hold no atom at the start.
+  const particles::TilePlanes tp = particles::tile_planes(c.lattice);
+  const double L = tp.length[0], face = r.flyer_cells * L;
+  const double last = face + (r.target_cells[0] - 1 + tp.x_planes.back()) * L;
+  for (const TrackSpec& t : c.tracks.tracks) {
+    bool holds = false;
+    const double first_tile = std::max(0.0, std::floor((t.lo - face) / L) - 1);
+    for (double i = first_tile; i < r.target_cells[0] && !holds && face + i * L < t.hi; ++i)
+      for (double f : tp.x_planes) {
+        const double x = face + (i + f) * L;
+        holds = holds || (x >= t.lo - 1e-9 * L && x < t.hi);
+      }
+    if (!holds)
+      an.error(fmt::format("track \"{}\": x = [{}, {}) A holds no atomic plane of the target (planes {} from the "
+                           "impact face at {} A to {} A)",
+                           t.name, t.lo, t.hi, plane_spacing(tp), face, last));
+  }
+}
+
 // [rod] (seed 004 sec. 4.1.1): the flyer and target, the equilibration, the flyer's speed;
 // with the region tracks of [[track]], [analysis] and [profile] (app/region_tracks.hpp).
 void read_rod(io::Section& root, io::Section& rod, bool other, MdConfig& c) {
@@ -269,10 +321,12 @@ void read_rod(io::Section& root, io::Section& rod, bool other, MdConfig& c) {
   if (cells.size() == 3) {
     for (int d = 0; d < 3; ++d) r.target_cells[d] = static_cast<int>(cells[d]);
   } else {
-    rod.check(false, "target_cells", "expected [nx, ny, nz] (fcc cells of lattice.constant)");
+    rod.check(false, "target_cells",
+              "expected [nx, ny, nz] (fcc cells of lattice.constant, or an oriented [lattice]'s tiles)");
   }
   r.flyer_cells = rod.integer_int("flyer_cells", 1, 100000);
   r.lattice_constant = c.lattice_constant;
+  r.lattice = c.lattice;
   r.temperature = c.temperature;
   r.seed = c.seed;
   c.rod_velocity = rod.number("flyer_velocity");
@@ -284,16 +338,7 @@ void read_rod(io::Section& root, io::Section& rod, bool other, MdConfig& c) {
             "rescales to thermal.temperature, which is 0: set rescale_every = 0 or a temperature");
   auto an = root.optional_table("analysis");
   read_track_settings(root, an, c.thermo, c.tracks);
-  // The target's atomic planes lie at face + k a/2, k = 0 .. 2 nx - 1 (md/rod.hpp's frame):
-  // a region between two planes would hold no atom at the start.
-  const double a = c.lattice_constant, face = r.flyer_cells * a;
-  for (const TrackSpec& t : c.tracks.tracks) {
-    const double k = std::max(0.0, std::ceil((t.lo - face) / (0.5 * a) - 1e-9));
-    if (!(k < 2.0 * r.target_cells[0] && face + 0.5 * a * k < t.hi))
-      an.error(fmt::format("track \"{}\": x = [{}, {}) A holds no atomic plane of the target (planes every {} A "
-                           "from the impact face at {} A to {} A)",
-                           t.name, t.lo, t.hi, 0.5 * a, face, face + (r.target_cells[0] - 0.5) * a));
-  }
+  check_track_planes(an, c);
   rod.check(c.rod_rescale_every == 0 || c.rod_equilibrate_steps % c.rod_rescale_every == 0, "equilibrate_steps",
             "must be a multiple of rescale_every (the rescaling ends with the equilibration)");
 }

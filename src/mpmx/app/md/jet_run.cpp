@@ -143,6 +143,7 @@ void insert_jet_figures(const MdConfig& c, const JetGeometry& geo, const BinGrid
 toml::table jet_table(const MdConfig& c, const JetGeometry& geo, const BinGrid& grid, std::size_t records) {
   return toml::table{{"scale", c.jet_config.scale},
                      {"cells", toml::array{c.jet_config.nx(), c.jet_config.ny(), c.jet_config.nz()}},
+                     {"tile_A", tile_lengths(geo.lattice, geo.lattice.constant)},
                      {"piston_cells", c.jet_config.npiston()},
                      {"piston_atoms", geo.piston_atoms},
                      {"notch_depth_A", c.jet_config.notch_depth_A()},

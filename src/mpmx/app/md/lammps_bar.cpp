@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <deque>
 #include <filesystem>
@@ -29,6 +30,20 @@ std::string lammps_pair_lines(const PotentialSpec& spec, const Potential& pot) {
         return entry.lammps_pair_lines(*made);
       },
       spec);
+}
+
+std::string lammps_lattice_line(const particles::LatticeSpec& spec) {
+  const particles::Orient& o = spec.orient;
+  std::string orient;
+  for (int d = 0; d < 3; ++d) orient += fmt::format(" orient {} {} {} {}", "xyz"[d], o[d][0], o[d][1], o[d][2]);
+  // LAMMPS's hcp is ideal (c/a = sqrt(8/3)); another c/a is its cell and basis spelled out.
+  if (spec.style == particles::LatticeStyle::hcp && std::abs(spec.c_over_a - std::sqrt(8.0 / 3.0)) > 1e-12)
+    return fmt::format("lattice custom {:.17g} a1 1 0 0 a2 0 {:.17g} 0 a3 0 0 {:.17g} basis 0 0 0 basis 0.5 0.5 0 "
+                       "basis 0.5 {:.17g} 0.5 basis 0 {:.17g} 0.5{}\n",
+                       spec.constant, std::sqrt(3.0), spec.c_over_a, 5.0 / 6.0, 1.0 / 3.0, orient);
+  if (spec.style == particles::LatticeStyle::b2)  // bcc's sites, the body centres typed by create_atoms' basis
+    return fmt::format("lattice bcc {:.17g}{}\n", spec.constant, orient);
+  return fmt::format("lattice {} {:.17g}{}\n", particles::lattice_name(spec.style), spec.constant, orient);
 }
 
 void write_lammps_data(const System& sys, const std::string& path, const std::string& title) {

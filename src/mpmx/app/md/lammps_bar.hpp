@@ -15,6 +15,7 @@
 
 #include "mpmx/md/bar.hpp"
 #include "mpmx/md/potential/potential.hpp"
+#include "mpmx/particles/oriented_lattice.hpp"
 
 namespace mpmx::app::md {
 
@@ -37,6 +38,10 @@ void write_lammps_bar(const Bar& bar, const PotentialSpec& spec, double dt, std:
 // potential mpmx uses, as its registry entry writes them (eam setfl, fs, funcfl; lj);
 // InputError for the others.
 std::string lammps_pair_lines(const PotentialSpec& spec, const Potential& pot);
+// LAMMPS's `lattice` command of the crystal: `lattice STYLE a orient x u v w orient y ...
+// orient z ...` (hcp off the ideal c/a as `lattice custom` with LAMMPS's hcp basis), which
+// builds the sites particles::oriented_crystal does.
+std::string lammps_lattice_line(const particles::LatticeSpec& spec);
 // The system's atoms (positions in the box, on-step velocities), box and masses as a
 // LAMMPS data file (atom_style atomic; a tilted box with its xy xz yz line); `title`
 // goes into its first line.

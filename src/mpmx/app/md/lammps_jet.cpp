@@ -25,13 +25,13 @@ void write_lammps_jet(const System& sys, const JetGeometry& geo, const BinGrid& 
                                  steps, every));
   const std::string pair = lammps_pair_lines(spec, sys.potential());
   fs::create_directories(dir);
-  write_lammps_data(sys, (fs::path(dir) / kLammpsJetData).string(), "direct-MD copper jet");
+  write_lammps_data(sys, (fs::path(dir) / kLammpsJetData).string(), "direct-MD jet");
   const double ly = g.ny * g.dy;
   // stress/atom is -(m v v + W) in bar A^3 (LAMMPS's nktv2p) -> GPa of the bin.
   const double to_gpa = units::eV_per_A3_in_GPa / (units::lammps_nktv2p * g.volume());
   std::ofstream in(fs::path(dir) / kLammpsJetInput);
   in << fmt::format(
-      "# mpmx {}: direct-MD copper jet ({} atoms, {} x {} bins), the LAMMPS route of `mpmx md DECK --lammps`.\n"
+      "# mpmx {}: direct-MD jet ({} atoms, {} x {} bins), the LAMMPS route of `mpmx md DECK --lammps`.\n"
       "# Writes {}: every {} steps, {} rows 'bin sxx syy szz sxy sxz syz' (GPa, Cauchy sign,\n"
       "# eq. 2.25 per bin, bin = ix + nx iy + 1) - the numbers of mpmx's bins/md_bins_STEP.csv.\n"
       "units metal\n"
@@ -40,10 +40,15 @@ void write_lammps_jet(const System& sys, const JetGeometry& geo, const BinGrid& 
       "# 2 (cutoff + skin) plus half the sample, so no pair crosses it there either: same forces).\n"
       "boundary s p p\n"
       "read_data {}\n"
+      "# The crystal jet.data's atoms are cut from (mpmx's [lattice]), its origin site at\n"
+      "# x y z = {:.17g} {:.17g} {:.17g} A. The atoms and velocities come from jet.data;\n"
+      "# this line names their lattice, as later commands in lattice units use it.\n"
+      "{}"
       "# The ranks split x where the atoms are, not the box evenly (its vacuum would leave ranks idle),\n"
       "# and again every record as the block compresses and the jet grows.\n"
       "balance 1.0 shift x 20 1.02\n",
-      MPMX_VERSION, sys.atoms().size(), g.nx, g.ny, kLammpsJetStress, every, g.nx * g.ny, kLammpsJetData);
+      MPMX_VERSION, sys.atoms().size(), g.nx, g.ny, kLammpsJetStress, every, g.nx * g.ny, kLammpsJetData,
+      geo.origin[0], geo.origin[1], geo.origin[2], lammps_lattice_line(geo.lattice));
   if (sys.step() != 0) in << fmt::format("reset_timestep {}\n", sys.step());
   in << pair;
   in << fmt::format(

@@ -122,6 +122,7 @@ std::string run_rod(const MdConfig& c, const Potential& pot, const std::string& 
                                 {"target_cells", toml::array{c.rod_config.target_cells[0], c.rod_config.target_cells[1],
                                                              c.rod_config.target_cells[2]}},
                                 {"flyer_cells", c.rod_config.flyer_cells},
+                                {"tile_A", tile_lengths(c.rod_config.lattice, c.rod_config.lattice_constant)},
                                 {"flyer_atoms", nf},
                                 {"target_atoms", static_cast<std::int64_t>(n) - nf},
                                 {"impact_face_x_A", geo.impact_face},

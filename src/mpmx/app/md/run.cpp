@@ -24,6 +24,7 @@
 #include "mpmx/md/particles.hpp"
 #include "mpmx/md/system.hpp"
 #include "mpmx/particles/oriented_lattice.hpp"
+#include "mpmx/particles/tile_planes.hpp"
 
 namespace mpmx::app::md {
 
@@ -159,6 +160,12 @@ void write_record(const MdConfig& c, const Potential& pot, const toml::table& de
 }
 
 }  // namespace
+
+toml::array tile_lengths(particles::LatticeSpec lattice, double constant) {
+  lattice.constant = constant;
+  const particles::TilePlanes t = particles::tile_planes(lattice);
+  return toml::array{t.length[0], t.length[1], t.length[2]};
+}
 
 MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::table& deck_echo,
                     const RunControlOptions& o) {

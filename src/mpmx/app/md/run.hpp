@@ -26,6 +26,10 @@ struct MdRunSummary {
   std::int64_t step = 0, last_step = 0;  // the system's step where it ended, and the deck's last
 };
 
+// run.json's "tile_A" of a [jet] or [rod]: the lattice's periodic tile (Angstrom) at
+// `constant`, what their cell counts count.
+toml::array tile_lengths(particles::LatticeSpec lattice, double constant);
+
 MdRunSummary run_md(const MdConfig& config, const std::string& out_dir, const toml::table& deck_echo,
                     const RunControlOptions& options = {});
 
