@@ -7,15 +7,12 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
+#include "mpmx/particles/neighbor_all_pairs.hpp"
 #include "mpmx/particles/neighbor_search.hpp"
 
 namespace mpmx::particles {
 
 namespace {
-// Lexicographic sign of an image shift: picks one of (i, image n of j) and
-// (j, image -n of i) when i == j.
-bool positive(int a, int b, int c) { return a > 0 || (a == 0 && (b > 0 || (b == 0 && c > 0))); }
-
 // Sorts a[0..n), values in [0, 2^bits), by least-significant-digit radix passes of at
 // most 8 bits (tmp holds n): an atom's few dozen entries without the mispredicted
 // comparisons of a comparison sort.
@@ -49,9 +46,17 @@ void Neighbors::build(const Atoms& atoms, const Box& box, double rc, double sk, 
     throw RunError(fmt::format("{} atoms in one system: at most 2^30 - 1", atoms.size()));
   copy_locals(atoms);
   add_ghosts(atoms, box, rs);
-  const Bins bins = bin_entries(box, rs);
   const int nt = std::max(1, threads);
-  list_pairs(bins, rs, nt);
+  all_pairs_used_ = takes_all_pairs(atoms, box, rs);
+  if (all_pairs_used_) {
+    all_pairs_.prepare(x.data(), y.data(), z.data(), nlocal, nall, owner.data(), n1.data(), n2.data(), n3.data(), box,
+                       rs);
+    list_chunks(
+        [&](int i, std::vector<int>& scratch, std::vector<int>& out) { return all_pairs_.list_of(i, scratch, out); },
+        nt);
+  } else {
+    list_pairs(bin_entries(box, rs), rs, nt);
+  }
   if (tiles) build_tiles(nt);
   pack();
   remember(atoms, box);
@@ -112,6 +117,24 @@ void Neighbors::add_ghosts(const Atoms& atoms, const Box& box, double rs) {
   nall = static_cast<int>(x.size());
 }
 
+bool Neighbors::takes_all_pairs(const Atoms& atoms, const Box& box, double rs) const {
+  // All pairs costs per atom about its atoms times shifts per pair, the bins a constant.
+  // Measured (bench/md_force_bench, BM_NeighborBuild*, one invocation): all pairs is 2.4-2.6x
+  // cheaper at 500 atoms and one shift, 1.9x at 500 compressed to two shifts along z, and
+  // 1.1x at 2,916 atoms and one shift; the bound leaves a margin.
+  constexpr long long kAllPairsWork = 2048;
+  if (search == Search::binned || tiles || !periodic[0] || !periodic[1] || !periodic[2]) return false;
+  const int shifts = AllPairsSearch::shifts_per_pair(box, rs);
+  if (shifts == 0) return false;
+  if (search == Search::by_size && static_cast<long long>(nlocal) * shifts > kAllPairsWork) return false;
+  // The filter's margin holds for atoms in the fundamental domain (build()'s contract).
+  for (int i = 0; i < nlocal; ++i)
+    if (!(atoms.x[i] >= 0 && atoms.x[i] < box.lx && atoms.y[i] >= 0 && atoms.y[i] < box.ly && atoms.z[i] >= 0 &&
+          atoms.z[i] < box.lz))
+      return false;
+  return true;
+}
+
 Neighbors::Bins Neighbors::bin_entries(const Box& box, double rs) {
   // Bins over [-rs, L+rs) (no periodic wrap: ghosts are explicit); along an open axis
   // over the atoms' extent.
@@ -169,7 +192,7 @@ Neighbors::Bins Neighbors::bin_entries(const Box& box, double rs) {
     for (int k = 0; k < nall; ++k) {
       const int s = fill[bin[k]]++;
       bin_atoms_[s] = k;
-      bin_key_[s] = 2 * owner[k] + positive(n1[k], n2[k], n3[k]);  // a local's shift is zero
+      bin_key_[s] = 2 * owner[k] + positive_shift(n1[k], n2[k], n3[k]);  // a local's shift is zero
       bin_x_[s] = x[k], bin_y_[s] = y[k], bin_z_[s] = z[k];
     }
   }
@@ -204,6 +227,11 @@ void Neighbors::list_pairs(const Bins bins, double rs, int nt) {
     out.insert(out.end(), cand.begin(), cand.begin() + n);
     return n;
   };
+  list_chunks(list_of, nt);
+}
+
+template <class ListOf>
+void Neighbors::list_chunks(const ListOf& list_of, int nt) {
   // Fixed chunks of atoms, each listed into its own part by whichever thread takes it,
   // then laid end to end in chunk order.
   constexpr int kChunk = 512;
@@ -268,6 +296,7 @@ void Neighbors::shed() {
   for (auto* v : {&bin_start_, &bin_atoms_, &bin_key_}) release(*v);
   release(part_);
   release(tile_part_);
+  all_pairs_.release();
   // The ghosts' arrays grew by push_back (up to twice their size): kept at their size.
   for (auto* v : {&type, &owner}) v->shrink_to_fit();
   for (auto* v : {&n1, &n2, &n3}) v->shrink_to_fit();
@@ -282,7 +311,7 @@ std::size_t Neighbors::bytes() const {
   for (const auto* v : {&n1, &n2, &n3}) b += capacity_bytes(*v);
   for (const auto& p : part_) b += capacity_bytes(p);
   for (const auto& p : tile_part_) b += capacity_bytes(p);
-  return b;
+  return b + all_pairs_.bytes();
 }
 
 void Neighbors::pack() {

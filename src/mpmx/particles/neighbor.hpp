@@ -7,6 +7,8 @@
 // edges exceed the cutoff plus skin... and smaller ones too, since an atom's own images
 // are ghosts like any other. An axis may be open (`periodic[d] = false`, the DPD
 // engine's free surfaces): no images along it, and the bins there span the atoms' extent.
+// A small box with every axis periodic skips the bins (neighbor_all_pairs.hpp): the same
+// list, entry for entry, at a fraction of the cost.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -14,6 +16,7 @@
 
 #include "mpmx/particles/atoms.hpp"
 #include "mpmx/particles/box.hpp"
+#include "mpmx/particles/neighbor_all_pairs.hpp"
 
 namespace mpmx::particles {
 
@@ -61,6 +64,14 @@ class Neighbors {
   std::int64_t builds = 0;
   std::array<bool, 3> periodic{true, true, true};  // set before build()
 
+  // How build() finds the pairs (the same list either way): by the size rule, a small
+  // box with every axis periodic and no tiles by all pairs (neighbor_all_pairs.hpp), any
+  // other by bins; or forced (tests, benches), all pairs only where it applies.
+  enum class Search { by_size, binned, all_pairs };
+  Search search = Search::by_size;
+  // Whether the last build took all pairs.
+  bool all_pairs_built() const { return all_pairs_used_; }
+
   // With `tiles` set before build(), the locals cut into tiles of consecutive atoms (a
   // size from the atom count alone, never from the threads), so that each tile's pairs
   // can be summed into arrays of its own, small enough for a core's cache, and each atom
@@ -82,6 +93,8 @@ class Neighbors {
   std::vector<double> bin_x_, bin_y_, bin_z_;
   std::vector<std::vector<int>> part_;    // the lists of chunks of atoms (build)
   std::vector<std::vector<int>> tile_part_;  // each tile's entries (build_tiles)
+  AllPairsSearch all_pairs_;
+  bool all_pairs_used_ = false;
 
   // The bins of a build: lower corner, inverse edge and count along each axis.
   struct Bins {
@@ -92,8 +105,11 @@ class Neighbors {
   // The steps of build(), in order.
   void copy_locals(const Atoms& atoms);
   void add_ghosts(const Atoms& atoms, const Box& box, double rs);
+  bool takes_all_pairs(const Atoms& atoms, const Box& box, double rs) const;
   Bins bin_entries(const Box& box, double rs);
   void list_pairs(Bins bins, double rs, int threads);
+  template <class ListOf>
+  void list_chunks(const ListOf& list_of, int threads);
   void build_tiles(int threads);
   void pack();
   void remember(const Atoms& atoms, const Box& box);
