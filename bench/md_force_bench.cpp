@@ -10,6 +10,8 @@
 // with the cut-off: once a step, as the kernel's density pass keeps the pairs it finds for
 // the force pass) and the scatter floor (each pair within the cut-off adding a force to
 // both atoms). A kernel's step against their sum is how near the layout's limit it runs.
+// Beside them, what a cluster layout would evaluate in the same box (BM_ClusterLanes).
+#include <algorithm>
 #include <cmath>
 #include <vector>
 #include <benchmark/benchmark.h>
@@ -123,6 +125,7 @@ void BM_GatherFloor(benchmark::State& state) {
   }
   state.counters["atom_steps_per_s"] =
       benchmark::Counter(static_cast<double>(nb.nlocal) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["candidates_per_atom"] = static_cast<double>(nb.list.size()) / nb.nlocal;
 }
 
 // The pairs within the cut-off (found once, with c = 1/r), each adding dx * c to one atom
@@ -158,10 +161,100 @@ void BM_ScatterFloor(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(nb.nlocal) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["pairs_per_atom"] = static_cast<double>(pi.size()) / nb.nlocal;
 }
+
+// The pairs a cluster layout (GROMACS's, 4 atoms a cluster loaded as one vector) would
+// evaluate in the same 500-atom box: the fcc cells as clusters, and every pair of clusters
+// (and image) whose bounding boxes come within the cut-off (plus the list's skin, range(1)
+// in tenths of an Angstrom) as 4 x 4 lanes. Its loop is the layout's gather floor: r^2 of
+// every lane, with the j cluster's coordinates as contiguous loads (no gather), the lanes
+// within the cut-off counted. Counters: lanes an atom (half, as the half list's
+// candidates), the pairs within the cut-off an atom, and their ratio: the work a vector
+// kernel over clusters does for each pair it needs, against the half list's.
+void BM_ClusterLanes(benchmark::State& state) {
+  const int cells = static_cast<int>(state.range(0));
+  const System s = make(cells, false);
+  mpmx::particles::Atoms at = s.atoms();
+  mpmx::md::wrap(at, s.box(), mpmx::particles::Mat3{}, false);
+  const double rc = s.potential().cutoff(), rs = rc + 0.1 * static_cast<double>(state.range(1));
+  const double L = s.box().lx;
+  const int nc = cells * cells * cells;
+  // Clusters: the four atoms of each fcc cell (by the lattice's numbering, each taken to
+  // the image nearest its cell's first atom), x y z of four lanes.
+  std::vector<double> cx(4 * static_cast<std::size_t>(nc)), cy(cx), cz(cx);
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    const auto l = static_cast<std::size_t>(at.id[i] - 1);
+    if (at.id[i] < 1 || l >= cx.size()) {
+      state.SkipWithError("atom ids are not the lattice's 1..N");
+      return;
+    }
+    cx[l] = at.x[i], cy[l] = at.y[i], cz[l] = at.z[i];
+  }
+  for (int c = 0; c < nc; ++c)
+    for (int l = 1; l < 4; ++l)
+      for (auto* v : {&cx, &cy, &cz}) {
+        double& p = (*v)[4 * c + l];
+        p -= L * std::round((p - (*v)[4 * c]) / L);
+      }
+  std::vector<double> lo(3 * static_cast<std::size_t>(nc), 1e300), hi(3 * static_cast<std::size_t>(nc), -1e300);
+  for (int c = 0; c < nc; ++c)
+    for (int l = 0; l < 4; ++l) {
+      const double p[3] = {cx[4 * c + l], cy[4 * c + l], cz[4 * c + l]};
+      for (int d = 0; d < 3; ++d) lo[3 * c + d] = std::min(lo[3 * c + d], p[d]), hi[3 * c + d] = std::max(hi[3 * c + d], p[d]);
+    }
+  // Cluster pairs (i, j, image shift) within rs by bounding boxes, each unordered pair once
+  // (i's own cluster at no shift: its upper triangle).
+  struct Pair {
+    int i, j;
+    double sx, sy, sz;
+  };
+  std::vector<Pair> pairs;
+  for (int i = 0; i < nc; ++i)
+    for (int j = 0; j < nc; ++j)
+      for (int u = -1; u <= 1; ++u)
+        for (int v = -1; v <= 1; ++v)
+          for (int w = -1; w <= 1; ++w) {
+            const double sh[3] = {u * L, v * L, w * L};
+            double d2 = 0;
+            for (int d = 0; d < 3; ++d) {
+              const double gap = std::max({0.0, lo[3 * i + d] - (hi[3 * j + d] + sh[d]), lo[3 * j + d] + sh[d] - hi[3 * i + d]});
+              d2 += gap * gap;
+            }
+            const bool self = i == j && u == 0 && v == 0 && w == 0;
+            // each unordered (i, j, shift) once: j > i, or j == i with a positive shift
+            const bool once = j > i || (j == i && (u > 0 || (u == 0 && (v > 0 || (v == 0 && w > 0)))));
+            if (d2 < rs * rs && (once || self)) pairs.push_back({i, j, sh[0], sh[1], sh[2]});
+          }
+  const double cutsq = rc * rc;
+  double within = 0;
+  for (auto _ : state) {
+    int n = 0;
+    for (const Pair& p : pairs) {
+      const double* xj = &cx[4 * static_cast<std::size_t>(p.j)];
+      const double* yj = &cy[4 * static_cast<std::size_t>(p.j)];
+      const double* zj = &cz[4 * static_cast<std::size_t>(p.j)];
+      const bool self = p.i == p.j && p.sx == 0 && p.sy == 0 && p.sz == 0;
+      for (int li = 0; li < 4; ++li) {
+        const double xi = cx[4 * p.i + li] - p.sx, yi = cy[4 * p.i + li] - p.sy, zi = cz[4 * p.i + li] - p.sz;
+        for (int lj = 0; lj < 4; ++lj) {
+          const double dx = xi - xj[lj], dy = yi - yj[lj], dz = zi - zj[lj];
+          n += (dx * dx + dy * dy + dz * dz < cutsq) & (!self | (lj > li));
+        }
+      }
+    }
+    within = n;
+    benchmark::DoNotOptimize(n);
+  }
+  const double atoms = static_cast<double>(at.size());
+  state.counters["atom_steps_per_s"] = benchmark::Counter(atoms * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["lanes_per_atom"] = 16.0 * static_cast<double>(pairs.size()) / atoms;
+  state.counters["pairs_per_atom"] = within / atoms;
+  state.counters["lanes_per_pair"] = 16.0 * static_cast<double>(pairs.size()) / within;
+}
 }  // namespace
 
 BENCHMARK(BM_GatherFloor)->Arg(5)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ScatterFloor)->Arg(5)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ClusterLanes)->ArgNames({"cells", "skin_tenths"})->Args({5, 0})->Args({5, 10})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_NeighborBuild)->Arg(5)->Arg(20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_NeighborBuild)
     ->ArgNames({"cells", "path"})
