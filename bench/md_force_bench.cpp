@@ -176,7 +176,7 @@ void BM_ClusterLanes(benchmark::State& state) {
   mpmx::particles::Atoms at = s.atoms();
   mpmx::md::wrap(at, s.box(), mpmx::particles::Mat3{}, false);
   const double rc = s.potential().cutoff(), rs = rc + 0.1 * static_cast<double>(state.range(1));
-  const double L = s.box().lx;
+  const double L[3] = {s.box().lx, s.box().ly, s.box().lz};  // fcc(): a cube, no tilt
   const int nc = cells * cells * cells;
   // Clusters: the four atoms of each fcc cell (by the lattice's numbering, each taken to
   // the image nearest its cell's first atom), x y z of four lanes.
@@ -191,21 +191,23 @@ void BM_ClusterLanes(benchmark::State& state) {
   }
   for (int c = 0; c < nc; ++c)
     for (int l = 1; l < 4; ++l)
-      for (auto* v : {&cx, &cy, &cz}) {
-        double& p = (*v)[4 * c + l];
-        p -= L * std::round((p - (*v)[4 * c]) / L);
+      for (int d = 0; d < 3; ++d) {
+        std::vector<double>& v = d == 0 ? cx : d == 1 ? cy : cz;
+        v[4 * c + l] -= L[d] * std::round((v[4 * c + l] - v[4 * c]) / L[d]);
       }
   std::vector<double> lo(3 * static_cast<std::size_t>(nc), 1e300), hi(3 * static_cast<std::size_t>(nc), -1e300);
   for (int c = 0; c < nc; ++c)
     for (int l = 0; l < 4; ++l) {
       const double p[3] = {cx[4 * c + l], cy[4 * c + l], cz[4 * c + l]};
-      for (int d = 0; d < 3; ++d) lo[3 * c + d] = std::min(lo[3 * c + d], p[d]), hi[3 * c + d] = std::max(hi[3 * c + d], p[d]);
+      for (int d = 0; d < 3; ++d)
+        lo[3 * c + d] = std::min(lo[3 * c + d], p[d]), hi[3 * c + d] = std::max(hi[3 * c + d], p[d]);
     }
   // Cluster pairs (i, j, image shift) within rs by bounding boxes, each unordered pair once
   // (i's own cluster at no shift: its upper triangle).
   struct Pair {
     int i, j;
     double sx, sy, sz;
+    bool self;  // a cluster with itself at no shift: its lanes' upper triangle only
   };
   std::vector<Pair> pairs;
   for (int i = 0; i < nc; ++i)
@@ -213,16 +215,17 @@ void BM_ClusterLanes(benchmark::State& state) {
       for (int u = -1; u <= 1; ++u)
         for (int v = -1; v <= 1; ++v)
           for (int w = -1; w <= 1; ++w) {
-            const double sh[3] = {u * L, v * L, w * L};
+            const double sh[3] = {u * L[0], v * L[1], w * L[2]};
             double d2 = 0;
             for (int d = 0; d < 3; ++d) {
-              const double gap = std::max({0.0, lo[3 * i + d] - (hi[3 * j + d] + sh[d]), lo[3 * j + d] + sh[d] - hi[3 * i + d]});
+              const double gap =
+                  std::max({0.0, lo[3 * i + d] - (hi[3 * j + d] + sh[d]), lo[3 * j + d] + sh[d] - hi[3 * i + d]});
               d2 += gap * gap;
             }
             const bool self = i == j && u == 0 && v == 0 && w == 0;
-            // each unordered (i, j, shift) once: j > i, or j == i with a positive shift
-            const bool once = j > i || (j == i && (u > 0 || (u == 0 && (v > 0 || (v == 0 && w > 0)))));
-            if (d2 < rs * rs && (once || self)) pairs.push_back({i, j, sh[0], sh[1], sh[2]});
+            // each unordered (i, j, shift) once, as the half list keeps it
+            const bool once = j > i || (j == i && mpmx::particles::positive_shift(u, v, w));
+            if (d2 < rs * rs && (once || self)) pairs.push_back({i, j, sh[0], sh[1], sh[2], self});
           }
   const double cutsq = rc * rc;
   double within = 0;
@@ -232,12 +235,11 @@ void BM_ClusterLanes(benchmark::State& state) {
       const double* xj = &cx[4 * static_cast<std::size_t>(p.j)];
       const double* yj = &cy[4 * static_cast<std::size_t>(p.j)];
       const double* zj = &cz[4 * static_cast<std::size_t>(p.j)];
-      const bool self = p.i == p.j && p.sx == 0 && p.sy == 0 && p.sz == 0;
       for (int li = 0; li < 4; ++li) {
         const double xi = cx[4 * p.i + li] - p.sx, yi = cy[4 * p.i + li] - p.sy, zi = cz[4 * p.i + li] - p.sz;
         for (int lj = 0; lj < 4; ++lj) {
           const double dx = xi - xj[lj], dy = yi - yj[lj], dz = zi - zj[lj];
-          n += (dx * dx + dy * dy + dz * dz < cutsq) & (!self | (lj > li));
+          n += (dx * dx + dy * dy + dz * dz < cutsq) & (!p.self | (lj > li));
         }
       }
     }
@@ -254,7 +256,11 @@ void BM_ClusterLanes(benchmark::State& state) {
 
 BENCHMARK(BM_GatherFloor)->Arg(5)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ScatterFloor)->Arg(5)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_ClusterLanes)->ArgNames({"cells", "skin_tenths"})->Args({5, 0})->Args({5, 10})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ClusterLanes)
+    ->ArgNames({"cells", "skin_tenths"})
+    ->Args({5, 0})
+    ->Args({5, 10})
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_NeighborBuild)->Arg(5)->Arg(20)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_NeighborBuild)
     ->ArgNames({"cells", "path"})

@@ -224,8 +224,6 @@ void AllPairsSearch::prepare(const double* x, const double* y, const double* z, 
                              const Box& box, double rs) {
   x_ = x, y_ = y, z_ = z, n1_ = n1, n2_ = n2, n3_ = n3;
   nlocal_ = nlocal;
-  box_ = box;
-  rs_ = rs;
   rs2_ = rs * rs;
   const double r = filter_radius(box, rs);
   const double l[3] = {box.lx, box.ly, box.lz};

@@ -70,8 +70,7 @@ class AllPairsSearch {
   const double *x_ = nullptr, *y_ = nullptr, *z_ = nullptr;
   const std::int8_t *n1_ = nullptr, *n2_ = nullptr, *n3_ = nullptr;
   int nlocal_ = 0;
-  Box box_;
-  double rs_ = 0, rs2_ = 0;
+  double rs2_ = 0;
   ImageWindow window_{};
   std::vector<float> xf_, yf_, zf_;  // the locals in single precision, padded
   int span_[3] = {0, 0, 0};          // the table's shifts per axis: -span .. span
