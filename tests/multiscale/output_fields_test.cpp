@@ -133,6 +133,9 @@ TEST(OutputFields, OneDMdBarWritesTheBoxesTemperatureAndLateralStressesAndDumpsC
       double v[8];
       for (double& x : v) atom >> x;
       EXPECT_TRUE(atom) << lines[9];
+      // Rows by id (the box's storage order is spatial): a reader that numbers atoms by
+      // row, as LAMMPS's `rerun ... add yes` does, pairs each row with its own atom.
+      for (int k = 0; k < 32; ++k) EXPECT_EQ(lines[9 + k].substr(0, lines[9 + k].find(' ')), std::to_string(k + 1));
     }
   // At the end, point 4's dumped box is its group's: its x extent the box's length.
   std::ifstream f(fmt::format("{}/md_dump/point_{:06d}_{:09d}.dump", o.out_dir, 4, 4));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <numeric>
 
 #include <fmt/format.h>
 
@@ -25,8 +26,15 @@ void write_lammps_dump(std::ostream& out, std::int64_t step, const Atoms& a, con
   out << "ITEM: ATOMS id type x y z vx vy vz";
   for (const auto& c : more) out << ' ' << c.name;
   out << '\n';
+  // Rows by id, as LAMMPS's `dump_modify sort id` writes them: the engine keeps its atoms
+  // in spatial order, and a reader that numbers atoms by row (LAMMPS's `rerun ... add
+  // yes`, a script comparing files row by row) would otherwise pair one atom's columns
+  // with another's.
+  std::vector<std::size_t> order(a.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) { return a.id[p] < a.id[q]; });
   std::string line;
-  for (std::size_t i = 0; i < a.size(); ++i) {
+  for (const std::size_t i : order) {
     line = fmt::format("{} {} {:.10g} {:.10g} {:.10g} {:.8g} {:.8g} {:.8g}", a.id[i], a.type[i] + 1, a.x[i], a.y[i],
                        a.z[i], a.vx[i], a.vy[i], a.vz[i]);
     for (const auto& c : more) fmt::format_to(std::back_inserter(line), " {:.10g}", c.values[i]);

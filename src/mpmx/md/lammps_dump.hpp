@@ -1,6 +1,6 @@
 #pragma once
 // LAMMPS text dump of one MD frame (OVITO and LAMMPS read it): id type x y z vx vy vz and
-// any per-atom columns after them,
+// any per-atom columns after them, one row an atom in the order of its id,
 // with the box as LAMMPS writes a triclinic cell (a = (lx,0,0), b = (xy,ly,0),
 // c = (xz,yz,lz)); positions are those of the rectangular fundamental box, equivalent
 // modulo the image lattice.
