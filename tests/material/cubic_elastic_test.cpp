@@ -302,6 +302,46 @@ TEST(CubicElastic, ConstantsFromThePotential) {
   app::read_material(mb, app::material_context(2, "", "nm_ps_GPa"));
   ASSERT_FALSE(bad.errors().empty());
   EXPECT_NE(bad.errors().front().find("material.c11"), std::string::npos) << bad.errors().front();
+  // What the constants are and where they come from, for check and run.json.
+  EXPECT_NE(cubic->constants_source().find("0 K fcc crystal"), std::string::npos) << cubic->constants_source();
+  EXPECT_EQ(cubic->constants().size(), 4u);
+  EXPECT_NE(cubic->check_notes().front().find("C11 = 169.8"), std::string::npos) << cubic->check_notes().front();
+}
+
+// A bcc metal (issue 53, item 2): Ta of CuTa.eam.alloy, whose element line names Ta fcc
+// at 4.0448 A. Taken as the file says, the fcc crystal is not Born-stable (C11 72, C12
+// 149 GPa): refused, naming the constants and the other cubic lattice. With lattice =
+// "bcc": LAMMPS's 264.4, 159.5, 80.9 GPa, and a warning that the file names another.
+TEST(CubicElastic, BccTantalumFromThePotential) {
+  const std::string head = "[material]\nmodel = \"cubic_elastic\"\nconstants_from = \"potential\"\n";
+  const std::string pot = "[material.potential]\nstyle = \"eam\"\nfile = \"CuTa.eam.alloy\"\nelements = [\"Ta\"]\n";
+  auto fcc = io::Deck::from_string(head + pot);
+  auto mf = fcc.root().table("material");
+  app::read_material(mf, app::material_context(2, "", "nm_ps_GPa"));
+  ASSERT_EQ(fcc.errors().size(), 1u);
+  const std::string& why = fcc.errors().front();
+  EXPECT_NE(why.find("not Born-stable"), std::string::npos) << why;
+  EXPECT_NE(why.find("C11 = 72.1"), std::string::npos) << why;
+  EXPECT_NE(why.find("lattice` = \"bcc\""), std::string::npos) << why;
+
+  auto bcc = io::Deck::from_string(head + "lattice = \"bcc\"\n" + pot);
+  auto mb = bcc.root().table("material");
+  const auto model = app::read_material(mb, app::material_context(2, "", "nm_ps_GPa"));
+  ASSERT_TRUE(bcc.errors().empty()) << bcc.errors().front();
+  const auto* cubic = dynamic_cast<const CubicElasticModel*>(model.get());
+  ASSERT_TRUE(cubic);
+  EXPECT_NEAR(cubic->c.c11, 264.4, 0.05);
+  EXPECT_NEAR(cubic->c.c12, 159.5, 0.05);
+  EXPECT_NEAR(cubic->c.c44, 80.9, 0.05);
+  EXPECT_NEAR(cubic->density(), 16.68, 0.01);
+  ASSERT_EQ(cubic->warnings.size(), 1u);
+  EXPECT_NE(cubic->warnings.front().find("declares Ta fcc at a = 4.0448"), std::string::npos) << cubic->warnings.front();
+
+  auto hex = io::Deck::from_string(head + "lattice = \"hcp\"\n" + pot);
+  auto mh = hex.root().table("material");
+  app::read_material(mh, app::material_context(2, "", "nm_ps_GPa"));
+  ASSERT_FALSE(hex.errors().empty());
+  EXPECT_NE(hex.errors().front().find("material.lattice"), std::string::npos) << hex.errors().front();
 }
 
 }  // namespace

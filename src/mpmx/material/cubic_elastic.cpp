@@ -131,6 +131,18 @@ template class CubicElastic<3>;
 double CubicElasticModel::wave_speed(int dim, double density, double) const {
   return std::sqrt(std::max(c.wave_modulus(dim), 0.0) / density);
 }
+std::vector<std::string> CubicElasticModel::check_notes() const {
+  std::vector<std::string> r{fmt::format("cubic_elastic: C11 = {:.6g}, C12 = {:.6g}, C44 = {:.6g}, density {:.6g} "
+                                         "({}; the cube axes along x, y, z), from {}",
+                                         c.c11, c.c12, c.c44, rho, units.empty() ? "the deck's units" : units, source)};
+  for (const std::string& w : warnings) r.push_back("warning: " + w);
+  return r;
+}
+
+std::vector<std::pair<std::string, double>> CubicElasticModel::constants() const {
+  return {{"c11", c.c11}, {"c12", c.c12}, {"c44", c.c44}, {"density", rho}};
+}
+
 std::unique_ptr<Material<1>> CubicElasticModel::make1() const { return std::make_unique<CubicElastic<1>>(c); }
 std::unique_ptr<Material<2>> CubicElasticModel::make2() const { return std::make_unique<CubicElastic<2>>(c); }
 std::unique_ptr<Material<3>> CubicElasticModel::make3() const { return std::make_unique<CubicElastic<3>>(c); }
@@ -153,6 +165,7 @@ CubicConstants read_cubic_constants(Table& m, const Context&) {
 
 std::shared_ptr<const Model> CubicElasticEntry::read(Table& m, const Context& ctx) {
   auto r = std::make_shared<CubicElasticModel>();
+  r->units = ctx.units;
   if (m.choice("constants_from", {"deck", "potential"}, "deck") == "deck") {
     r->rho = m.number("density");
     m.positive("density", r->rho);
@@ -179,6 +192,17 @@ std::shared_ptr<const Model> CubicElasticEntry::read(Table& m, const Context& ct
     r->c.c12 = crystal->c12;
     r->c.c44 = crystal->c44;
     r->rho = crystal->density;
+    r->source = crystal->source;
+    r->warnings = crystal->warnings;
+    // A crystal the potential does not hold together (a lattice the element does not
+    // take) gives constants a cubic law cannot run with: refused, with them.
+    const auto& k = r->c;
+    m.check(k.c11 - k.c12 > 0 && k.c11 + 2 * k.c12 > 0 && k.c44 > 0, "potential",
+            fmt::format("gives C11 = {:.4g}, C12 = {:.4g}, C44 = {:.4g} ({}) for {}: not Born-stable (C11 - C12 > 0, "
+                        "C11 + 2 C12 > 0, C44 > 0 fail): not the element's crystal? (set `lattice` = \"{}\" beside "
+                        "constants_from to take the other cubic one)",
+                        k.c11, k.c12, k.c44, ctx.units, crystal->source,
+                        crystal->source.find(" fcc ") != std::string::npos ? "bcc" : "fcc"));
   }
   if (m.has("density")) {  // the crystal's own unless the deck says otherwise
     r->rho = m.number("density");

@@ -104,6 +104,9 @@ extern template class CubicElastic<3>;
 struct CubicElasticModel final : Model {
   double rho = 1.0;
   CubicConstants c;
+  std::string source = "the deck";        // constants_from = "potential": which crystal
+  std::vector<std::string> warnings;      // what the potential's file contradicts
+  std::string units;                      // case.units, for the notes
 
   std::string name() const override { return "cubic_elastic"; }
   double density() const override { return rho; }
@@ -112,6 +115,9 @@ struct CubicElasticModel final : Model {
   // e starts at density / (1 + e).
   bool density_of_unstrained() const override { return true; }
   double wave_speed(int dim, double density, double pressure) const override;
+  std::vector<std::string> check_notes() const override;
+  std::vector<std::pair<std::string, double>> constants() const override;
+  std::string constants_source() const override { return source; }
   std::unique_ptr<Material<1>> make1() const override;
   std::unique_ptr<Material<2>> make2() const override;
   std::unique_ptr<Material<3>> make3() const override;

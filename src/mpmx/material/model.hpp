@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mpmx/core/table.hpp"
@@ -22,6 +23,8 @@ namespace mpmx::material {
 // (multiscale/), so that material/ knows nothing of MD.
 struct Crystal {
   double density = 0.0, c11 = 0.0, c12 = 0.0, c44 = 0.0;
+  std::string source;               // which crystal of which potential, for check and run.json
+  std::vector<std::string> warnings;  // what the potential's file contradicts in the deck
 };
 
 // What a reader may need beyond its own table.
@@ -82,6 +85,10 @@ class Model {
   virtual std::string build_note() const { return ""; }
   // What `mpmx check` says of the law beyond the deck's figures (none by default).
   virtual std::vector<std::string> check_notes() const { return {}; }
+  // The constants the law runs with, by name with their units in the name, and where they
+  // come from: run.json's materials[].constants and constants_from (none by default).
+  virtual std::vector<std::pair<std::string, double>> constants() const { return {}; }
+  virtual std::string constants_source() const { return ""; }
   // What the law is, for the code that needs its constants: linear isotropic elasticity,
   // an ideal gas, and the modulus of uniaxial strain a 1-D record names (0: none).
   virtual std::optional<IsotropicElastic> isotropic_elastic() const { return std::nullopt; }

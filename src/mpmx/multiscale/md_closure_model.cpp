@@ -9,6 +9,7 @@
 
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/budget.hpp"
+#include "mpmx/md/declared_lattice.hpp"
 #include "mpmx/md/equilibrium.hpp"
 #include "mpmx/md/potential/registry.hpp"
 #include "mpmx/particles/lattice_keys.hpp"
@@ -194,10 +195,36 @@ std::optional<material::Crystal> potential_crystal(Table& table, std::string_vie
   const auto u = units::unit_system(units);
   if (!u) return std::nullopt;  // the caller names the missing units
   const md::PotentialSpec spec = md::read_potential(*table.sub(key), deck_dir);
+  // The crystal: `lattice` where the deck names it, else the one the potential's file
+  // declares for its element, else fcc. A cubic law takes a cubic crystal's constants.
+  const bool named = table.has("lattice");
+  const std::string style = table.choice("lattice", {"fcc", "bcc"}, "fcc");
   if (!md::complete(spec)) return std::nullopt;  // read_potential said why
   try {
-    const auto props = md_closure_properties(spec, *u);
-    return material::Crystal{props.density, props.modulus, props.c12, props.c44};
+    const md::Potential pot(spec);
+    particles::LatticeSpec lattice;
+    lattice.style = particles::lattice_style(style);
+    std::string why = named ? "the deck's lattice" : "fcc: the file declares no lattice";
+    const auto declared = md::declared_lattice(pot, 0);
+    if (!named && declared) {
+      if (declared->style == particles::LatticeStyle::hcp) {
+        table.check(false, "lattice",
+                    fmt::format("is not given, and the potential's file declares {} hcp: cubic_elastic needs a cubic "
+                                "crystal (name lattice = \"fcc\" or \"bcc\" to take that one's constants)",
+                                pot.eam()->type_names()[0]));
+        return std::nullopt;
+      }
+      lattice.style = declared->style;
+      why = "the lattice the potential's file declares";
+    }
+    const auto props = md_closure_properties(spec, *u, lattice);
+    material::Crystal c{props.density, props.modulus, props.c12, props.c44, {}, {}};
+    c.source = fmt::format("the 0 K {} crystal of {} at a = {:.6f} A, the potential's minimum ({})",
+                           particles::lattice_name(lattice.style), pot.describe(),
+                           props.equilibrium.lattice_constant, why);
+    if (const std::string w = md::lattice_contradiction(pot, 0, lattice.style, 0.0); !w.empty())
+      c.warnings.push_back(w);
+    return c;
   } catch (const std::exception& e) {
     table.check(false, key, e.what());
   }

@@ -206,10 +206,18 @@ class ContinuumRun {
       const material::Model* m = own ? c_.bodies[b].material.get() : c_.material.spec.get();
       toml::array ids;
       for (int i : of) ids.push_back(i);
-      out.push_back(toml::table{{"id", law},
-                                {"model", m ? m->name() : std::string("?")},
-                                {"from", own ? "[[body]] " + std::to_string(b) + " [body.material]" : "[material]"},
-                                {"bodies", std::move(ids)}});
+      toml::table entry{{"id", law},
+                        {"model", m ? m->name() : std::string("?")},
+                        {"from", own ? "[[body]] " + std::to_string(b) + " [body.material]" : "[material]"},
+                        {"bodies", std::move(ids)}};
+      // The constants the law runs with (those a potential gave, say, which no deck shows).
+      if (m && !m->constants().empty()) {
+        toml::table k;
+        for (const auto& [name, value] : m->constants()) k.insert(name, value);
+        entry.insert("constants", std::move(k));
+        entry.insert("constants_from", m->constants_source());
+      }
+      out.push_back(std::move(entry));
     }
     return out;
   }

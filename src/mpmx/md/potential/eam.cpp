@@ -68,6 +68,7 @@ Eam::Eam(const EamTables& t, const std::vector<std::string>& type_elements) : fi
   ntypes_ = static_cast<int>(map_.size());
   for (int e : map_) {
     masses_.push_back(t.masses[e]);
+    lattices_.push_back(e < static_cast<int>(t.lattices.size()) ? t.lattices[e] : DeclaredLattice{});
     names_.push_back(t.format == "funcfl" && !type_elements.empty() ? type_elements[names_.size()]
                                                                     : t.elements[e]);
   }

@@ -28,6 +28,8 @@ class Eam {
   const std::vector<double>& masses() const { return masses_; }
   const std::vector<std::string>& type_names() const { return names_; }
   const std::string& file() const { return file_; }
+  // What the file's element line says of each type's crystal (eam_file.hpp).
+  const std::vector<DeclaredLattice>& declared_lattices() const { return lattices_; }
 
   ForceSums compute(const Neighbors& nb, ForceWork& w) const;        // double
   ForceSums compute_mixed(const Neighbors& nb, ForceWork& w) const;  // float pairs
@@ -43,6 +45,7 @@ class Eam {
   std::vector<int> map_;  // type -> file element
   std::vector<double> masses_;
   std::vector<std::string> names_;
+  std::vector<DeclaredLattice> lattices_;
   int nrho_ = 0, nr_ = 0, ntypes_ = 0;
   double rdr_ = 0, rdrho_ = 0, rhomax_ = 0, cut_ = 0;
   // Splines flattened: [function][knot 0..n][7].

@@ -2,6 +2,7 @@
 #include "mpmx/md/potential/eam_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -197,10 +198,21 @@ void check_values_left(Cursor& c, int header_line, double needed, const std::str
 }
 
 // "Z mass [a lattice]" line of one element; `z`, when given, gets Z.
-double read_mass(Cursor& c, const std::string& element, int* z = nullptr) {
+// The element line "Z mass [a lattice]": the mass, and what the file says of the
+// element's crystal where it says it (LAMMPS ignores the last two; they are the
+// potential's own ground state by the convention of setfl and funcfl files).
+double read_mass(Cursor& c, const std::string& element, int* z = nullptr, DeclaredLattice* lattice = nullptr) {
   const auto text = c.line(fmt::format("'Z mass' of element {}", element));
   const auto w = c.words(text);
   const int ln = c.line_no();
+  if (lattice && w.size() >= 4) {
+    char* end = nullptr;
+    const std::string a(w[2]);
+    const double v = std::strtod(a.c_str(), &end);
+    std::string name(w[3]);
+    for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (end && *end == '\0' && std::isfinite(v) && v > 0 && name.size() <= 8) *lattice = {name, v};
+  }
   if (w.size() < 2)
     c.fail(ln, fmt::format("expected 'atomic-number mass ...' for element {}", element));
   const double number = c.to_number(w[0], "atomic number", ln);
@@ -230,7 +242,8 @@ EamTables read_funcfl(const std::string& path) {
   t.file = path;
   t.format = "funcfl";
   c.line("a comment line");
-  const double mass = read_mass(c, "of the funcfl file", &t.atomic_number);
+  DeclaredLattice declared;
+  const double mass = read_mass(c, "of the funcfl file", &t.atomic_number, &declared);
   EamTables file;  // the file's own grid
   const int grid_line = read_grid(c, file);
   check_values_left(c, c.line_no(), static_cast<double>(file.nrho) + 2.0 * file.nr,
@@ -245,6 +258,7 @@ EamTables read_funcfl(const std::string& path) {
   // Lagrange interpolation onto it.
   t.elements = {"funcfl"};
   t.masses = {mass};
+  t.lattices = {declared};
   t.dr = file.dr;
   t.drho = file.drho;
   const double rmax = (file.nr - 1) * file.dr;
@@ -315,7 +329,9 @@ EamTables read_setfl_or_fs(const std::string& path, bool fs) {
   t.rhor.assign(fs ? n * n : n, one_based(t.nr));
   for (int i = 0; i < n; ++i) {
     const auto& el = t.elements[i];
-    t.masses.push_back(read_mass(c, el));
+    DeclaredLattice declared;
+    t.masses.push_back(read_mass(c, el, nullptr, &declared));
+    t.lattices.push_back(declared);
     c.grab(t.nrho, &t.frho[i][1], fmt::format("F(rho) of {}", el));
     if (fs) {
       for (int j = 0; j < n; ++j)

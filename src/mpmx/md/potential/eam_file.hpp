@@ -11,11 +11,19 @@
 
 namespace mpmx::md {
 
+// An element's crystal as its file's element line names it ("Z mass a lattice"; LAMMPS
+// reads neither): empty where the line stops at the mass or the words are no lattice.
+struct DeclaredLattice {
+  std::string name;   // lower case as written: "fcc", "bcc", "hcp", or another word
+  double constant = 0;  // Angstrom
+};
+
 struct EamTables {
   std::string file;
   std::string format;                 // "funcfl", "setfl", "fs"
   std::vector<std::string> elements;  // elements of the file
   std::vector<double> masses;         // amu, per file element
+  std::vector<DeclaredLattice> lattices;  // per file element
   int atomic_number = 0;              // funcfl: line 2's (the file names no element)
   int nrho = 0, nr = 0;
   double drho = 0, dr = 0, rhomax = 0, cut = 0;
