@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/md/equilibrium.hpp"
 #include "mpmx/md/potential/eam.hpp"
 
 namespace mpmx::md {
@@ -33,10 +34,28 @@ std::string lattice_contradiction(const Potential& pot, int type, particles::Lat
   const std::string said =
       fmt::format("{} declares {} {} at a = {:g} A", std::filesystem::path(eam.file()).filename().string(),
                   eam.type_names()[static_cast<std::size_t>(type)], particles::lattice_name(d->style), d->constant);
-  if (style != d->style)
+  if (style != d->style) {
+    // The file's word is a convention: the potential's own crystal is the one of least
+    // energy. Where the deck's lies no higher than the file's, the file is what is wrong.
+    const int types = pot.types();
+    if (types == 1) {
+      particles::LatticeSpec mine;
+      mine.style = style;
+      try {
+        const double e_mine = lattice_equilibrium(pot, mine).energy_per_atom;
+        const double e_file = lattice_equilibrium(pot, *d).energy_per_atom;
+        if (e_mine <= e_file + 1e-6) return "";
+        return fmt::format("the deck builds {} on a {} lattice, but {}, and this potential's {} crystal lies {:.4g} "
+                           "eV/atom below its {} at their 0 K minima",
+                           eam.type_names()[static_cast<std::size_t>(type)], particles::lattice_name(style), said,
+                           particles::lattice_name(d->style), e_mine - e_file, particles::lattice_name(style));
+      } catch (const std::exception&) {  // a crystal without a minimum: the file's word stands alone
+      }
+    }
     return fmt::format("the deck builds {} on a {} lattice, but {} (LAMMPS ignores that line, and a file may name "
                        "another crystal than the element's: make sure the deck's is the one meant)",
                        eam.type_names()[static_cast<std::size_t>(type)], particles::lattice_name(style), said);
+  }
   if (constant > 0 && std::abs(constant / d->constant - 1.0) > kConstantTolerance)
     return fmt::format("the deck's lattice constant {:g} A is {:+.1f}% from the file's: {}", constant,
                        100.0 * (constant / d->constant - 1.0), said);

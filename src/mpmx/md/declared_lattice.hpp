@@ -18,9 +18,10 @@ namespace mpmx::md {
 // the file names none of them (a Lennard-Jones or Sutton-Chen potential names none).
 std::optional<particles::LatticeSpec> declared_lattice(const Potential& pot, int type = 0);
 
-// What contradicts the file (another lattice, or a constant more than 5% from the file's
-// for the same lattice), as one sentence naming the element, file and both crystals; ""
-// when nothing does. `constant` 0: the deck gives none (the potential's own is used).
+// What contradicts the file (another lattice whose 0 K energy lies above the file's
+// lattice's, or a constant more than 5% from the file's for the same lattice), as one
+// sentence naming the element, file and both crystals; "" when nothing does. `constant`
+// 0: the deck gives none (the potential's own is used).
 std::string lattice_contradiction(const Potential& pot, int type, particles::LatticeStyle style, double constant);
 
 }  // namespace mpmx::md

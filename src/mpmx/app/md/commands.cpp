@@ -17,6 +17,7 @@
 #include "mpmx/app/commands.hpp"
 #include "mpmx/app/md/budget.hpp"
 #include "mpmx/app/md/config.hpp"
+#include "mpmx/app/md/deck_warnings.hpp"
 #include "mpmx/app/md/jet_run.hpp"
 #include "mpmx/app/md/lammps_bar.hpp"
 #include "mpmx/app/md/lammps_jet.hpp"
@@ -174,6 +175,14 @@ void check_md(const std::string& path, bool force, bool lammps = false) {
   if (budget.bins > 0)
     fmt::print("  {:.4g} bins: about {} of bin tables and images over the run\n", budget.bins,
                format_bytes(budget.output_bytes));
+  if (config.elastic)
+    fmt::print("  elastic: the 0 K tensor of this crystal at {}, strained by +-{:g} in each Voigt component{}, "
+               "after the run (run.json's elastic)\n",
+               config.elastic_at_minimum ? "the potential's minimum" : "[lattice].constant", config.elastic_strain,
+               config.lattice.style == particles::LatticeStyle::hcp && config.elastic_relax
+                   ? ", the atoms relaxed in each strained box"
+                   : "");
+  for (const std::string& w : md::md_deck_warnings(config, potential)) fmt::print("  warning: {}\n", w);
 }
 
 }  // namespace
@@ -233,6 +242,7 @@ void add_md_commands(CLI::App& app) {
     config.options.threaded = true;
     const md::Potential potential(config.potential);
     const md::MdBudget budget = md::estimate_md(config, potential.cutoff());
+    for (const std::string& w : md::md_deck_warnings(config, potential)) fmt::print(stderr, "md: warning: {}\n", w);
     config.options.threads = threads_for(threads_of(args->threads), budget.atoms, kAtomsPerMdThread);
     // Memory always; work unless --force, or when only LAMMPS inputs are written.
     md::check_md_budget(budget, physical_memory_bytes(), args->force || args->lammps_write_only);
@@ -269,6 +279,7 @@ void add_md_commands(CLI::App& app) {
         r.steps_now == r.steps ? std::string() : fmt::format(" ({} of them now, after --resume)", r.steps_now);
     fmt::print("{} atoms, {} steps{}, {:.3g} s, {:.4g} atom-steps/s, PE {:.6f} eV/atom -> {}/run.json\n", r.atoms,
                r.steps, now, r.wall_seconds, r.atom_steps_per_second, r.potential_energy_per_atom, out);
+    for (const std::string& line : r.notes) fmt::print("  {}\n", line);
     // The scan's curve (M1, fig. 7.2), as a continuum run draws its figures.
     if (config.scan_points > 0 && !args->no_plot && io::matplotlib_present())
       io::run_plot_script("md_scan.py", fmt::format("'{}' >/dev/null", out));

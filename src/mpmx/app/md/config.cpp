@@ -188,6 +188,18 @@ void read_scan(io::Section& scan, MdConfig& c) {
   c.scan_points = scan.integer_int("points", 41, 3, 100000);
 }
 
+// [elastic]: the 0 K tensor of the deck's crystal.
+void read_elastic(io::Section& e, MdConfig& c) {
+  c.elastic = true;
+  c.elastic_at_minimum = e.choice("at", {"minimum", "deck"}, "minimum") == "minimum";
+  c.elastic_strain = e.number("strain", c.elastic_strain);
+  e.check(c.elastic_strain >= 1e-7 && c.elastic_strain <= 0.01, "strain",
+          "must lie in [1e-7, 0.01]: larger strains measure the nonlinear response, smaller ones round-off");
+  c.elastic_relax = e.boolean("relax", c.elastic_relax);
+  e.check(c.lattice.style != particles::LatticeStyle::b2, "at",
+          "a b2 box's tensor is not computed (two elements); fcc, bcc and hcp are");
+}
+
 // [bar]: the direct-MD bar between walls.
 void read_bar(io::Section& bar, MdConfig& c) {
   c.bar = true;
@@ -365,6 +377,12 @@ MdConfig read_md_config(io::Deck& deck) {
   read_run(run, root.has("jet"), c);
   auto scan = root.optional_table("scan");
   if (scan.present()) read_scan(scan, c);
+  auto elastic = root.optional_table("elastic");
+  if (elastic.present()) {
+    read_elastic(elastic, c);
+    if (root.has("bar") || root.has("jet") || root.has("rod"))
+      elastic.error("is the periodic box's: a deck with [bar], [jet] or [rod] has none (give [elastic] its own deck)");
+  }
   auto bar = root.optional_table("bar");
   if (bar.present()) read_bar(bar, c);
   auto jet = root.optional_table("jet");

@@ -45,6 +45,12 @@ struct MdConfig {
   // Optional lattice-constant scan (M1): energy per atom at `scan_points` values.
   double scan_from = 0, scan_to = 0;
   int scan_points = 0;
+  // Optional 0 K elastic tensor ([elastic], md/elastic_constants.hpp) of the deck's
+  // crystal at the potential's minimum ("minimum") or at [lattice].constant ("deck").
+  bool elastic = false;
+  bool elastic_at_minimum = true;
+  double elastic_strain = 1e-5;
+  bool elastic_relax = true;
   // Optional direct-MD bar ([bar]): walls along x, binned stress every `bar_every` steps.
   bool bar = false;
   BarConfig bar_config;

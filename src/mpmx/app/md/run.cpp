@@ -1,4 +1,5 @@
 #include "mpmx/app/md/run.hpp"
+#include "mpmx/app/md/elastic_record.hpp"
 
 #include <chrono>
 #include <climits>
@@ -303,6 +304,11 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   rec.insert("neighbor_builds", sys.neighbor_builds());
   rec.insert("precision", c.options.mixed_precision ? "mixed" : "double");
   if (c.scan_points > 0 && stopped.empty() && !r.interrupted) rec.insert("scan", lattice_scan(c, pot));
+  if (c.elastic && stopped.empty() && !r.interrupted) {
+    ElasticRecord e = elastic_record(c, pot);
+    rec.insert("elastic", std::move(e.table));
+    r.notes.push_back(std::move(e.summary));
+  }
   write_record(c, pot, deck_echo, r, std::move(rec), out_dir, stopped, control);
   return r;
 }

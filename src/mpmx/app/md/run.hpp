@@ -4,6 +4,7 @@
 // bar or jet. Ctrl-C or SIGTERM stops it at the next record with a checkpoint
 // (run_control.hpp), from which --resume continues bit-for-bit.
 #include <string>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -24,6 +25,7 @@ struct MdRunSummary {
   Mat3 stress_gpa{};
   bool interrupted = false;  // stopped on Ctrl-C, SIGTERM or stop_after: a checkpoint written
   std::int64_t step = 0, last_step = 0;  // the system's step where it ended, and the deck's last
+  std::vector<std::string> notes;        // lines for the terminal after the summary ([elastic]'s)
 };
 
 // run.json's "tile_A" of a [jet] or [rod]: the lattice's periodic tile (Angstrom) at
