@@ -6,7 +6,7 @@
 // equilibration, and a concurrent DPD/MPM rod with its grid, continuum points, free
 // flyer, tracks and profiles. A damaged checkpoint is refused (exit 2). `fit-dpd` stops
 // at once: exit 130, run.json "interrupted", the stages it finished in OUT/checkpoint.bin,
-// its other work hidden in OUT/.staging and nothing else in OUT changed; `--resume`
+// its other work (OUT/.staging) removed and nothing else in OUT changed; `--resume`
 // continues from the last finished stage to the files of a fit never stopped.
 #include <gtest/gtest.h>
 
@@ -242,7 +242,7 @@ TEST(DpdInterrupt, FitDpdStopsAtOnceLeavingOutAsItWas) {
   EXPECT_NE(slurp(log).find("fit-dpd stopped"), std::string::npos) << slurp(log);
   EXPECT_NE(slurp(out / "run.json").find("\"status\" : \"interrupted\""), std::string::npos);
   EXPECT_EQ(slurp(out / "earlier.csv"), "an earlier run's table\n");
-  EXPECT_TRUE(fs::is_directory(out / ".staging"));
+  EXPECT_FALSE(fs::exists(out / ".staging"));  // half a fit is no result to leave in the user's folder
   EXPECT_FALSE(fs::exists(out / "isotherm.csv"));
   EXPECT_FALSE(fs::exists(out / ".mpmx-lock"));  // gone with the run that held it
 }

@@ -77,7 +77,10 @@ void FitStop::stop() {
   std::fputs(msg.c_str(), stderr);
   std::fflush(stdout);
   std::fflush(stderr);
-  // _Exit runs no destructor: the folder's lock file goes here, still held (as ~FolderLock).
+  // _Exit runs no destructor: the staging folder (half a fit, never a result: the resume
+  // starts from the checkpoint) and the folder's lock file go here, as ~StagedDir and
+  // ~FolderLock would take them.
+  std::filesystem::remove_all(io::StagedDir::staging_of(out_), ec);
   std::filesystem::remove(std::filesystem::path(out_) / io::FolderLock::kName, ec);
   std::_Exit(exit_code::interrupted);
 }

@@ -5,8 +5,7 @@
 // far (kept here by the fit after each), OUT/run.json with "status": "interrupted", says
 // how to resume, and ends the process with exit status 130. `fit-dpd --resume` continues
 // from the last finished stage (the stage it stopped in runs again whole). The fit's other
-// work stays hidden in OUT/.staging (cleared by the next run); nothing else in OUT
-// changes. The watcher is stopped before the finished fit is moved into OUT.
+// work (OUT/.staging) is removed; nothing else in OUT changes. The watcher is stopped before the finished fit is moved into OUT.
 #include <atomic>
 #include <mutex>
 #include <string>
