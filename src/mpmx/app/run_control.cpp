@@ -12,9 +12,6 @@ namespace mpmx::app {
 
 namespace {
 
-// 2: the input files' digests after the deck's text.
-constexpr std::uint32_t kCheckpointVersion = 2;
-
 std::string text_of(const toml::table& deck) {
   std::ostringstream ss;
   ss << deck;
@@ -24,14 +21,14 @@ std::string text_of(const toml::table& deck) {
 }  // namespace
 
 RunControl::RunControl(std::string dir, std::string_view kind, const toml::table& deck_echo,
-                       const RunControlOptions& o)
-    : dir_(std::move(dir)), kind_(kind), deck_text_(text_of(deck_echo)), o_(o), guard_(true) {
+                       const RunControlOptions& o, std::uint32_t version)
+    : dir_(std::move(dir)), kind_(kind), deck_text_(text_of(deck_echo)), version_(version), o_(o), guard_(true) {
   if (!o_.resume) tables_.emplace(dir_);
 }
 
 void RunControl::resume(std::uint64_t count, const std::function<void(CheckpointIn&)>& read) {
   const std::string path = checkpoint_path(dir_);
-  std::istringstream f(io::read_checked(path, {kind_, kCheckpointVersion, io::text_hash(deck_text_), count}),
+  std::istringstream f(io::read_checked(path, {kind_, version_, io::text_hash(deck_text_), count}),
                        std::ios::binary);
   CheckpointIn in(f, path, io::kCheckedHeaderBytes);
   if (in.text() != deck_text_)
@@ -50,7 +47,7 @@ bool RunControl::stop_due(std::int64_t step) const {
 }
 
 void RunControl::checkpoint(std::uint64_t count, const std::function<void(CheckpointOut&)>& write) {
-  io::CheckedWriter file(checkpoint_path(dir_), {kind_, kCheckpointVersion, io::text_hash(deck_text_), count});
+  io::CheckedWriter file(checkpoint_path(dir_), {kind_, version_, io::text_hash(deck_text_), count});
   CheckpointOut w(file.stream());
   w.text(deck_text_);
   w.inputs();

@@ -31,9 +31,11 @@ struct RunControlOptions {
 
 class RunControl {
  public:
-  // `kind`: the checkpoint's kind (at most 8 characters). Holds the Ctrl-C and SIGTERM
-  // handlers from here on.
-  RunControl(std::string dir, std::string_view kind, const toml::table& deck_echo, const RunControlOptions& o);
+  // `kind`: the checkpoint's kind (at most 8 characters); `version`: its payload's format
+  // (2: with the input files' digests; a kind raises its own when its state grows). Holds the Ctrl-C and SIGTERM handlers
+  // from here on.
+  RunControl(std::string dir, std::string_view kind, const toml::table& deck_echo, const RunControlOptions& o,
+             std::uint32_t version = 2);
 
   const RunControlOptions& options() const { return o_; }
   bool resuming() const { return o_.resume; }
@@ -56,6 +58,7 @@ class RunControl {
 
  private:
   std::string dir_, kind_, deck_text_;
+  std::uint32_t version_;
   RunControlOptions o_;
   InterruptGuard guard_;
   std::optional<RunTables> tables_;

@@ -469,6 +469,10 @@ void Section::temperature(std::string_view key, double value) {
   check(value >= 0.0 && value <= 1e6, key, "must be a temperature from 0 to 1e6 K");
 }
 
+bool Section::failed(std::string_view key) const { return deck_->has_key_error(key_path(key)); }
+
+void Section::ignore(std::string_view key) { deck_->mark_known(key_path(key)); }
+
 void Section::error(std::string_view reason) {
   deck_->add_error(table_, fmt::format("[{}]: {}", path_.empty() ? "deck" : path_, reason));
 }
@@ -542,6 +546,7 @@ void Deck::add_error(const toml::node* where, std::string message) {
 void Deck::collect_unknown(const toml::table& t, const std::string& prefix) {
   for (const auto& [k, v] : t) {
     std::string path = join_path(prefix, k.str());
+    if (!known_.count(path) && has_key_error(path)) continue;  // its error said what is wrong with it
     if (!known_.count(path)) {
       // Suggest the nearest key that was asked for in the same table.
       std::string best;

@@ -85,6 +85,11 @@ class Section final : public Table {
   void temperature(std::string_view key, double value) override;
   // An error not tied to one key of this table.
   void error(std::string_view reason) override;
+  // Whether `key` (or a table above it) has an error recorded.
+  bool failed(std::string_view key) const;
+  // Marks `key` read without reading it, for a reader that refused the key that gives it
+  // a meaning: one error per mistake, not one more for each key that follows from it.
+  void ignore(std::string_view key);
 
   std::string key_path(std::string_view key) const override;
   std::string value_text(std::string_view key) const override;
@@ -120,8 +125,8 @@ class Deck {
   const toml::table& table() const { return *table_; }
   const std::string& name() const { return name_; }
 
-  // Adds "unknown key" errors for keys nobody read, then throws InputError listing
-  // every error (one per line) if there is any.
+  // Adds "unknown key" errors for keys nobody read (and no error named already), then
+  // throws InputError listing every error (one per line) if there is any.
   void finish();
 
   void add_error(const toml::node* where, std::string message);

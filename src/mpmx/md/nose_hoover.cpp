@@ -1,5 +1,6 @@
 #include "mpmx/md/nose_hoover.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -9,31 +10,54 @@
 
 namespace mpmx::md {
 
-NoseHoover::NoseHoover(const NoseHooverOptions& o, const System& s) : o_(o) {
+NoseHoover::NoseHoover(const NoseHooverOptions& o, std::size_t atoms) : o_(o) {
   if (o.chain < 1) throw InputError(fmt::format("Nose-Hoover chain of {}: needs at least 1", o.chain));
-  natoms_ = static_cast<double>(s.atoms().size());
+  natoms_ = static_cast<double>(atoms);
   tdof_ = 3 * natoms_ - 3;  // the momentum's three fixed, as the temperature counts them
-  // Without a thermostat (nph) the barostat's kT is the temperature the box starts at.
-  const double t = o.thermostat ? o.temperature : s.temperature();
-  if (!(t > 0)) throw InputError(fmt::format("temperature {} K: a Nose-Hoover chain needs a positive one", t));
-  kt_ = units::boltzmann_eV_per_K * t;
-  t_target_ = t;
   if (!o.isotropic) {
     pdim_ = o.axes[0] + o.axes[1] + o.axes[2];
     if (pdim_ == 0) throw InputError("a per-axis barostat needs at least one axis that dilates");
   }
   if (o.hugoniot && (!o.barostat || !o.thermostat || o.isotropic || pdim_ != 1))
     throw InputError("a Hugoniostat needs the thermostat and a barostat along one axis");
-  e0_ = s.potential_energy() + s.thermal_kinetic_energy(), v0_ = s.box().volume(), p0_ = axis_pressure(s);
   const int m = o.chain;
   eta_.assign(m, 0.0), eta_dot_.assign(m + 1, 0.0), eta_dotdot_.assign(m, 0.0);
   etap_.assign(m, 0.0), etap_dot_.assign(m + 1, 0.0), etap_dotdot_.assign(m, 0.0), etap_mass_.assign(m, 0.0);
-  // Masses from the periods: Q_0 = N_f kT / omega^2, the others kT / omega^2.
-  const double pf = 1 / o.p_damp;
-  for (int k = 1; k < m; ++k) eta_dotdot_[k] = -kt_ / eta_mass(k, kt_);  // eta_dot starts at 0
+}
+
+NoseHoover::NoseHoover(const NoseHooverOptions& o, const System& s) : NoseHoover(o, s.atoms().size()) {
+  // Without a thermostat (nph) the barostat's kT is the temperature the box starts at.
+  const double t = o.thermostat ? o.temperature : s.temperature();
+  if (!(t > 0)) throw InputError(fmt::format("temperature {} K: a Nose-Hoover chain needs a positive one", t));
+  set_kt(units::boltzmann_eV_per_K * t);
+  t_target_ = t;
+  e0_ = s.potential_energy() + s.thermal_kinetic_energy(), v0_ = s.box().volume(), p0_ = axis_pressure(s);
+  for (int k = 1; k < o.chain; ++k) eta_dotdot_[k] = -kt_ / eta_mass(k, kt_);  // eta_dot starts at 0
+  for (int k = 1; k < o.chain; ++k) etap_dotdot_[k] = -kt_ / etap_mass_[k];
+}
+
+NoseHoover::NoseHoover(const NoseHooverOptions& o, std::size_t atoms, const std::vector<double>& v)
+    : NoseHoover(o, atoms) {
+  if (v.size() != state_size(o))
+    throw InputError(fmt::format("Nose-Hoover state of {} numbers: expected {}", v.size(), state_size(o)));
+  auto it = v.begin();
+  for (auto* a : {&eta_, &eta_dot_, &eta_dotdot_, &etap_, &etap_dot_, &etap_dotdot_}) {
+    std::copy(it, it + static_cast<std::ptrdiff_t>(a->size()), a->begin());
+    it += static_cast<std::ptrdiff_t>(a->size());
+  }
+  std::copy(it, it + 3, omega_dot_.begin());
+  mtk_term2_ = it[3], t_target_ = it[4];
+  if (!(it[5] > 0)) throw InputError(fmt::format("Nose-Hoover kT of {} eV: needs a positive one", it[5]));
+  set_kt(it[5]);
+  e0_ = it[6], v0_ = it[7], p0_ = it[8];
+}
+
+// Masses from the periods: the barostat's W = (N + 1) kT / omega^2, its chain's kT / omega^2.
+void NoseHoover::set_kt(double kt) {
+  kt_ = kt;
+  const double pf = 1 / o_.p_damp;
   for (int i = 0; i < 3; ++i) omega_mass_[i] = (natoms_ + 1) * kt_ / (pf * pf);
-  for (int k = 0; k < m; ++k) etap_mass_[k] = kt_ / (pf * pf);
-  for (int k = 1; k < m; ++k) etap_dotdot_[k] = -kt_ / etap_mass_[k];
+  for (auto& q : etap_mass_) q = kt_ / (pf * pf);
 }
 
 double NoseHoover::axis_pressure(const System& s) const {
@@ -172,22 +196,8 @@ std::vector<double> NoseHoover::state() const {
   std::vector<double> v;
   for (const auto* a : {&eta_, &eta_dot_, &eta_dotdot_, &etap_, &etap_dot_, &etap_dotdot_}) v.insert(v.end(), a->begin(), a->end());
   v.insert(v.end(), omega_dot_.begin(), omega_dot_.end());
-  v.push_back(mtk_term2_);
-  v.push_back(t_target_);
+  for (double x : {mtk_term2_, t_target_, kt_, e0_, v0_, p0_}) v.push_back(x);
   return v;
-}
-
-void NoseHoover::set_state(const std::vector<double>& v) {
-  const std::size_t m = eta_.size();
-  if (v.size() != 6 * m + 7) throw RunError(fmt::format("Nose-Hoover state of {} numbers: expected {}", v.size(), 6 * m + 7));
-  auto it = v.begin();
-  for (auto* a : {&eta_, &eta_dot_, &eta_dotdot_, &etap_, &etap_dot_, &etap_dotdot_}) {
-    std::copy(it, it + static_cast<std::ptrdiff_t>(a->size()), a->begin());
-    it += static_cast<std::ptrdiff_t>(a->size());
-  }
-  std::copy(it, it + 3, omega_dot_.begin());
-  mtk_term2_ = *(it + 3);
-  t_target_ = *(it + 4);
 }
 
 }  // namespace mpmx::md

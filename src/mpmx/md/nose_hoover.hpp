@@ -7,6 +7,7 @@
 // barostat dilates an orthogonal box isotropically (one strain rate for all three axes,
 // driven by the mean pressure) or per axis (each by its own normal stress).
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "mpmx/md/system.hpp"
@@ -32,7 +33,12 @@ struct NoseHooverOptions {
 
 class NoseHoover : public System::Coupling {
  public:
+  // At the run's start: the barostat's kT (nph: of the temperature `s` has) and the
+  // Hugoniot's reference state are taken from `s`.
   NoseHoover(const NoseHooverOptions& o, const System& s);
+  // Resumed about a system of `atoms` atoms from what state() gave: nothing is taken from
+  // the system again, so the run goes on as if never stopped.
+  NoseHoover(const NoseHooverOptions& o, std::size_t atoms, const std::vector<double>& state);
   void initial(System& s, double dt) override;
   void remap(System& s, double dt) override;
   void final(System& s, double dt) override;
@@ -41,9 +47,10 @@ class NoseHoover : public System::Coupling {
   double e0() const { return e0_; }
   double v0() const { return v0_; }
   double p0() const { return p0_; }
-  // The chains' and the barostat's variables, for a checkpoint (same order back).
+  // Every variable the integration carries from step to step (the chains, the barostat,
+  // kT, the Hugoniot's reference and target), for a checkpoint; state_size(o) numbers.
   std::vector<double> state() const;
-  void set_state(const std::vector<double>& v);
+  static std::size_t state_size(const NoseHooverOptions& o) { return 6 * static_cast<std::size_t>(o.chain) + 11; }
 
  private:
   NoseHooverOptions o_;
@@ -55,6 +62,8 @@ class NoseHoover : public System::Coupling {
   std::array<double, 3> omega_dot_{}, omega_mass_{};              // barostat (1/ps, eV ps^2)
   double mtk_term2_ = 0;
 
+  NoseHoover(const NoseHooverOptions& o, std::size_t atoms);  // what both starts share
+  void set_kt(double kt);  // kT and the barostat's masses, which follow from it
   void thermostat_chain(System& s, double dt);
   double eta_mass(int k, double kt) const;  // the thermostat chain's masses at kT
   void barostat_chain(double dt);

@@ -465,8 +465,43 @@ TEST(MdCli, EnsembleKeysAreChecked) {
                           .string() +
               " --check");
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("need thermal.temperature > 0"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("key 'run.ensemble' = \"npt\": needs thermal.temperature > 0, not 0 K"), std::string::npos)
+      << r.output;
   r = check("npt_axes.toml", "strain_rate_per_s = 1e9", "ensemble = \"npt\"\nbarostat = \"aniso\"\npressure_gpa = [1, 2]");
   EXPECT_EQ(r.status, 2) << r.output;
   EXPECT_NE(r.output.find("[px, py, pz]"), std::string::npos) << r.output;
+}
+
+// `check` and the run agree on every ensemble deck: each refuses it with the same
+// message (key, value, reason; exit 2) and the run leaves no folder. Before, `check`
+// passed nph at 0 K (the run then stopped on a non-finite state) and an npt [bar] (whose
+// run wrote its nve twin's bytes).
+TEST(MdCli, CheckAndTheRunRefuseTheSameEnsembleDecks) {
+  const std::string box = with(kGoodMdDeck, "strain_rate_per_s = 1e9\n", "");
+  const std::string cold = with(box, "temperature = 300.0", "temperature = 0.0");
+  const std::string bar = "[bar]\ncells_x = 10\ncells_yz = 3\n";
+  const std::string rod = "[rod]\ntarget_cells = [4, 4, 4]\nflyer_cells = 2\nflyer_velocity = 5.0\n";
+  const std::vector<std::pair<std::string, std::string>> decks{
+      {"ens_nph_cold", cold + "ensemble = \"nph\"\n"},
+      {"ens_nvt_cold", cold + "ensemble = \"nvt\"\n"},
+      {"ens_nphug_cold", cold + "ensemble = \"nphug\"\npressure_gpa = 10.0\n"},
+      {"ens_bar_npt", box + "ensemble = \"npt\"\n" + bar},
+      {"ens_bar_nvt_keys", box + "ensemble = \"nvt\"\nt_damp_ps = 0.1\n" + bar},
+      {"ens_rod_nvt", box + "ensemble = \"nvt\"\n" + rod},
+      {"ens_misspelt", box + "ensemble = \"nphugg\"\npressure_gpa = 1.0\nshock_axis = \"x\"\n"},
+      {"ens_short_period", box + "ensemble = \"nvt\"\nt_damp_ps = 0.0001\n"},
+  };
+  for (const auto& [name, text] : decks) {
+    const auto deck = write_deck(name + ".toml", text);
+    const auto out = deck.parent_path() / ("out_" + name);
+    fs::remove_all(out);
+    const auto checked = run_cli("md " + deck.string() + " --check");
+    const auto run = run_cli("md " + deck.string() + " --quiet --out " + out.string());
+    EXPECT_EQ(checked.status, 2) << name << ": " << checked.output;
+    EXPECT_EQ(run.status, 2) << name << ": " << run.output;
+    EXPECT_EQ(checked.output, run.output) << name;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 2) << name << ": one error: " << run.output;
+    EXPECT_NE(run.output.find("key 'run."), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(out)) << name;
+  }
 }

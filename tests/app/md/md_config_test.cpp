@@ -5,6 +5,8 @@
 
 #include <cstring>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "mpmx/app/md/config.hpp"
 #include "mpmx/core/error.hpp"
@@ -274,4 +276,122 @@ TEST(MdConfigLattice, JetAndRodCountTilesOfTheOrientedLattice) {
                      "1.64851 A in each tile of 2.47276 A from the impact face at"),
             std::string::npos)
       << msg;
+}
+
+// ------------------------------------------------ ensembles: one error per mistake
+
+namespace {
+
+// The errors a deck gets, one a line (none: empty).
+std::vector<std::string> error_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  const std::string all = error(text);
+  if (all == "(no error)") return lines;
+  std::size_t at = 0;
+  for (std::size_t nl; (nl = all.find('\n', at)) != std::string::npos; at = nl + 1)
+    lines.push_back(all.substr(at, nl - at));
+  lines.push_back(all.substr(at));
+  return lines;
+}
+
+const std::string kWarmBox = lj_deck("3", "100") + "[thermal]\ntemperature = 300.0\n";
+
+// The warm box's [run] with `keys` added (before any table the caller appends).
+std::string warm_run(const std::string& keys) {
+  const std::size_t thermal = kWarmBox.find("[thermal]");
+  return kWarmBox.substr(0, thermal) + keys + kWarmBox.substr(thermal);
+}
+
+}  // namespace
+
+// A thermostat's target or the barostat's kT at 0 K would stop the run (its chains'
+// masses are kT over a frequency): the reader refuses it, so `check` does too.
+TEST(MdConfigEnsemble, EveryEnsembleAtZeroKelvinIsRefused) {
+  const std::string cold = lj_deck("3", "100");  // thermal.temperature 0 by default
+  for (const std::string e : {"nvt", "npt", "nph", "nphug"}) {
+    const auto lines = error_lines(cold + "ensemble = \"" + e + "\"\n" + (e == "nphug" ? "pressure_gpa = 1.0\n" : ""));
+    ASSERT_EQ(lines.size(), 1u) << e;
+    EXPECT_NE(lines[0].find("key 'run.ensemble' = \"" + e + "\": needs thermal.temperature > 0, not 0 K: "),
+              std::string::npos)
+        << lines[0];
+    EXPECT_NE(lines[0].find(e == "nph" ? "the barostat's kT is the box's temperature at the start"
+                                       : "it is the thermostat's target"),
+              std::string::npos)
+        << lines[0];
+  }
+  EXPECT_EQ(error(cold + "ensemble = \"nve\"\n"), "(no error)");
+  EXPECT_EQ(error(warm_run("ensemble = \"nph\"\n")), "(no error)");
+}
+
+// A period of fewer than 10 steps is not integrated: refused, naming the steps.
+TEST(MdConfigEnsemble, PeriodsShorterThanTenStepsAreRefused) {
+  auto lines = error_lines(warm_run("ensemble = \"npt\"\nt_damp_ps = 0.0005\np_damp_ps = 0.02\n"));
+  ASSERT_EQ(lines.size(), 1u) << error(warm_run("ensemble = \"npt\"\nt_damp_ps = 0.0005\np_damp_ps = 0.02\n"));
+  EXPECT_NE(lines[0].find("key 'run.t_damp_ps' = 0.0005: is 0.5 steps of run.dt = 0.001 ps: a Nose-Hoover period "
+                          "spans at least 10 (LAMMPS advises 100)"),
+            std::string::npos)
+      << lines[0];
+  lines = error_lines(warm_run("ensemble = \"nph\"\np_damp_ps = 0.009\n"));
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("key 'run.p_damp_ps' = 0.009: is 9 steps of run.dt = 0.001 ps"), std::string::npos)
+      << lines[0];
+  lines = error_lines(warm_run("ensemble = \"nvt\"\nt_damp_ps = -1.0\n"));
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("key 'run.t_damp_ps' = -1: must be positive"), std::string::npos) << lines[0];
+  EXPECT_EQ(error(warm_run("ensemble = \"npt\"\nt_damp_ps = 0.01\np_damp_ps = 0.01\n")), "(no error)");
+}
+
+// A misspelt or mistyped ensemble is one error: its keys are neither refused one by one
+// for the fallback nve nor called unknown.
+TEST(MdConfigEnsemble, AMisspeltEnsembleIsOneError) {
+  const std::string keys =
+      "t_damp_ps = 0.1\np_damp_ps = 1.0\npressure_gpa = 1.0\nshock_axis = \"x\"\nbarostat = \"iso\"\n";
+  auto lines = error_lines(warm_run("ensemble = \"nphugg\"\n" + keys));
+  ASSERT_EQ(lines.size(), 1u) << error(warm_run("ensemble = \"nphugg\"\n" + keys));
+  EXPECT_NE(lines[0].find("key 'run.ensemble' = \"nphugg\": not one of nve, nvt, npt, nph, nphug"), std::string::npos)
+      << lines[0];
+  lines = error_lines(warm_run("ensemble = 3\n" + keys));
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NE(lines[0].find("key 'run.ensemble' = 3: expected a string"), std::string::npos) << lines[0];
+  // A key the ensemble has no use for: its one error, not also "unknown key".
+  lines = error_lines(warm_run("ensemble = \"nphug\"\npressure_gpa = 1.0\nbarostat = \"iso\"\n"));
+  ASSERT_EQ(lines.size(), 1u) << error(warm_run("ensemble = \"nphug\"\npressure_gpa = 1.0\nbarostat = \"iso\"\n"));
+  EXPECT_NE(lines[0].find("key 'run.barostat' = \"iso\": has no use with ensemble = \"nphug\""), std::string::npos)
+      << lines[0];
+  lines = error_lines(warm_run("shock_axis = \"z\"\nt_damp_ps = 0.1\n"));
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[0].find("key 'run.t_damp_ps' = 0.1: has no use with ensemble = \"nve\""), std::string::npos)
+      << lines[0];
+  EXPECT_NE(lines[1].find("key 'run.shock_axis' = \"z\": has no use with ensemble = \"nve\""), std::string::npos)
+      << lines[1];
+}
+
+// A [bar], [jet] or [rod] run is NVE: an ensemble there (and the keys that would tune
+// it) is one error naming the sample, not a run that writes its nve twin's bytes.
+TEST(MdConfigEnsemble, SamplesRefuseAnEnsemble) {
+  const std::string bar = "[bar]\ncells_x = 10\ncells_yz = 3\n";
+  const std::string rod = "[rod]\ntarget_cells = [4, 4, 4]\nflyer_cells = 2\nflyer_velocity = 5.0\n";
+  const std::string jet = "[jet]\ncells = [40, 20, 3]\npiston_cells = 4\nnotch_depth_nm = 1.0\nbins = [8, 4]\n"
+                          "duration_ps = 0.1\nrecord_every_ps = 0.05\n";
+  const std::vector<std::pair<std::string, std::string>> samples{{"bar", bar}, {"rod", rod}, {"jet", jet}};
+  for (const auto& [name, table] : samples) {
+    for (const std::string e : {"nvt", "npt", "nph", "nphug"}) {
+      std::string text = warm_run("ensemble = \"" + e + "\"\npressure_gpa = 1.0\n") + table;
+      if (name == "jet") text.replace(text.find("steps = 100\n"), 12, "");
+      const auto lines = error_lines(text);
+      ASSERT_EQ(lines.size(), 1u) << error(text);
+      EXPECT_NE(lines[0].find("key 'run.ensemble' = \"" + e + "\": a [" + name + "] run is NVE ("), std::string::npos)
+          << lines[0];
+      EXPECT_NE(lines[0].find("); ensembles apply to periodic boxes"), std::string::npos) << lines[0];
+    }
+    std::string text = warm_run("ensemble = \"nve\"\nt_damp_ps = 0.1\n") + table;
+    if (name == "jet") text.replace(text.find("steps = 100\n"), 12, "");
+    const auto lines = error_lines(text);
+    ASSERT_EQ(lines.size(), 1u) << error(text);
+    EXPECT_NE(lines[0].find("key 'run.t_damp_ps' = 0.1: has no use: a [" + name + "] run is NVE"), std::string::npos)
+        << lines[0];
+    text = warm_run("ensemble = \"nve\"\n") + table;
+    if (name == "jet") text.replace(text.find("steps = 100\n"), 12, "");
+    EXPECT_EQ(error(text), "(no error)") << name;
+  }
 }

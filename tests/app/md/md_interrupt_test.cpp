@@ -3,9 +3,11 @@
 // run.json "interrupted" and exit status 130; `--resume` (on another thread count) then
 // ends with every file an uninterrupted run writes, byte for byte (run.json less its
 // wall-clock figures): the jet with its bins, images and dumps, a thermalised box with
-// its thermo rows and dump, the bar. A damaged checkpoint is refused (exit 2).
+// its thermo rows and dump under every ensemble, the bar. A damaged checkpoint is
+// refused (exit 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -106,6 +108,73 @@ TEST(MdInterrupt, SigtermOnABoxResumesToTheSameFiles) {
 
 TEST(MdInterrupt, CtrlCOnABoxResumesToTheSameFiles) {
   interrupt_and_resume(md_deck("box_int.toml", kBox), "box_int", "thermo.csv", 8, "INT");
+}
+
+// The barostat alone takes its kT from the box it starts with, the Hugoniostat its
+// reference state: a resume takes neither again (SIGTERM, as a batch system sends it).
+TEST(MdInterrupt, SigtermOnAnNphBoxResumesToTheSameFiles) {
+  interrupt_and_resume(md_deck("box_nph.toml", kBox + "ensemble = \"nph\"\n"), "box_nph", "thermo.csv", 8, "TERM", 1,
+                       2);
+}
+
+TEST(MdInterrupt, SigtermOnAHugoniostatResumesToTheSameFiles) {
+  interrupt_and_resume(md_deck("box_nphug.toml", kBox + "ensemble = \"nphug\"\npressure_gpa = 2.0\n"), "box_nphug",
+                       "thermo.csv", 8, "TERM", 2, 1);
+}
+
+// A box under each ensemble, relaxed for a number of steps thermo does not divide, with
+// thermo rows, a dump and (nphug) the Hugoniot's mean over the run's second half.
+std::string ensemble_box(const std::string& ensemble) {
+  std::string t = kLj + R"([lattice]
+constant = 3.615
+cells = [4, 4, 4]
+[thermal]
+temperature = 300.0
+seed = 5
+relax_steps = 30
+[run]
+dt = 0.002
+steps = 400
+thermo = 20
+dump_every = 100
+dump_fields = ["pe"]
+)";
+  t += fmt::format("ensemble = \"{}\"\n", ensemble);
+  if (ensemble == "npt") t += "barostat = \"aniso\"\npressure_gpa = [0.5, 0.0, 0.0]\n";
+  if (ensemble == "nphug") t += "pressure_gpa = 2.0\nshock_axis = \"y\"\n";
+  return t;
+}
+
+// Every ensemble stopped once, twice, and at its first and last records before the end
+// (the stop comes at the first thermo row at or past the step: after the 30 steps'
+// relaxation the rows fall at steps 40, 60, ..., 420 and 430), resumed each time: every
+// file the uninterrupted run's.
+TEST(MdInterrupt, EveryEnsembleStoppedAnywhereResumesToTheSameFiles) {
+  for (const std::string ensemble : {"nve", "nvt", "npt", "nph", "nphug"}) {
+    SCOPED_TRACE(ensemble);
+    const std::string d = md_deck(ensemble + ".toml", ensemble_box(ensemble));
+    const fs::path whole = kMdDir / (ensemble + "_whole");
+    const auto w = run_cli(fmt::format("md '{}' --quiet --out '{}'", d, whole.string()));
+    ASSERT_EQ(w.status, 0) << w.output;
+    if (ensemble == "nphug") {
+      EXPECT_NE(slurp(whole / "run.json").find("\"rows_averaged\" : 11"), std::string::npos);
+    }
+    for (const auto& stops : std::vector<std::vector<int>>{{100}, {45, 230}, {20, 420}}) {
+      const fs::path cut = kMdDir / fmt::format("{}_{}_{}", ensemble, stops.front(), stops.size());
+      std::string resume;
+      for (int s : stops) {
+        const auto r = run_cli(fmt::format("md '{}' --quiet --out '{}' --stop-after {}{}", d, cut.string(), s, resume));
+        ASSERT_EQ(r.status, 130) << r.output;
+        const int row = std::max(40, (s + 19) / 20 * 20);
+        EXPECT_NE(r.output.find(fmt::format("step {} of 430 written to", row)), std::string::npos)
+            << r.output;
+        resume = " --resume";
+      }
+      const auto r = run_cli(fmt::format("md '{}' --quiet --out '{}' --resume", d, cut.string()));
+      ASSERT_EQ(r.status, 0) << r.output;
+      mpmx::test::expect_same_folders(whole, cut);
+    }
+  }
 }
 
 TEST(MdInterrupt, TheBarStoppedAtARecordResumesToTheSameFiles) {

@@ -91,26 +91,71 @@ void read_thermal(io::Section& th, MdConfig& c) {
   c.relax_steps = th.integer("relax_steps", 0, 0, kMax64);
 }
 
+// Why a sample deck's run is NVE, as its refusals of an ensemble say.
+std::string sample_is_nve(std::string_view sample) {
+  const char* why = sample == "bar"   ? "its walls and the vacuum beyond them hold no pressure"
+                    : sample == "jet" ? "its piston and free surfaces"
+                                      : "open on every side; rod.rescale_every holds its temperature while it "
+                                        "equilibrates";
+  return fmt::format("a [{}] run is NVE ({}); ensembles apply to periodic boxes", sample, why);
+}
+
+// A thermostat's or barostat's period, `steps` steps of run.dt unless given; a given one
+// must span 10 steps (LAMMPS advises 100 and 1000): the chains' Trotter steps resolve no
+// shorter motion, and a run with one goes non-finite within a few steps.
+double read_period(io::Section& run, std::string_view key, double steps, double dt) {
+  const double period = run.number(key, steps * dt);
+  if (!run.has(key)) return period;  // the default follows run.dt, whose errors were said
+  run.positive(key, period);
+  if (dt > 0)
+    run.check(period >= 10 * dt, key,
+              fmt::format("is {:.3g} steps of run.dt = {} ps: a Nose-Hoover period spans at least 10 (LAMMPS advises "
+                          "{:g})",
+                          period / dt, dt, steps));
+  return period;
+}
+
 // [run] ensemble: nve, or the Nose-Hoover chain thermostat (nvt), with the MTK barostat
 // (npt), or the barostat alone (nph), LAMMPS's fix nvt / npt / nph (md/nose_hoover.hpp);
 // its target temperature is thermal.temperature, its periods t_damp_ps and p_damp_ps
 // (LAMMPS's Tdamp and Pdamp: 100 and 1000 steps by default, as its manual advises);
 // or nphug, the Hugoniostat (fix nphug): the shock axis's pressure_gpa, its thermostat's
 // target from the Hugoniot's energy condition about the box the run starts with.
-void read_ensemble(io::Section& run, bool jet, MdConfig& c) {
+// `sample`: "bar", "jet" or "rod" for a deck of one (an NVE run), else "".
+// Every key is refused where it has no effect, and only once: a refused ensemble leaves
+// its keys unread rather than refused again one by one.
+void read_ensemble(io::Section& run, std::string_view sample, MdConfig& c) {
+  static constexpr const char* kKeys[] = {"t_damp_ps", "p_damp_ps", "barostat", "pressure_gpa", "shock_axis"};
   c.ensemble = run.choice("ensemble", {"nve", "nvt", "npt", "nph", "nphug"}, "nve");
+  const bool refused = run.failed("ensemble") || (!sample.empty() && c.ensemble != "nve");
+  if (!run.failed("ensemble")) run.check(sample.empty() || c.ensemble == "nve", "ensemble", sample_is_nve(sample));
+  if (refused) {
+    c.ensemble = "nve";
+    for (const char* key : kKeys) run.ignore(key);
+    return;
+  }
   const bool hug = c.ensemble == "nphug";
   const bool tstat = c.ensemble == "nvt" || c.ensemble == "npt" || hug;
   const bool pstat = c.ensemble == "npt" || c.ensemble == "nph" || hug;
   NoseHooverOptions& nh = c.nose_hoover;
   nh.thermostat = tstat, nh.barostat = pstat, nh.temperature = c.temperature, nh.hugoniot = hug;
-  if (tstat) run.check(c.temperature > 0, "ensemble", "nvt, npt and nphug need thermal.temperature > 0");
-  run.check(!jet || c.ensemble == "nve", "ensemble", "a [jet] runs nve (its piston and free surfaces)");
-  for (const char* key : {"t_damp_ps", "p_damp_ps", "pressure_gpa", "barostat", "shock_axis"}) {
+  // The Nose-Hoover chains' masses are kT over their frequencies: no kT, no motion.
+  const char* kt_is = tstat ? "it is the thermostat's target"
+                            : "the barostat's kT is the box's temperature at the start (its atoms at twice "
+                              "thermal.temperature)";
+  run.check(!(tstat || pstat) || c.temperature > 0, "ensemble",
+            fmt::format("needs thermal.temperature > 0, not {} K: {}", c.temperature, kt_is));
+  for (const char* key : kKeys) {
     const std::string_view k = key;
     const bool wanted = k == "t_damp_ps" ? tstat : k == "barostat" ? pstat && !hug : k == "shock_axis" ? hug : pstat;
-    run.check(wanted || !run.has(key), key, fmt::format("has no use with ensemble = \"{}\"", c.ensemble));
+    if (wanted || !run.has(key)) continue;
+    run.check(false, key,
+              sample.empty() ? fmt::format("has no use with ensemble = \"{}\"", c.ensemble)
+                             : fmt::format("has no use: {}", sample_is_nve(sample)));
   }
+  if (tstat) nh.t_damp = read_period(run, "t_damp_ps", 100, c.dt);
+  if (!pstat) return;
+  nh.p_damp = read_period(run, "p_damp_ps", 1000, c.dt);
   if (hug) {  // uniaxial: the shock axis dilates to its target pressure, the others stay
     const std::string axis = run.choice("shock_axis", {"x", "y", "z"}, "x");
     nh.isotropic = false;
@@ -118,16 +163,8 @@ void read_ensemble(io::Section& run, bool jet, MdConfig& c) {
     const double p = run.number("pressure_gpa");
     nh.pressure = {p, p, p};
     run.check(p >= 0, "pressure_gpa", "a shock's pressure is compressive (>= 0)");
-    nh.t_damp = run.number("t_damp_ps", 100 * c.dt);
-    run.positive("t_damp_ps", nh.t_damp);
-    nh.p_damp = run.number("p_damp_ps", 1000 * c.dt);
-    run.positive("p_damp_ps", nh.p_damp);
     return;
   }
-  nh.t_damp = run.number("t_damp_ps", 100 * c.dt);
-  run.positive("t_damp_ps", nh.t_damp);
-  nh.p_damp = run.number("p_damp_ps", 1000 * c.dt);
-  run.positive("p_damp_ps", nh.p_damp);
   nh.isotropic = run.choice("barostat", {"iso", "aniso"}, "iso") == "iso";
   if (nh.isotropic) {  // one target, the mean pressure's
     const double p = run.number("pressure_gpa", 0.0);
@@ -140,14 +177,16 @@ void read_ensemble(io::Section& run, bool jet, MdConfig& c) {
 }
 
 // [run]: the time step and length, output, neighbour skin, precision, deformation.
-// `jet`: the deck has a [jet] table, which sets the length itself.
-void read_run(io::Section& run, bool jet, MdConfig& c) {
+// `sample`: "bar", "jet" or "rod" for a deck of one ("": a periodic box); a [jet] sets
+// the length itself.
+void read_run(io::Section& run, std::string_view sample, MdConfig& c) {
+  const bool jet = sample == "jet";
   c.dt = run.number("dt");
   run.positive("dt", c.dt);
   run.check(c.dt <= 0.01, "dt", "is above 0.01 ps; metal MD needs about 0.001 ps");
   if (!jet) c.steps = run.integer("steps", 0, kMax64);  // a jet's follow from its duration
   c.thermo = run.integer("thermo", 100, 1, INT_MAX);
-  read_ensemble(run, jet, c);
+  read_ensemble(run, sample, c);
   c.dump_every = run.integer("dump_every", 0, 0, INT_MAX);
   run.check(c.dump_every == 0 || c.dump_every % c.thermo == 0 || jet, "dump_every",
             "must be 0 (no dump) or a multiple of thermo");
@@ -374,7 +413,9 @@ MdConfig read_md_config(io::Deck& deck) {
   auto th = root.optional_table("thermal");
   read_thermal(th, c);
   auto run = root.table("run");
-  read_run(run, root.has("jet"), c);
+  // The sample a deck builds (several: refused below, by the sample's table).
+  const std::string_view sample = root.has("jet") ? "jet" : root.has("rod") ? "rod" : root.has("bar") ? "bar" : "";
+  read_run(run, sample, c);
   auto scan = root.optional_table("scan");
   if (scan.present()) read_scan(scan, c);
   auto elastic = root.optional_table("elastic");

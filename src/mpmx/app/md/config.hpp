@@ -37,8 +37,8 @@ struct MdConfig {
   std::int64_t thermo = 100;        // steps between thermo rows
   std::int64_t dump_every = 0;      // LAMMPS dump frames (0: none), multiple of thermo
   std::vector<std::string> dump_fields;  // per-atom columns of the dump (dump.hpp)
-  std::string ensemble = "nve";     // nve, nvt, npt, nph
-  NoseHooverOptions nose_hoover;    // the thermostat and barostat of nvt, npt, nph
+  std::string ensemble = "nve";     // nve, nvt, npt, nph, nphug (a [bar], [jet] or [rod]: nve)
+  NoseHooverOptions nose_hoover;    // the thermostat and barostat of nvt, npt, nph, nphug
   Mat3 velocity_gradient{};         // 1/ps
   bool streaming = false;           // start with the streaming velocity of the gradient
   SystemOptions options;

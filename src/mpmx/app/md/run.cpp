@@ -31,6 +31,11 @@ namespace mpmx::app::md {
 
 namespace {
 
+// md_run's payload: 2 with the input files' digests after the deck's text (every kind's);
+// 3 with a box's whole thermostat and barostat state (kT, the Hugoniot's reference) and
+// the Hugoniot's sums.
+constexpr std::uint32_t kMdCheckpointVersion = 3;
+
 // Advances in chunks an int holds (System::advance counts steps in int).
 void advance_steps(System& s, std::int64_t steps, const Mat3& gradient, double dt) {
   for (std::int64_t done = 0; done < steps;) {
@@ -60,6 +65,29 @@ std::string non_finite_state(const System& s) {
                            {"the box length y (A)", b.ly},
                            {"the box length z (A)", b.lz}});
 }
+
+// nphug: the shocked state's sums over the thermo rows of the run's second half (their
+// means are run.json's), carried in the checkpoint so a resumed run averages every row.
+struct HugoniotSums {
+  double v = 0, p = 0, t = 0;  // A^3, GPa along the shock axis, K
+  std::int64_t rows = 0;
+  void add(const System& s, int axis) {
+    v += s.box().volume(), p -= s.stress_gpa()[4 * axis], t += s.temperature();
+    ++rows;
+  }
+  void save(CheckpointOut& out) const {
+    out.numbers({v, p, t});
+    out.integer(rows);
+  }
+  static HugoniotSums load(CheckpointIn& in) {
+    const long long at = in.offset();
+    const auto sums = in.numbers();
+    if (sums.size() != 3) throw in.refuse(at, fmt::format("the Hugoniot's sums: {} numbers, expected 3", sums.size()));
+    HugoniotSums h{sums[0], sums[1], sums[2], in.integer()};
+    if (h.rows < 0) throw in.refuse(at, fmt::format("the Hugoniot's sums: {} rows", h.rows));
+    return h;
+  }
+};
 
 toml::array matrix(const Mat3& m) {
   toml::array rows;
@@ -172,7 +200,7 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
                     const RunControlOptions& o) {
   namespace fs = std::filesystem;
   const auto t0 = std::chrono::steady_clock::now();
-  RunControl control(out_dir, "md_run", deck_echo, o);
+  RunControl control(out_dir, "md_run", deck_echo, o, kMdCheckpointVersion);
   const Potential pot(c.potential);
   if (c.bar || c.jet || c.rod) {
     MdRunSummary r;
@@ -187,13 +215,25 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   }
   System sys(particles::oriented_crystal(c.lattice, c.cells, c.strain_x), pot, c.options);
   const std::int64_t last_step = c.relax_steps + c.steps;
-  // nvt, npt, nph: the thermostat and barostat, built once the atoms are placed; their
-  // variables ride in the checkpoint after the system.
+  // nvt, npt, nph, nphug: the thermostat and barostat, built once the atoms are placed
+  // (nph's kT and nphug's reference are the box's then); on --resume, from the
+  // checkpoint's state alone, as are the Hugoniot's sums.
   std::optional<NoseHoover> nh;
+  HugoniotSums hug;
   if (control.resuming()) {
     resume_md_with(control, sys, last_step, [&](CheckpointIn& in) {
+      const long long at = in.offset();
       const auto state = in.numbers();
-      if (c.ensemble != "nve") nh.emplace(c.nose_hoover, sys), nh->set_state(state);
+      const std::size_t want = c.ensemble == "nve" ? 0 : NoseHoover::state_size(c.nose_hoover);
+      if (state.size() != want)
+        throw in.refuse(at, fmt::format("the thermostat and barostat: {} numbers, the deck's ensemble \"{}\" has {}",
+                                        state.size(), c.ensemble, want));
+      try {
+        if (want > 0) nh.emplace(c.nose_hoover, sys.atoms().size(), state);
+      } catch (const InputError& e) {
+        throw in.refuse(at, e.what());
+      }
+      hug = HugoniotSums::load(in);
     });
   } else {
     if (c.temperature > 0) sys.thermalize(c.temperature, c.seed, 0);
@@ -229,10 +269,7 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   progress.show_rate(n, "atom-steps");
   const std::int64_t first = done;
   const auto run_start = std::chrono::steady_clock::now();
-  // nphug: the shocked state, averaged over the thermo rows of the run's second half.
   const int axis = c.nose_hoover.axes[0] ? 0 : c.nose_hoover.axes[1] ? 1 : 2;
-  double hug_v = 0, hug_p = 0, hug_t = 0;
-  long hug_rows = 0;
   while (done < c.steps) {
     const std::int64_t chunk = std::min<std::int64_t>(c.thermo - sys.step() % c.thermo, c.steps - done);
     if (nh) sys.advance_coupled(static_cast<int>(chunk), c.dt, *nh);
@@ -240,16 +277,14 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
     done += chunk;
     if (sys.step() % c.thermo == 0 || done == c.steps) {
       row();
-      if (c.nose_hoover.hugoniot && 2 * done > c.steps) {
-        hug_v += sys.box().volume(), hug_p -= sys.stress_gpa()[4 * axis], hug_t += sys.temperature();
-        ++hug_rows;
-      }
+      if (c.nose_hoover.hugoniot && 2 * done > c.steps) hug.add(sys, axis);
     }
     if (!stopped.empty()) break;
     if (dump && sys.step() % c.dump_every == 0) write_dump_frame(*dump, sys, c.dump_fields, sys.options().threads);
     progress.update(done);
     if (done < c.steps && stop_md_with(control, sys, [&](CheckpointOut& out) {
           out.numbers(nh ? nh->state() : std::vector<double>{});
+          hug.save(out);
         }))
       break;
   }
@@ -272,8 +307,8 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
   toml::table rec;
   rec.insert("relax_steps", static_cast<std::int64_t>(c.relax_steps));
   rec.insert("ensemble", c.ensemble);
-  if (nh && c.nose_hoover.hugoniot && hug_rows > 0) {
-    const double v = hug_v / hug_rows, p = hug_p / hug_rows, v0 = nh->v0();
+  if (nh && c.nose_hoover.hugoniot && hug.rows > 0) {
+    const double v = hug.v / hug.rows, p = hug.p / hug.rows, v0 = nh->v0();
     const double p0 = nh->p0() * units::eV_per_A3_in_GPa;
     const HugoniotPoint jump = jump_conditions(sys, v0, p0, v, p);
     toml::table h{{"shock_axis", std::string(1, static_cast<char>('x' + axis))},
@@ -281,10 +316,10 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
                   {"reference_pressure_GPa", p0},
                   {"reference_energy_eV", nh->e0()},
                   {"reference_density_g_cm3", jump.rho0},
-                  {"rows_averaged", static_cast<std::int64_t>(hug_rows)},
+                  {"rows_averaged", hug.rows},
                   {"volume_ratio", v / v0},
                   {"pressure_GPa", p},
-                  {"temperature_K", hug_t / hug_rows},
+                  {"temperature_K", hug.t / hug.rows},
                   {"shock_speed_km_s", jump.us},
                   {"particle_velocity_km_s", jump.up}};
     rec.insert("hugoniot", h);
