@@ -1,5 +1,6 @@
 #include "mpmx/app/md/run.hpp"
 #include "mpmx/app/md/elastic_record.hpp"
+#include "mpmx/app/md/ensemble_averages.hpp"
 
 #include <chrono>
 #include <climits>
@@ -330,6 +331,24 @@ MdRunSummary run_md(const MdConfig& c, const std::string& out_dir, const toml::t
     toml::array a;
     for (int d = 0; d < 3; ++d) a.push_back(c.lattice.constant * l[d] / (c.cells[d] * tile.length[d]));
     rec.insert("lattice_constant_A", a);
+    // A thermostat's or barostat's state is a mean, not the last row's numbers.
+    if (c.ensemble != "nve") {
+      csv.flush();
+      std::array<double, 3> per_length{};
+      for (int d = 0; d < 3; ++d) per_length[d] = c.lattice.constant / (c.cells[d] * tile.length[d]);
+      toml::table avg = ensemble_averages((std::filesystem::path(out_dir) / "thermo.csv").string(),
+                                          c.relax_steps + c.steps / 2, per_length);
+      auto mean = [&](const char* k) { return avg[k]["mean"].value_or(std::nan("")); };
+      auto error = [&](const char* k) { return avg[k]["standard_error"].value_or(std::nan("")); };
+      if (avg.contains("temperature_K"))
+        r.notes.push_back(fmt::format(
+            "averages over the run's second half ({} rows; run.json's averages): T {:.2f} +- {:.2g} K, P {:.4f} +- "
+            "{:.2g} GPa, lattice constant {:.6f} +- {:.2g}, {:.6f}, {:.6f} A (x, y, z)",
+            avg["rows"].value_or(std::int64_t{0}), mean("temperature_K"), error("temperature_K"), mean("pressure_GPa"),
+            error("pressure_GPa"), mean("lattice_constant_x_A"), error("lattice_constant_x_A"),
+            mean("lattice_constant_y_A"), mean("lattice_constant_z_A")));
+      rec.insert("averages", std::move(avg));
+    }
   }
   rec.insert("run_seconds", run_seconds);
   rec.insert("kinetic_energy_per_atom", sys.kinetic_energy() / n);
