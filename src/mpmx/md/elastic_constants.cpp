@@ -15,24 +15,8 @@ namespace {
 // Voigt component k as (row, column) of the 3x3 stress or strain.
 constexpr int kVoigt[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
 
-// The crystal under the engineering strain e in Voigt component j: x_a += e x_b for
-// (a, b) = kVoigt[j] with the box's edge or tilt along, so that the image lattice moves
-// with the atoms (a periodic box's shear is its tilt, upper triangular as LAMMPS's).
 particles::Crystal strained(particles::Crystal c, int j, double e) {
-  const auto [a, b] = kVoigt[j];
-  std::vector<double>* axis[3] = {&c.atoms.x, &c.atoms.y, &c.atoms.z};
-  for (std::size_t i = 0; i < c.atoms.size(); ++i) (*axis[a])[i] += e * (*axis[b])[i];
-  auto& box = c.box;
-  if (a == b) {
-    double* length[3] = {&box.lx, &box.ly, &box.lz};
-    *length[a] *= 1.0 + e;
-  } else if (j == 3) {
-    box.yz += e * box.lz;
-  } else if (j == 4) {
-    box.xz += e * box.lz;
-  } else {
-    box.xy += e * box.ly;
-  }
+  strain_voigt(c.atoms, c.box, j, e);
   return c;
 }
 
@@ -80,13 +64,29 @@ double relax(System& s, double tolerance) {
   return fmax;
 }
 
+}  // namespace
+
+void strain_voigt(Atoms& atoms, Box& box, int j, double e) {
+  const auto [a, b] = kVoigt[j];
+  std::vector<double>* axis[3] = {&atoms.x, &atoms.y, &atoms.z};
+  for (std::size_t i = 0; i < atoms.size(); ++i) (*axis[a])[i] += e * (*axis[b])[i];
+  if (a == b) {
+    double* length[3] = {&box.lx, &box.ly, &box.lz};
+    *length[a] *= 1.0 + e;
+  } else if (j == 3) {
+    box.yz += e * box.lz;
+  } else if (j == 4) {
+    box.xz += e * box.lz;
+  } else {
+    box.xy += e * box.ly;
+  }
+}
+
 std::array<double, 6> voigt_stress(const Mat3& s) {
   std::array<double, 6> r{};
   for (int k = 0; k < 6; ++k) r[k] = s[3 * kVoigt[k][0] + kVoigt[k][1]];
   return r;
 }
-
-}  // namespace
 
 ElasticTensor elastic_tensor(const Potential& pot, const particles::LatticeSpec& spec, const std::array<int, 3>& tiles,
                              const ElasticOptions& o) {

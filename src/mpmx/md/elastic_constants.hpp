@@ -36,6 +36,13 @@ struct ElasticOptions {
   double force_tolerance = 1e-9;  // eV/A: the relaxation's end
 };
 
+// The crystal under the engineering strain e in Voigt component j (0-5): x_a += e x_b for
+// the component's (a, b), with the box's edge or tilt, so that the image lattice moves
+// with the atoms (a periodic box's shear is its tilt, upper triangular as LAMMPS's).
+void strain_voigt(Atoms& atoms, Box& box, int j, double e);
+// A 3x3 stress as its six Voigt components.
+std::array<double, 6> voigt_stress(const Mat3& s);
+
 // `spec.constant` is the lattice constant used; `tiles` the periodic tiles along x, y, z.
 ElasticTensor elastic_tensor(const Potential& pot, const particles::LatticeSpec& spec,
                              const std::array<int, 3>& tiles, const ElasticOptions& o = {});

@@ -106,6 +106,45 @@ CubicConstants md_strained_constants(const md::Potential& pot, double a, const S
   return constants_from(b, e);
 }
 
+TensorAtTemperature md_strained_tensor(const md::Potential& pot, const particles::LatticeSpec& spec,
+                                       const std::array<int, 3>& tiles, const StrainedBoxOptions& o) {
+  check(o, spec.constant);
+  if (!(o.temperature > 0)) throw InputError("a tensor at a temperature needs one above 0 K");
+  const double e = strain_of(o);
+  md::System base(particles::oriented_crystal(spec, tiles), pot);
+  base.thermalize(o.temperature, o.seed, 0);
+  advance_at_temperature(base, o.equilibrate_steps, o.dt, o.temperature);
+  // Box 2 j + (0, 1): component j strained by -e, +e; box 12 unstrained.
+  std::array<std::array<double, 6>, 13> mean{}, error{};
+  Batch(o.threads).for_each(13, [&](std::size_t k) {
+    md::System s = base;
+    if (k < 12) {
+      particles::Atoms& at = s.edit_atoms();
+      particles::Box box = s.box();
+      md::strain_voigt(at, box, static_cast<int>(k / 2), k % 2 ? e : -e);
+      s.set_box(box);
+    }
+    advance_at_temperature(s, o.equilibrate_steps / 2, o.dt, o.temperature);
+    std::array<std::vector<double>, 6> series;
+    for (int done = 0; done < o.sample_steps; done += 10) {
+      s.advance(10, o.dt);
+      const auto v = md::voigt_stress(s.stress_gpa());
+      for (int c = 0; c < 6; ++c) series[c].push_back(v[c]);
+      if ((done + 10) % 50 == 0) rescale_temperature(s, o.temperature);
+    }
+    for (int c = 0; c < 6; ++c) block_average(series[c], mean[k][c], error[k][c]);
+  });
+  TensorAtTemperature t;
+  t.strain = e;
+  t.stress = mean[12];
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) {
+      t.c[i][j] = (mean[2 * j + 1][i] - mean[2 * j][i]) / (2 * e);
+      t.error[i][j] = std::hypot(error[2 * j + 1][i], error[2 * j][i]) / (2 * e);
+    }
+  return t;
+}
+
 CubicConstants dpd_strained_constants(const dpd::PairPotential& pot, double a, const StrainedBoxOptions& o) {
   check(o, a);
   const double e = strain_of(o);

@@ -15,7 +15,9 @@
 #include <cstdint>
 
 #include "mpmx/dpd/potential/registry.hpp"
+#include "mpmx/md/elastic_constants.hpp"
 #include "mpmx/md/potential/potential.hpp"
+#include "mpmx/particles/oriented_lattice.hpp"
 
 namespace mpmx::multiscale {
 
@@ -38,6 +40,19 @@ struct StrainedBoxOptions {
   // DPD(E) only: mesoparticle mass (amu), gamma (amu/ps), heat capacity (eV/K), Berendsen tau (ps).
   double mass = 8 * 63.546, gamma = 0.2, heat_capacity = 0, berendsen_tau = 0.5;
 };
+
+// The full tensor at a temperature (md/elastic_constants.hpp's at 0 K): the crystal
+// `spec` (its constant as given: a thermal one, from NPT) of `tiles` equilibrated once at
+// o.temperature, then each of the twelve boxes strained by +-e in one Voigt component
+// from it, equilibrated for half as long and sampled; C_ij from the time-averaged
+// stresses' central differences, each with its error from the block errors.
+struct TensorAtTemperature {
+  md::Voigt c{}, error{};          // GPa, box frame
+  std::array<double, 6> stress{};  // the unstrained box's mean (GPa)
+  double strain = 0;
+};
+TensorAtTemperature md_strained_tensor(const md::Potential& pot, const particles::LatticeSpec& spec,
+                                       const std::array<int, 3>& tiles, const StrainedBoxOptions& o);
 
 CubicConstants md_strained_constants(const md::Potential& pot, double lattice_constant, const StrainedBoxOptions& o);
 CubicConstants dpd_strained_constants(const dpd::PairPotential& pot, double lattice_constant,

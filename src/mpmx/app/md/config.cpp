@@ -230,11 +230,24 @@ void read_scan(io::Section& scan, MdConfig& c) {
 // [elastic]: the 0 K tensor of the deck's crystal.
 void read_elastic(io::Section& e, MdConfig& c) {
   c.elastic = true;
-  c.elastic_at_minimum = e.choice("at", {"minimum", "deck"}, "minimum") == "minimum";
-  c.elastic_strain = e.number("strain", c.elastic_strain);
-  e.check(c.elastic_strain >= 1e-7 && c.elastic_strain <= 0.01, "strain",
-          "must lie in [1e-7, 0.01]: larger strains measure the nonlinear response, smaller ones round-off");
+  c.elastic_temperature = e.number("temperature", 0.0);
+  e.temperature("temperature", c.elastic_temperature);
+  const bool hot = c.elastic_temperature > 0;
+  // A hot crystal's tensor is that of its thermal lattice constant, which the deck gives
+  // (an NPT run's averages); the 0 K minimum would hold it under the thermal pressure.
+  c.elastic_at_minimum = e.choice("at", {"minimum", "deck"}, hot ? "deck" : "minimum") == "minimum";
+  e.check(!hot || !c.elastic_at_minimum, "at",
+          "\"minimum\" is the 0 K crystal's constant; at a temperature give the thermal one as [lattice].constant "
+          "(an npt run's averages.lattice_constant_x_A) and at = \"deck\"");
+  c.elastic_strain = e.number("strain", hot ? 0.01 : c.elastic_strain);
+  e.check(c.elastic_strain >= 1e-7 && c.elastic_strain <= 0.05, "strain",
+          "must lie in [1e-7, 0.05]: larger strains measure the nonlinear response, smaller ones round-off");
   c.elastic_relax = e.boolean("relax", c.elastic_relax);
+  e.check(!hot || !e.has("relax"), "relax", "applies at 0 K only: a hot box's atoms find their places themselves");
+  c.elastic_equilibrate_steps = e.integer_int("equilibrate_steps", c.elastic_equilibrate_steps, 2, 100000000);
+  c.elastic_sample_steps = e.integer_int("sample_steps", c.elastic_sample_steps, 200, 100000000);
+  e.check(hot || !e.has("equilibrate_steps"), "equilibrate_steps", "applies with a temperature only");
+  e.check(hot || !e.has("sample_steps"), "sample_steps", "applies with a temperature only");
   e.check(c.lattice.style != particles::LatticeStyle::b2, "at",
           "a b2 box's tensor is not computed (two elements); fcc, bcc and hcp are");
 }

@@ -51,6 +51,8 @@ struct MdConfig {
   bool elastic_at_minimum = true;
   double elastic_strain = 1e-5;
   bool elastic_relax = true;
+  double elastic_temperature = 0;    // K; above 0: strained NVT boxes, time-averaged stresses
+  int elastic_equilibrate_steps = 3000, elastic_sample_steps = 5000;
   // Optional direct-MD bar ([bar]): walls along x, binned stress every `bar_every` steps.
   bool bar = false;
   BarConfig bar_config;
