@@ -27,6 +27,9 @@ struct Points {
   // The tensor artificial viscous stress the forces used this step (eqs. 7.8-7.10),
   // null when off: a law that keeps an energy account sees the continuum's whole work.
   std::array<const double*, tensor> viscous{};
+  // The linear artificial viscosity q (>= 0, ch. 6) the forces took off every normal
+  // stress this step: null when the deck has none.
+  const double* viscous_pressure = nullptr;
 
   std::size_t size() const { return n; }
   double density(std::size_t q) const { return mass[q] / volume[q]; }

@@ -16,6 +16,7 @@ material::Points<Dim> points(Particles<Dim>& p) {
     if (!p.viscous[c].empty()) v.viscous[c] = p.viscous[c].data();
   }
   if (!p.stress_zz.empty()) v.stress_zz = p.stress_zz.data();
+  if (!p.viscous_pressure.empty()) v.viscous_pressure = p.viscous_pressure.data();
   v.mass = p.mass.data();
   v.volume = p.volume.data();
   v.volume0 = p.volume0.data();

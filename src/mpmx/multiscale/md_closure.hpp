@@ -26,6 +26,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <numeric>
 #include <memory>
 #include <cmath>
 #include <optional>
@@ -171,7 +172,8 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   // Eq. 7.11: energy put into (positive) or taken from the boxes so far, eV, all ranks;
   // and what could not be taken from a box with too little thermal energy.
   double energy_injected_ev() const { return injected_ev_; }
-  double energy_shortfall_ev() const { return shortfall_ev_; }
+  // What the boxes still owe of eq. 7.11's removals (eV, >= 0): carried, not lost.
+  double energy_shortfall_ev() const { return -std::accumulate(owed_.begin(), owed_.end(), 0.0); }
   // Neighbour-list builds of every box since it was made (all ranks, at the last step).
   std::int64_t neighbor_builds() const { return neighbor_builds_; }
   // The audit: the auditors' private stress against their groups', relative RMS over
@@ -191,7 +193,8 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   void start_audits(const std::vector<std::size_t>& points);
   // Advances group g's box (or auditor q's, with `audit`) by steps under gradient L;
   // returns what eq. 7.11 put in and could not take out.
-  std::pair<double, double> advance(md::System& box, const md::Mat3& L, double power, int steps, md::Mat3& stress);
+  std::pair<double, double> advance(md::System& box, const md::Mat3& L, double power, int steps, md::Mat3& stress,
+                                    double& owed);
   // The stress power (GPa/ps) of the stress the continuum used on point q this step.
   double power_of(const Points<Dim>& p, std::size_t q, const md::Mat3& box_stress) const;
   // Every rank's results into the groups and the points, after the ranks agree on the
@@ -214,12 +217,16 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   std::vector<md::Mat3> stress_;                     // by group, box frame, GPa (every rank)
   std::vector<std::array<double, 7>> shape_;         // by group: lx, ly, lz, xy, xz, yz, neighbour builds
   std::vector<double> temperature_;                  // by group, K (every rank)
+  // Eq. 7.11's removal a box could not take yet (eV, <= 0; by group, every rank; and by
+  // auditor): carried into its next macro steps, never dropped (md_closure.cpp, advance).
+  std::vector<double> owed_;
+  std::map<std::size_t, double> audit_owed_;
   std::vector<md::Mat3> rotation_;                   // every point, on every rank
   std::vector<double> group_seconds_;                // each group's cost since the last rebalance check
   std::int64_t atom_steps_ = 0, atom_steps_unshared_ = 0;
   std::int64_t macro_step_ = 0;
   double md_seconds_ = 0.0;
-  double injected_ev_ = 0.0, shortfall_ev_ = 0.0;
+  double injected_ev_ = 0.0;
   std::int64_t neighbor_builds_ = 0;
   double audit_d2_ = 0.0, audit_s2_ = 0.0, audit_max_gpa_ = 0.0;
   std::int64_t audit_samples_ = 0;

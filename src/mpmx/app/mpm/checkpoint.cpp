@@ -13,7 +13,7 @@ namespace mpmx::app {
 using namespace mpm;
 
 namespace {
-constexpr char kMagic[8] = {'M', 'P', 'M', 'X', 'S', 'T', '0', '3'};
+constexpr char kMagic[8] = {'M', 'P', 'M', 'X', 'S', 'T', '0', '4'};
 
 template <int Dim, class F>
 void each_array(Particles<Dim>& p, F&& f) {
