@@ -127,6 +127,19 @@ TEST(C1, ElasticBarAs2dDeckGivesThe1dPlateau) {
   EXPECT_NEAR(pl.stress, sigma, 0.01 * std::abs(sigma));
 }
 
+// DDMP's eq. 7.3 alpha (the 2-D default) loses where shocked material crosses the grid
+// (docs/validation.md, C1); a piston carries the grid, the shocked bar rests on it, and
+// the plateau is the axis product's.
+TEST(C1, ElasticBarAs2dDeckWithEq73AlphaGivesThe1dPlateau) {
+  const auto c = test::deck_with(test::example("C1_piston_elastic_2d.toml"),
+                                 [](toml::table& t) { t["scheme"].as_table()->erase("alpha"); });
+  const auto r = test::run_dim<2>(c);
+  const double e = log_strain_jump(kRho, kE, kUp), sigma = kE * std::log1p(e), Us = kUp / -e;
+  const Plateau pl = plateau(r.state.particles, c.end, kUp, Us);
+  EXPECT_NEAR(pl.velocity, kUp, 0.01 * kUp);
+  EXPECT_NEAR(pl.stress, sigma, 0.01 * std::abs(sigma));
+}
+
 TEST(C1, ElasticBarAs3dDeckGivesThe1dPlateau) {
   // The 2-D deck with one cell across z as well, roller faces all round.
   const auto c = test::deck_with(test::example("C1_piston_elastic_2d.toml"), [](toml::table& t) {

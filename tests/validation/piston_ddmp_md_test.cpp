@@ -2,8 +2,10 @@
 // ctest-cost: 60
 // C1 (VALIDATION.md), the multiscale bar: a piston drives the H2 DDMP-MD copper bar
 // (every point's stress from its own 256-atom MD box), and the same bar moving at -u_p
-// onto a fixed wall (the seed's way) gives the same front and plateau in the bar's frame.
+// onto a fixed wall (the seed's way) gives the same front and plateau in the piston's
+// frame.
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
@@ -42,10 +44,17 @@ TEST(C1, DdmpMdBarPistonAndWallImpactAgree) {
   });
   const Profile a = profile(test::run(piston).state.particles);
   const Profile b = profile(test::run(wall).state.particles);
-  EXPECT_NEAR(a.velocity, up, 0.03 * up);  // behind the front: the piston's speed
-  EXPECT_NEAR(b.velocity, 0.0, 0.03 * up);  // brought to rest by the wall
+  std::printf("piston: u %.4f sigma %.3f front %.2f; wall: u %+.4f sigma %.3f front %.2f; differences %.2g %.2g %.2g\n",
+              a.velocity, a.stress, a.front, b.velocity, b.stress, b.front, a.velocity - up - b.velocity,
+              a.stress - b.stress, a.front - b.front);
+  EXPECT_NEAR(a.velocity, up, 0.01 * up);  // behind the front: the piston's speed
+  EXPECT_NEAR(b.velocity, 0.0, 0.01 * up);  // brought to rest by the wall
   EXPECT_LT(a.stress, -7.0);                // a strong shock: about -8 GPa
-  EXPECT_NEAR(a.stress, b.stress, 0.03 * std::abs(b.stress));
   EXPECT_GT(a.front, 15.0);
-  EXPECT_NEAR(a.front, b.front, 1.0);  // within one point (cell)
+  // The piston carries the grid (mpm/piston_grid.hpp): in its frame it is the wall, point
+  // for point (the boxes see only the deformation; the bar's far end, where the runs
+  // differ, has not reached the plateau).
+  EXPECT_NEAR(a.velocity - up, b.velocity, 1e-5 * up);
+  EXPECT_NEAR(a.stress, b.stress, 1e-5 * std::abs(b.stress));
+  EXPECT_NEAR(a.front, b.front, 0.01);
 }

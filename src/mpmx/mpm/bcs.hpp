@@ -2,7 +2,7 @@
 // Boundary conditions on the faces of the grid: free, fixed, a prescribed velocity
 // v(t) = value + amplitude sin(omega t) (a vector; the drive of ADMPM 8.2 and 7.7), or
 // roller (normal velocity zero, tangential free: the y faces of the copper jet), or a
-// piston (piston.hpp: a wall moving into the grid, holding the nodes behind it).
+// piston (piston.hpp: a wall moving into the grid, which carries the grid with it).
 #include <array>
 #include <cmath>
 #include <string>
@@ -19,14 +19,19 @@ struct BoundarySide {
   double omega = 0.0;
   Piston piston;
 
-  // Whether the face's own nodes take a set velocity (a piston's nodes follow its face).
+  // Whether the face's own nodes take a set velocity whatever the material does.
   bool prescribed() const { return type != Type::free && type != Type::piston; }
-  // Component `a` of the prescribed velocity (fixed: zero).
-  double velocity(double t, int a = 0) const {
+  // Component `a` of the velocity face f holds its nodes at, at time t (fixed, roller:
+  // zero; a piston: its speed along the inward normal).
+  double velocity(double t, int a, int f) const {
+    if (type == Type::piston) return a == f / 2 ? inward(f) * piston.speed(t) : 0.0;
     return type == Type::velocity ? value[a] + amplitude[a] * std::sin(omega * t) : 0.0;
   }
-  // Whether this face holds velocity component `a` of its nodes; `normal` is the face's axis.
-  bool holds(int a, int normal) const {
+  // Whether face f holds velocity component `a` of a node on it whose own velocity at
+  // time t (the material's, before the face acts) is v: a piston only while it pushes.
+  bool holds(int a, int f, double v, double t) const {
+    const int normal = f / 2;
+    if (type == Type::piston) return a == normal && piston_contact(v, f, piston.speed(t));
     return type == Type::fixed || type == Type::velocity || (type == Type::roller && a == normal);
   }
 };

@@ -25,6 +25,10 @@ struct Grid {
 
   std::array<double, Dim> lower{};
   std::array<double, Dim> upper{};
+  // The corners at t = 0, where a piston carries the grid from (piston_grid.hpp);
+  // lower and upper otherwise.
+  std::array<double, Dim> rest_lower{};
+  std::array<double, Dim> rest_upper{};
   std::array<int, Dim> cells{};
   std::array<double, Dim> dx{};
   std::array<double, Dim> inv_dx{};
@@ -55,7 +59,7 @@ struct Grid {
 
   Grid() = default;
   Grid(std::array<double, Dim> lo, std::array<double, Dim> hi, std::array<int, Dim> n)
-      : lower(lo), upper(hi), cells(n) {
+      : lower(lo), upper(hi), rest_lower(lo), rest_upper(hi), cells(n) {
     std::size_t s = 1;
     for (int d = 0; d < Dim; ++d) {
       dx[d] = (hi[d] - lo[d]) / n[d];

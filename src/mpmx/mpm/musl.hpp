@@ -27,12 +27,8 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
                    int threads) {
   const int w = st.width;
   const std::size_t n = p.size();
-  // Node i's velocity from the points' momenta, or its face's at t where one holds it, or
-  // raised to a piston's where the node's support reaches behind its face (piston.hpp).
-  std::array<int, 2 * Dim> reach{};
-  for (int f = 0; f < 2 * Dim; ++f)
-    if (bc.face[f].type == BoundarySide::Type::piston)
-      reach[f] = piston_reach(bc.face[f].piston, f, g.dx[f / 2], g.cells[f / 2], t);
+  // Node i's velocity from the points' momenta, or its face's at t where one holds it
+  // (a piston's where the material there would fall behind it).
   auto node_velocity = [&](std::size_t i, const std::array<int, Dim>& idx) {
     const double m = g.mass[i];
     for (int a = 0; a < Dim; ++a) {
@@ -40,17 +36,12 @@ void musl_gradient(const Stencil<Dim>& st, const Boundaries& bc, double t, Grid<
       for (int f = 0; f < 2 * Dim; ++f) {
         const int axis = f / 2;
         const bool on = (f % 2 == 0) ? idx[axis] == 0 : idx[axis] == g.cells[axis];
-        if (on && bc.face[f].holds(a, axis)) {
-          vi = bc.face[f].velocity(t, a);
+        if (on && bc.face[f].holds(a, f, vi, t)) {
+          vi = bc.face[f].velocity(t, a, f);
           break;
         }
       }
       v[a][i] = vi;
-    }
-    for (int f = 0; f < 2 * Dim; ++f) {
-      const BoundarySide& side = bc.face[f];
-      if (side.type == BoundarySide::Type::piston && piston_holds(f, idx[f / 2], reach[f]))
-        v[f / 2][i] = piston_velocity(v[f / 2][i], f, side.piston.speed(t));
     }
   };
   auto scatter = [&](const std::uint32_t* list, std::size_t count) {

@@ -43,15 +43,10 @@ NodalFields nodal_fields(const State<1>& s) {
     n.stress.push_back(ms[i] * inv);
     n.density.push_back(m[i] / V);
   }
-  // Prescribed ends carry their boundary velocity (ADMPM eq. 5.24).
-  if (s.boundary.left().prescribed()) n.velocity.front() = s.boundary.left().velocity(s.time);
-  if (s.boundary.right().prescribed()) n.velocity.back() = s.boundary.right().velocity(s.time);
-  for (int f = 0; f < 2; ++f) {  // a piston's nodes: at least its velocity (piston.hpp)
-    const BoundarySide& side = s.boundary.face[f];
-    if (side.type != BoundarySide::Type::piston) continue;
-    const int reach = piston_reach(side.piston, f, g.dx[0], N, s.time);
-    for (int j = 0; j <= N; ++j)
-      if (piston_holds(f, j, reach)) n.velocity[j] = piston_velocity(n.velocity[j], f, side.piston.speed(s.time));
+  // Held ends carry their boundary velocity (ADMPM eq. 5.24; a piston's while it pushes).
+  for (int f = 0; f < 2; ++f) {
+    double& v = f == 0 ? n.velocity.front() : n.velocity.back();
+    if (s.boundary.face[f].holds(0, f, v, s.time)) v = s.boundary.face[f].velocity(s.time, 0, f);
   }
   return n;
 }

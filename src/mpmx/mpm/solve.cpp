@@ -8,48 +8,6 @@ namespace mpmx::mpm {
 
 namespace {
 
-// Pistons (piston.hpp): the normal v^L of the nodes whose support reaches behind each
-// piston's face at t raised to its speed at t + dt where the material there moves slower. What the piston
-// adds, m (v^L - v^L free), and the force it takes on its nodes without mass (DDMP's
-// smoothed force reaches one node past the material), are tallied per line and summed
-// in line order (any thread count gives the same sums); its work is that impulse times
-// the piston's mean velocity over the step, as for a rigid wall. `tiny`: the mass below
-// which a node counts as empty (its v^L is zero before the piston's).
-template <int Dim>
-void hold_pistons(Grid<Dim>& g, const Boundaries& bc, double t, double dt, double tiny, Tallies& tally,
-                  int threads) {
-  for (int f = 0; f < 2 * Dim; ++f) {
-    const BoundarySide& side = bc.face[f];
-    if (side.type != BoundarySide::Type::piston) continue;
-    const int axis = f / 2;
-    const int reach = piston_reach(side.piston, f, g.dx[axis], g.cells[axis], t);
-    const double speed_L = side.piston.speed(t + dt), speed_mid = 0.5 * (side.piston.speed(t) + speed_L);
-    const std::size_t lines = g.lines();
-    std::vector<double> added(lines, 0.0);
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-    for (std::size_t l = 0; l < lines; ++l) {
-      const std::array<int, Dim> idx = g.line_first(l);
-      if (axis > 0 && !piston_holds(f, idx[axis], reach)) continue;
-      int lo = g.span_lo[l], hi = g.span_hi[l];
-      if (axis == 0 && f == 0) hi = std::min(hi, reach);
-      if (axis == 0 && f == 1) lo = std::max(lo, reach);
-      const std::size_t i0 = g.index(idx);
-      for (int x = lo; x <= hi; ++x) {
-        const std::size_t i = i0 + static_cast<std::size_t>(x);
-        double& vL = g.velocity_L[axis][i];
-        const double free = vL;
-        vL = piston_velocity(free, f, speed_L);
-        added[l] += g.mass[i] > tiny ? g.mass[i] * (vL - free) : -dt * g.force[axis][i];
-      }
-    }
-    const double n = f % 2 == 0 ? 1.0 : -1.0;
-    for (double a : added) {
-      tally.boundary_impulse[axis] += a;
-      tally.boundary_work += a * n * speed_mid;
-    }
-  }
-}
-
 // 1-D: one vectorised pass over the nodes (the fused path's solve).
 void solve_1d(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& tally) {
   const int N = g.cells[0];
@@ -77,18 +35,19 @@ void solve_1d(Grid<1>& g, const Boundaries& bc, double t, double dt, Tallies& ta
     v[i] = has ? vi : 0.0;
     vL[i] = has ? vi + dt * f[i] * r : 0.0;
   }
-  // Prescribed ends: v^n at t, v^L at t + dt. What they add is tallied.
-  auto hold = [&](std::size_t i, const BoundarySide& side) {
-    if (!side.prescribed()) return;
-    v[i] = side.velocity(t);
-    vL[i] = side.velocity(t + dt);
+  // Held ends (a prescribed velocity, or a piston while it pushes): v^n at t, v^L at
+  // t + dt. What they add is tallied.
+  auto hold = [&](std::size_t i, int face) {
+    const BoundarySide& side = bc.face[face];
+    if (!side.holds(0, face, vL[i], t + dt)) return;
+    v[i] = side.velocity(t, 0, face);
+    vL[i] = side.velocity(t + dt, 0, face);
     const double impulse = m[i] * (vL[i] - v[i]) - dt * f[i];
     tally.boundary_impulse[0] += impulse;
     tally.boundary_work += impulse * 0.5 * (vL[i] + v[i]);
   };
-  hold(i0, bc.left());
-  hold(i1, bc.right());
-  hold_pistons(g, bc, t, dt, tiny, tally, 1);
+  hold(i0, 0);
+  hold(i1, 1);
   if (force_abs > 0.0) tally.max_force_sum = std::max(tally.max_force_sum, std::abs(force_sum) / force_abs);
   tally.node_mass = mass_sum;
 }
@@ -151,14 +110,14 @@ void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies
         for (int a = 0; a < Dim; ++a) {
           const double vi = g.momentum[a][i] * r;
           double v = has ? vi : 0.0, vL = has ? vi + dt * g.force[a][i] * r : 0.0;
-          // A node on a face with a condition on component a; at edges and corners the
-          // first face that holds the component sets it.
+          // A node on a face with a condition on component a (a piston's while it
+          // pushes); at edges and corners the first face that holds the component sets it.
           for (int f = 0; on_face && f < 2 * Dim; ++f) {
             const int axis = f / 2;
             const bool on = (f % 2 == 0) ? idx[axis] == 0 : idx[axis] == g.cells[axis];
             const BoundarySide& side = bc.face[f];
-            if (!on || !side.holds(a, axis)) continue;
-            const double vn = side.velocity(t, a), vl = side.velocity(t + dt, a);
+            if (!on || !side.holds(a, f, vL, t + dt)) continue;
+            const double vn = side.velocity(t, a, f), vl = side.velocity(t + dt, a, f);
             // What the face adds to the material's momentum: m (v^L - v^n) - dt f.
             const double added = m * (vl - vn) - dt * g.force[a][i];
             if (has) {
@@ -178,7 +137,6 @@ void solve_grid(Grid<Dim>& g, const Boundaries& bc, double t, double dt, Tallies
       for (int a = 0; a < Dim; ++a) tally.boundary_impulse[a] += added_by_faces[l * kFace + a];
       tally.boundary_work += added_by_faces[l * kFace + Dim];
     }
-    hold_pistons(g, bc, t, dt, tiny, tally, threads);
     double fs = 0.0, fa = 0.0;
     for (int a = 0; a < Dim; ++a) fs += force_sum[a] * force_sum[a], fa += force_abs[a];
     if (fa > 0.0) tally.max_force_sum = std::max(tally.max_force_sum, std::sqrt(fs) / fa);

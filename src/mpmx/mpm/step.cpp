@@ -6,6 +6,7 @@
 
 #include "mpmx/mpm/mass_distribution.hpp"
 #include "mpmx/mpm/musl.hpp"
+#include "mpmx/mpm/piston_grid.hpp"
 #include "mpmx/mpm/points.hpp"
 #include "mpmx/mpm/shape/hat.hpp"
 #include "mpmx/mpm/solve.hpp"
@@ -115,7 +116,12 @@ void step_body(State<Dim>& s, double dt) {
 template <int Dim>
 void step(State<Dim>& s, double dt) {
   try {
+    // A piston carries the grid (piston_grid.hpp): the step's at t, and between steps
+    // where the outputs read it, at the new time.
+    const bool carried = has_piston(s.boundary);
+    if (carried) carry_grid(s.grid, s.boundary, s.time);
     step_body(s, dt);
+    if (carried) carry_grid(s.grid, s.boundary, s.time);
   } catch (const RunError& e) {
     // A point past the grid, a law's failure (a Mie-Gruneisen point past its Hugoniot's
     // limit, an MD box): thrown before the clock moves, so this step, from this time.

@@ -8,6 +8,7 @@
 
 #include "cli_util.hpp"
 #include "mpmx/app/mpm/deck.hpp"
+#include "mpmx/app/mpm/describe.hpp"
 #include "mpm_deck_test_util.hpp"
 #include "mpmx/core/error.hpp"
 
@@ -122,6 +123,21 @@ TEST(PistonDeck, PistonPastTheGridIsRefused) {
   EXPECT_HAS(e, "past its far side");
 }
 
+TEST(PistonDeck, HeldFaceAcrossFromAPistonIsRefused) {
+  // The piston carries the grid, and the face across from it with it.
+  const std::string e =
+      deck_error(replace(kPiston1d, "left = { type = \"piston\", velocity = 0.5 }",
+                         "left = { type = \"piston\", velocity = 0.5 }\nright = { type = \"fixed\" }"));
+  EXPECT_HAS(e, "boundary.right.type");
+  EXPECT_HAS(e, "must be free across from the piston on left");
+  const std::string two = deck_error(replace(kPlate2d, "[scheme]", R"([boundary]
+x_lower = { type = "piston", velocity = 0.5 }
+x_upper = { type = "piston", velocity = 0.5 }
+[scheme])"));
+  EXPECT_HAS(two, "boundary.x_lower.type");  // each is across from the other
+  EXPECT_HAS(two, "must be free across from the piston on x_upper");
+}
+
 TEST(PistonDeck, ItsSpeedCountsInTheCflCheck) {
   // dt = 0.015 is inside the CFL limit of the bar at rest (dx / c = 0.1 / 5.12 = 0.0195),
   // not inside dx / (c + 5) = 0.0099 with a piston at 5 km/s.
@@ -187,10 +203,44 @@ TEST(GaugeDeck, UnknownKeyIsRefused) {
   EXPECT_HAS(deck_error(replace(kPlate2d, "every = 10", "evry = 10")), "unknown key 'gauge");
 }
 
+// A velocity face that pushes into the material gets a note: a drive is a piston. One
+// that oscillates about rest (ADMPM's wave drive) or pushes no material gets none.
+TEST(PistonGaugeCheck, PushingVelocityFaceGetsANote) {
+  using mpmx::app::describe_pistons_and_gauges;
+  using mpmx::app::read_mpm_deck_text;
+  auto notes = [](const std::string& deck) {
+    std::string all;
+    for (const auto& line : describe_pistons_and_gauges(read_mpm_deck_text(deck))) all += line + "\n";
+    return all;
+  };
+  const std::string pushing = notes(replace(kPiston1d, "type = \"piston\", velocity = 0.5", "type = \"velocity\", value = 0.5"));
+  EXPECT_HAS(pushing, "note: boundary.left is a velocity face pushing into the material at 0.5");
+  EXPECT_HAS(pushing, "a drive is type = \"piston\"");
+  const std::string right = notes(replace(kPiston1d, "left = { type = \"piston\", velocity = 0.5 }",
+                                          "right = { type = \"velocity\", value = -0.5 }"));
+  EXPECT_HAS(right, "note: boundary.right is a velocity face pushing into the material at 0.5");
+  EXPECT_EQ(notes(replace(kPiston1d, "type = \"piston\", velocity = 0.5",
+                          "type = \"velocity\", amplitude = 0.01, omega = 10.0"))
+                .find("note:"),
+            std::string::npos);
+  EXPECT_EQ(notes(replace(kPiston1d, "type = \"piston\", velocity = 0.5", "type = \"velocity\", value = -0.5"))
+                .find("note:"),
+            std::string::npos);  // pulls
+  // 2-D: the flyer reaches x_lower, nothing reaches x_upper (the target ends at 9 of 12).
+  const std::string plate = R"([boundary]
+x_lower = { type = "velocity", value = [0.5, 0.0] }
+x_upper = { type = "velocity", value = [-0.5, 0.0] }
+[scheme])";
+  const std::string two = notes(replace(kPlate2d, "[scheme]", plate));
+  EXPECT_HAS(two, "note: boundary.x_lower is a velocity face pushing into the material at 0.5");
+  EXPECT_EQ(two.find("boundary.x_upper"), std::string::npos);
+}
+
 TEST(PistonGaugeCheck, CheckDescribesThePistonAndTheGauges) {
   const auto piston = mpmx::test::run_cli(std::string("check ") + MPMX_SOURCE_DIR + "/examples/C1_piston_elastic_1d.toml");
   EXPECT_EQ(piston.status, 0) << piston.output;
-  EXPECT_HAS(piston.output, "piston on left: moves at 0.5 into the grid; its face is 3 in at time.end");
+  EXPECT_HAS(piston.output,
+             "piston on left: moves at 0.5 into the grid; its face is 3 in at time.end, the grid carried with it");
   const auto gauges = mpmx::test::run_cli(std::string("check ") + MPMX_SOURCE_DIR + "/examples/C2_plate_impact_gauges.toml");
   EXPECT_EQ(gauges.status, 0) << gauges.output;
   EXPECT_HAS(gauges.output, "gauge target_mid: the material point nearest [4.5, 0.03]");

@@ -375,6 +375,20 @@ void read_boundary(Section& root, MpmConfig& c) {
       c.boundary.face[f] = read_side(b.optional_table(mpm::face_name(f)), dim,
                                      c.upper_all[f / 2] - c.lower_all[f / 2], c.end);
   }
+  // A piston carries the grid along its axis (mpm/piston_grid.hpp): the face across from
+  // it moves with the grid, so it holds nothing.
+  auto name = [&](int f) { return std::string(dim == 1 ? (f == 0 ? "left" : "right") : mpm::face_name(f)); };
+  for (int f = 0; f < 2 * dim; ++f) {
+    if (c.boundary.face[f].type != BoundarySide::Type::piston || c.boundary.face[f ^ 1].type == BoundarySide::Type::free)
+      continue;
+    b.optional_table(name(f ^ 1))
+        .check(false, "type",
+               fmt::format("must be free across from the piston on {}: the piston carries the grid with it, and this "
+                           "face with it. A piston against a held face is the wall problem seen from the piston: "
+                           "the piston's face fixed, the material sent at minus its speed ([initial] velocity), this "
+                           "face a velocity face at minus its speed",
+                           name(f)));
+  }
 }
 
 // [[gauge]]: a point's history (`at`, inside the material) or a body face's free-surface

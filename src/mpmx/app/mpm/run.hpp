@@ -1,6 +1,7 @@
 #pragma once
 // A whole continuum run: set-up, the step loop, records, comparison with the
 // reference, checkpoints, conservation figures, run.json and figures.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -68,6 +69,11 @@ struct RunResultOf {
   std::vector<GaugeTrace> gauges;
   mpm::State<Dim> state;                      // the final state
   double energy_error() const { return std::abs(kinetic_final - kinetic_initial + stress_work - boundary_work); }
+  // Its scale, the energy in play: the largest kinetic energy seen, or the boundary's
+  // work where larger. A piston's is: half of what it puts in is the bar's kinetic
+  // energy, half is stored behind the shock, where a bar sent onto a wall brings all of
+  // it as kinetic energy; over this scale the two runs' errors read the same.
+  double energy_scale() const { return std::max(max_kinetic, std::abs(boundary_work)); }
   double momentum_error() const {
     double e2 = 0.0;
     for (int a = 0; a < 3; ++a) {

@@ -1,5 +1,6 @@
 #include "mpmx/app/mpm/run_summary.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -38,7 +39,10 @@ void record_conservation(const RunResultOf<Dim>& r, io::RunRecord& rec) {
     const double e0 = r.kinetic_initial + r.stored_initial, e1 = r.kinetic_final + r.stored_final;
     rec.set("conservation.energy.total_initial", e0);
     rec.set("conservation.energy.total_final", e1);
-    rec.set("conservation.energy.total_relative_change", e0 != 0.0 ? (e1 - e0 - r.boundary_work) / e0 : 0.0);
+    // Over the initial total, or the energy in play where larger (a piston starts a
+    // bar at rest: all it has is the piston's work).
+    const double scale = std::max(std::abs(e0), r.energy_scale());
+    rec.set("conservation.energy.total_relative_change", scale > 0.0 ? (e1 - e0 - r.boundary_work) / scale : 0.0);
   }
   rec.set("conservation.momentum.relative_error", r.momentum_scale > 0 ? r.momentum_error() / r.momentum_scale : 0.0);
   rec.set("conservation.momentum.max_internal_force_sum", r.max_force_sum);
@@ -47,7 +51,7 @@ void record_conservation(const RunResultOf<Dim>& r, io::RunRecord& rec) {
   rec.set("conservation.energy.stress_work", r.stress_work);
   rec.set("conservation.energy.boundary_work", r.boundary_work);
   rec.set("conservation.energy.error", r.energy_error());
-  rec.set("conservation.energy.relative_error", r.max_kinetic > 0 ? r.energy_error() / r.max_kinetic : 0.0);
+  rec.set("conservation.energy.relative_error", r.energy_scale() > 0 ? r.energy_error() / r.energy_scale() : 0.0);
   if (std::isfinite(r.energy_growth)) rec.set("conservation.energy.growth", r.energy_growth);
   if (r.body_work != 0.0) rec.set("conservation.energy.body_work", r.body_work);
 }

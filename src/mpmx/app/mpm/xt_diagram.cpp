@@ -13,7 +13,9 @@ template <int Dim>
 XtDiagram<Dim>::XtDiagram(const MpmConfig& c, const mpm::Grid<Dim>& g)
     : every_(c.xt_every > 0 ? c.xt_every : std::max<std::int64_t>(1, c.steps() / 400)) {  // dt = "cfl": the first step's
   header_ = "time";
-  for (int j = 0; j < g.cells[0]; ++j) header_ += fmt::format(",{:.10g}", g.node_x(j) + 0.5 * g.dx[0]);
+  // The grid's cells where they were at t = 0: a piston carries the grid (piston_grid.hpp),
+  // the table's columns stay where they are.
+  for (int j = 0; j < g.cells[0]; ++j) header_ += fmt::format(",{:.10g}", g.rest_lower[0] + (j + 0.5) * g.dx[0]);
   header_ += "\n";
   sum_.assign(g.cells[0], 0.0);
   count_.assign(g.cells[0], 0.0);
@@ -28,7 +30,7 @@ void XtDiagram<Dim>::sample(const mpm::State<Dim>& s, Output& out) {
   std::fill(count_.begin(), count_.end(), 0.0);
   const int n = g.cells[0];
   for (std::size_t q = 0; q < p.size(); ++q) {  // in point order: the same sums on any thread count
-    const int j = static_cast<int>(std::floor((p.x[0][q] - g.lower[0]) * g.inv_dx[0]));
+    const int j = static_cast<int>(std::floor((p.x[0][q] - g.rest_lower[0]) * g.inv_dx[0]));
     if (j < 0 || j >= n) continue;
     sum_[j] += p.stress[0][q];
     count_[j] += 1.0;
