@@ -616,7 +616,8 @@ void check_time_step(Section& t, MpmConfig& c, double cfl_limit) {
     if (std::isfinite(limit) && !c.cfl_dt)
       t.check(c.dt <= limit, "dt",
               fmt::format("exceeds the CFL limit cfl_limit * dx / (c + v) = {} * {} / {} = {} (c the wave speed, v "
-                          "the fastest point's speed: a body's velocity plus |angular_velocity| x radius)",
+                          "the fastest point's speed: a body's velocity plus |angular_velocity| x radius, or a "
+                          "piston's or a velocity face's)",
                           cfl_limit, dx_min, cs_max, limit));
     // A count the run's step counter holds, before anything rounds it (1e300 / dt wrapped
     // to -9223372036854775808 steps); with dt = "cfl" the first step's dt gives its size.

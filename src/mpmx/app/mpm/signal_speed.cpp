@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mpmx/mpm/boundary_speed.hpp"
+
 namespace mpmx::app {
 
 using mpm::BoundarySide;
@@ -36,6 +38,7 @@ double initial_signal_speed(const MpmConfig& c) {
   for (int f = 0; f < 2 * dim; ++f)
     if (c.boundary.face[f].type == BoundarySide::Type::piston)
       for (double v : c.boundary.face[f].piston.speeds) vmax = std::max(vmax, std::abs(v));
+  vmax = std::max(vmax, mpm::boundary_speed(c.boundary, dim, 0.0, 0.0));  // a velocity face's
   return cs_max + vmax;
 }
 

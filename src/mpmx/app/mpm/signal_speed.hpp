@@ -2,8 +2,8 @@
 // The fastest signal of a deck's initial state, c + v: the largest wave speed of its laws
 // (a gas's over the initial pressure profile) plus the fastest speed a point has or the
 // boundary gives it (a body's velocity plus its spin times its radius; a piston's, any
-// speed of its table). The deck's CFL limit (a number dt) and the first step of
-// dt = "cfl" are taken from it.
+// speed of its table; a velocity face's). The deck's CFL limit (a number dt) and the first
+// step of dt = "cfl" are taken from it, as the run's steps are (mpm::stable_dt).
 #include "mpmx/app/mpm/config.hpp"
 
 namespace mpmx::app {
