@@ -262,10 +262,11 @@ void read_grid(Section& root, MpmConfig& c) {
   }
 }
 
-// [particles]: per cell along each axis, and whether they move.
+// [particles]: per cell along each axis, and whether they move (every key has a default:
+// the table may be left out).
 void read_particles(Section& root, MpmConfig& c) {
   const int dim = c.dim;
-  Section pt = root.table("particles");
+  Section pt = root.optional_table("particles");
   if (dim == 1 || !pt.has("per_cell") || pt.value_text("per_cell").find('[') == std::string::npos) {
     const int n = pt.integer_int("per_cell", 2, 1, 1'000'000);
     c.per_cell_all = {n, dim > 1 ? n : 1, dim > 2 ? n : 1};

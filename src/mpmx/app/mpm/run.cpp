@@ -116,6 +116,7 @@ class ContinuumRun {
     Progress progress(fmt::format("{} {}", c_.id, scheme_name(c_.scheme.scheme)), schedule_.steps,
                       o_.quiet || !ranks::root(), s_.step);
     t0_ = std::chrono::steady_clock::now();
+    first_step_ = s_.step;
     InterruptGuard guard(folder_.checkpoints);
     try {
       if (!o_.resume) {
@@ -346,6 +347,7 @@ class ContinuumRun {
   void finish() {
     r_.wall_seconds = wall();
     r_.steps = s_.step;
+    r_.steps_now = s_.step - first_step_;
     const material::Subscale* sub = s_.material->subscale();
     if (sub) r_.md_atom_steps = sub->steps();
     // The slowest rank's MD time over the mean (1 on one rank).
@@ -438,6 +440,7 @@ class ContinuumRun {
   std::string failure_;
   std::chrono::steady_clock::time_point t0_;
   double last_checkpoint_ = 0.0;
+  std::int64_t first_step_ = 0;  // where this invocation started
 };
 
 }  // namespace
@@ -462,6 +465,7 @@ RunSummary run_any(const MpmConfig& c, const RunOptions& o) {
   auto summary = [](const auto& r) {
     RunSummary s;
     s.steps = r.steps;
+    s.steps_now = r.steps_now;
     s.wall_seconds = r.wall_seconds;
     s.particles = r.state.particles.size();
     s.interrupted = r.interrupted;
