@@ -34,6 +34,8 @@ using io::Section;
 using mpm::BoundarySide;
 using mpm::Profile;
 
+constexpr std::size_t kMaxGaugeName = 100;  // gauge_<name>.csv stays well inside a file name's 255 bytes
+
 // The laws' work left until every key is read (material::Context::later), with the table
 // each was read from.
 using LaterWork = std::vector<std::pair<Section, std::function<void(Table&)>>>;
@@ -287,7 +289,8 @@ void read_bodies(Section& root, MpmConfig& c, const std::string& deck_dir, Later
       c.bodies.push_back(read_body(b, c, deck_dir, later, c.bodies.size() + 1));
       const std::string& name = c.bodies.back().name;  // what a gauge calls it: one body's
       for (std::size_t k = 0; !name.empty() && k + 1 < c.bodies.size(); ++k)
-        if (c.bodies[k].name == name) b.check(false, "name", fmt::format("body {} is called {} too", k + 1, name));
+        if (c.bodies[k].name == name)
+          b.check(false, "name", fmt::format("body {} is called {} too", k + 1, escape_controls(name)));
     }
   else if (root.has("body"))
     root.check(false, "body", "1-D decks fill the grid; [[body]] regions are for 2-D and 3-D");
@@ -412,8 +415,14 @@ void read_gauges(Section& root, MpmConfig& c) {
       return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
     });
     s.check(plain, "name", "names the file gauge_<name>.csv: letters, digits, _ and - only");
+    // A file name of more than 255 bytes is refused by the file system only when the run
+    // first writes it.
+    s.check(g.name.size() <= kMaxGaugeName, "name",
+            fmt::format("is {} characters long: at most {} (it names the file gauge_<name>.csv)", g.name.size(),
+                        kMaxGaugeName));
     for (const auto& other : c.gauges)
-      if (other.name == g.name) s.check(false, "name", fmt::format("another [[gauge]] is called {}", g.name));
+      if (other.name == g.name)
+        s.check(false, "name", fmt::format("another [[gauge]] is called {}", escape_controls(g.name)));
     g.every = s.integer("every", 1, 1, std::numeric_limits<std::int64_t>::max());
     g.kind = s.choice("type", {"point", "free_surface"}, "point") == "point" ? GaugeConfig::Kind::point
                                                                              : GaugeConfig::Kind::free_surface;
@@ -453,7 +462,8 @@ void read_gauges(Section& root, MpmConfig& c) {
         if (g.body < 0)
           s.check(false, "body",
                   names.empty() ? std::string("names a [[body]] by its name, and no body has one (name = \"...\")")
-                                : fmt::format("no [[body]] is called {}: the deck's are {}", body, fmt::join(names, ", ")));
+                                : fmt::format("no [[body]] is called {}: the deck's are {}", escape_controls(body),
+                                              escape_controls(fmt::format("{}", fmt::join(names, ", ")))));
       } else if (c.bodies.size() > 1) {
         s.check(false, "body", "a deck of several bodies says whose face it is: body = \"<its name>\"");
       }
