@@ -20,6 +20,7 @@
 #include "mpmx/app/mpm/materials.hpp"
 #include "mpmx/app/mpm/references.hpp"
 #include "mpmx/app/mpm/signal_speed.hpp"
+#include "mpmx/app/mpm/unit_slips.hpp"
 #include "mpmx/io/deck.hpp"
 #include "mpmx/md/lammps_dump.hpp"
 
@@ -182,8 +183,9 @@ std::array<double, 3> read_vector(Section& s, std::string_view key, int dim, std
   return r;
 }
 
-// `number`: the body's place among the deck's [[body]] tables, from 1 (messages).
-Body read_body(Section s, const MpmConfig& c, const std::string& deck_dir, LaterWork& later, std::size_t number) {
+// `index`: the body's place among the deck's [[body]] tables, from 0 (as run.json and the
+// points' `body` field number it).
+Body read_body(Section s, const MpmConfig& c, const std::string& deck_dir, LaterWork& later, std::size_t index) {
   const int dim = c.dim;
   Body b;
   const std::vector<std::string> shapes =
@@ -212,7 +214,7 @@ Body read_body(Section s, const MpmConfig& c, const std::string& deck_dir, Later
   }
   if (const std::string why = geometry_problem(b, dim); !why.empty())
     s.check(false, b.shape == Body::Shape::polygon ? "vertices" : b.shape == Body::Shape::box ? "upper" : "radius",
-            fmt::format("body {}: {}", number, why));
+            fmt::format("[[body]] {}: {}", index, why));
   if (!b.remove) b.velocity = read_vector(s, "velocity", dim, {}, false);
   else if (s.has("velocity")) s.check(false, "velocity", "a region that removes points has no velocity");
   if (s.has("angular_velocity")) {
@@ -286,11 +288,11 @@ void read_bodies(Section& root, MpmConfig& c, const std::string& deck_dir, Later
   const int dim = c.dim;
   if (dim > 1)
     for (auto& b : root.tables("body")) {
-      c.bodies.push_back(read_body(b, c, deck_dir, later, c.bodies.size() + 1));
+      c.bodies.push_back(read_body(b, c, deck_dir, later, c.bodies.size()));
       const std::string& name = c.bodies.back().name;  // what a gauge calls it: one body's
       for (std::size_t k = 0; !name.empty() && k + 1 < c.bodies.size(); ++k)
         if (c.bodies[k].name == name)
-          b.check(false, "name", fmt::format("body {} is called {} too", k + 1, escape_controls(name)));
+          b.check(false, "name", fmt::format("[[body]] {} is called {} too", k, escape_controls(name)));
     }
   else if (root.has("body"))
     root.check(false, "body", "1-D decks fill the grid; [[body]] regions are for 2-D and 3-D");
@@ -624,12 +626,16 @@ void check_time_step(Section& t, MpmConfig& c, double cfl_limit) {
     const double cs_max = initial_signal_speed(c);
     const double limit = cfl_limit * dx_min / cs_max;
     if (c.cfl_dt) c.dt = first_cfl_step(c);  // the first step's; later ones follow the state
-    if (std::isfinite(limit) && !c.cfl_dt)
-      t.check(c.dt <= limit, "dt",
+    if (std::isfinite(limit) && !c.cfl_dt && !(c.dt <= limit)) {
+      // A speed typed in the wrong unit is the usual cause: its hint goes with the error.
+      std::string hints;
+      for (const std::string& slip : velocity_slips(c)) hints += "; " + slip;
+      t.check(false, "dt",
               fmt::format("exceeds the CFL limit cfl_limit * dx / (c + v) = {} * {} / {} = {} (c the wave speed, v "
                           "the fastest point's speed: a body's velocity plus |angular_velocity| x radius, or a "
-                          "piston's or a velocity face's)",
-                          cfl_limit, dx_min, cs_max, limit));
+                          "piston's or a velocity face's){}",
+                          cfl_limit, dx_min, cs_max, limit, hints));
+    }
     // A count the run's step counter holds, before anything rounds it (1e300 / dt wrapped
     // to -9223372036854775808 steps); with dt = "cfl" the first step's dt gives its size.
     const double steps = c.end / c.dt;
