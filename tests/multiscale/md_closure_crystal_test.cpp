@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "mpmx/app/mpm/prepare.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/equilibrium.hpp"
 #include "mpmx/multiscale/md_closure.hpp"
@@ -87,12 +88,18 @@ TEST(MdClosureCrystal, NptPreparationSetsEveryBoxsLatticeConstant) {
   EXPECT_LT(std::abs(prep.pressure_gpa), 0.05);       // its mean pressure about zero
   EXPECT_NEAR(prep.temperature, 10.0, 2.0);
   EXPECT_EQ(multiscale::prepare_npt(pot, md, a0).lattice_constant, prep.lattice_constant);  // deterministic
-  // The deck's reading ran the same box, and the points carry its crystal's density.
-  ASSERT_TRUE(md.prepared);
-  EXPECT_EQ(md.prepared->lattice_constant, prep.lattice_constant);
+  // The deck's reading leaves the box to the run (check states it); prepared for the run,
+  // the law holds the same box's result and the points carry its crystal's density.
+  EXPECT_FALSE(md.prepared);
   const double rho0 = multiscale::md_closure_properties(md.potential, md.units, md.lattice).density;
-  EXPECT_NEAR(c.material.density, rho0 * std::pow(a0 / prep.lattice_constant, 3), 1e-12 * rho0);
-  EXPECT_LT(c.material.density, rho0);
+  EXPECT_EQ(c.material.density, rho0);
+  const app::MpmConfig ready = app::prepared_for_run(c);
+  const auto ready_md = test::closure_config(ready);
+  ASSERT_TRUE(ready_md.prepared);
+  EXPECT_EQ(ready_md.prepared->lattice_constant, prep.lattice_constant);
+  EXPECT_NEAR(ready.material.density, rho0 * std::pow(a0 / prep.lattice_constant, 3), 1e-12 * rho0);
+  EXPECT_LT(ready.material.density, rho0);
+  EXPECT_FALSE(ready.material.spec->prepared());  // nothing left to do
 
   app::RunOptions o;
   o.quiet = true;
@@ -103,9 +110,20 @@ TEST(MdClosureCrystal, NptPreparationSetsEveryBoxsLatticeConstant) {
   EXPECT_EQ(figure(one, "md.lattice_constant_A"), prep.lattice_constant);
   EXPECT_EQ(figure(one, "md.lattice_constant_0K_A"), a0);
   EXPECT_EQ(figure(one, "md.prepare.pressure_GPa"), prep.pressure_gpa);
-  EXPECT_NEAR(figure(one, "md.density"), c.material.density, 1e-14 * c.material.density);
+  EXPECT_NEAR(figure(one, "md.density"), ready.material.density, 1e-14 * ready.material.density);
   const std::string json = test::read_file(o.out_dir + "/run.json");
   EXPECT_NE(json.find("\"lattice_constant_0K_A\""), std::string::npos);
+  // The run's own preparation is the one the deck's reading did before: the same points
+  // to the bit as a run of the deck prepared beforehand.
+  o.out_dir = test::scratch_dir("npt_ready");
+  const auto pre = app::run_mpm(ready, o);
+  ASSERT_EQ(one.state.particles.size(), pre.state.particles.size());
+  for (std::size_t q = 0; q < one.state.particles.size(); ++q) {
+    EXPECT_EQ(one.state.particles.mass[q], pre.state.particles.mass[q]) << q;
+    EXPECT_EQ(one.state.particles.stress[0][q], pre.state.particles.stress[0][q]) << q;
+  }
+  EXPECT_EQ(test::read_file(o.out_dir + "/particles.csv"),
+            test::read_file((test::scratch_root() / "npt_whole" / "particles.csv").string()));
   o.threads = 2;
   o.out_dir = test::scratch_dir("npt_two");
   const auto two = app::run_mpm(c, o);
@@ -162,7 +180,7 @@ TEST(MdClosureCrystal, DeckKeysAreChecked) {
   expect_ta_deck_error([](toml::table& m) { m.insert_or_assign("prepare", "nvt"); }, "material.md.prepare", "npt");
 }
 
-// `mpmx check` names the boxes' crystal and says they are prepared by NPT first.
+// `mpmx check` names the boxes' crystal and says the run prepares them by NPT first.
 TEST(MdClosureCrystal, CheckSaysTheCrystalAndTheNptPreparation) {
   const std::string cmd = std::string(MPMX_BINARY) + " check " + test::example("H5_ta_110_small.toml") + " 2>&1";
   std::string out;
@@ -172,7 +190,9 @@ TEST(MdClosureCrystal, CheckSaysTheCrystalAndTheNptPreparation) {
     pclose(p);
   }
   EXPECT_NE(out.find("3 tiles of bcc (108 atoms), x [1 1 0], y [-1 1 0], z [0 0 1]"), std::string::npos) << out;
-  EXPECT_NE(out.find("prepared by NPT: one box at 10 K and 0 GPa for 10000 steps"), std::string::npos) << out;
+  EXPECT_NE(out.find("prepare: one box by NPT at 10 K and 0 GPa for 10000 steps when the run starts"),
+            std::string::npos)
+      << out;
 }
 
 }  // namespace

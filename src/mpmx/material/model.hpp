@@ -35,6 +35,11 @@ struct Context {
   // The crystal of the potential that sub-table `key` of `table` describes (its problems
   // recorded against them; nullopt then). Empty where no MD engine is wired in.
   std::function<std::optional<Crystal>(Table& table, std::string_view key)> crystal_of;
+  // Takes work a reader leaves until every key of the deck is read (md_closure's crystal
+  // of its potential: many crystals built and relaxed), so that a deck's range errors come
+  // at once, before it; the work gets the reader's table again to record its problems in.
+  // Empty: the reader does the work at once.
+  std::function<void(std::function<void(Table&)>)> later = {};
 };
 
 // The cost a law adds to every point beyond the continuum's own (md_closure: its MD box).
@@ -44,6 +49,7 @@ struct PointCost {
   double atoms = 0;          // atoms per point (0: no model inside the points)
   double steps_per_step = 0; // its steps per continuum step
   double setup_steps = 0;    // its steps before the first continuum step (relaxation)
+  double prepare_atom_steps = 0;  // its work once before the points are built (Model::prepared)
   std::string size_key;      // the deck keys that size it
   // Its steps a second on one core, timed on this machine when the cost was asked for
   // (0: not measured; the budget then takes md::kMdAtomStepsPerSecond).
@@ -79,8 +85,15 @@ class Model {
   virtual bool per_body() const { return true; }
   // Why a continuum step of dt does not suit the law ("" when it does).
   virtual std::string time_step_problem(double /*dt*/) const { return ""; }
-  // What each point costs beyond the continuum's arrays, for a continuum step of dt.
+  // What each point costs beyond the continuum's arrays, for a continuum step of dt
+  // (md_closure times one of its boxes for it: not for the deck's reading).
   virtual PointCost point_cost(double /*dt*/) const { return {}; }
+  // Atoms of the model inside each point (0: none), without timing anything.
+  virtual double atoms_per_point() const { return 0; }
+  // The law after the work a run does before its points are built (md_closure's NPT box,
+  // prepare = "npt"), whose density the points take; nullptr when there is none. Reading
+  // a deck leaves that work to the run: `check` states it (check_notes), `run` does it.
+  virtual std::shared_ptr<const Model> prepared() const { return nullptr; }
   // A line to show before the points are built, when building them takes a while.
   virtual std::string build_note() const { return ""; }
   // What `mpmx check` says of the law beyond the deck's figures (none by default).

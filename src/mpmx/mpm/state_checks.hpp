@@ -9,7 +9,8 @@ namespace mpmx::mpm {
 template <int Dim>
 void check_finite(const State<Dim>& s);
 
-// cfl x the smallest cell side / max over points of (sound speed + speed).
+// cfl x the smallest cell side / max over points of (sound speed + speed), a piston's or
+// a velocity face's speed over the step among the speeds (mpm/boundary_speed.hpp).
 template <int Dim>
 double stable_dt(const State<Dim>& s, double cfl);
 

@@ -99,7 +99,7 @@ int MdClosureConfig::atoms_per_point() const {
   if (lattice.plain_fcc()) return 4 * cells * cells * cells;
   particles::LatticeSpec unit = lattice;
   unit.constant = 1.0;  // the tile's atoms do not depend on the constant
-  return static_cast<int>(particles::lattice_tile(unit).atoms) * cells * cells * cells;
+  return static_cast<int>(particles::lattice_tile_atoms(unit)) * cells * cells * cells;
 }
 
 PreparedLattice prepare_npt(const md::Potential& pot, const MdClosureConfig& c, double a0) {

@@ -57,6 +57,8 @@ material::PointCost MdClosureModel::point_cost(double dt) const {
   c.atoms = md.atoms_per_point();
   c.steps_per_step = dt > 0 && md.dt > 0 ? std::max(1.0, dt / md.dt) : 1.0;
   c.setup_steps = static_cast<double>(md.relax_steps);
+  if (md.prepare == BoxPrepare::npt && !md.prepared)  // the NPT box the run starts with: one box
+    c.prepare_atom_steps = static_cast<double>(md.atoms_per_point()) * static_cast<double>(md.prepare_steps);
   c.size_key = "material.md.cells and grid.cells";
   c.atom_steps_per_second = measured_rate();
   return c;
@@ -99,11 +101,27 @@ std::vector<std::string> MdClosureModel::check_notes() const {
       fmt::join(o[1], " "), fmt::join(o[2], " "), a0)};
   if (md.prepare == BoxPrepare::npt && md.prepared)
     r.push_back(fmt::format("prepared by NPT: one box at {} K and 0 GPa for {} steps (Nose-Hoover, Tdamp 0.1 ps, "
-                            "isotropic Pdamp 1 ps), just now: every box is built at its mean lattice constant over "
+                            "isotropic Pdamp 1 ps): every box is built at its mean lattice constant over "
                             "the second half, {:.6f} A (mean {:.4f} GPa, {:.2f} K), and the points take that "
                             "crystal's density, {:.6g} (run.json's md.lattice_constant_A, md.density)",
                             md.temperature, md.prepare_steps, md.prepared->lattice_constant,
                             md.prepared->pressure_gpa, md.prepared->temperature, rho));
+  else if (md.prepare == BoxPrepare::npt)
+    r.push_back(fmt::format("prepare: one box by NPT at {} K and 0 GPa for {} steps when the run starts (Nose-Hoover, "
+                            "Tdamp 0.1 ps, isotropic Pdamp 1 ps; {:.3g} atom-steps): every box is built at its mean "
+                            "lattice constant over the second half, and the points take that crystal's density "
+                            "(run.json's md.lattice_constant_A, md.density), a little below the 0 K crystal's {:.6g}",
+                            md.temperature, md.prepare_steps,
+                            static_cast<double>(md.atoms_per_point()) * static_cast<double>(md.prepare_steps), rho));
+  return r;
+}
+
+std::shared_ptr<const Model> MdClosureModel::prepared() const {
+  if (md.prepare != BoxPrepare::npt || md.prepared || !(md.temperature > 0) || !md::complete(md.potential))
+    return nullptr;
+  auto r = std::make_shared<MdClosureModel>(*this);
+  r->md.prepared = prepare_npt(md::Potential(md.potential), md, a0);
+  r->rho *= std::pow(a0 / r->md.prepared->lattice_constant, 3);
   return r;
 }
 
@@ -129,13 +147,15 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
           "b2 needs two elements on one lattice; a closure's box is of one element (use fcc, bcc or hcp)");
   if (md.lattice.style == particles::LatticeStyle::b2) md.lattice.style = particles::LatticeStyle::fcc;
   md.cells = s.integer_int("cells", 4, 1, 20);  // fcc along the axes: 4 x cells^3 atoms per point
+  // The box's atoms counted from the orientation before anything is built (a tile past
+  // particles::kMaxTileAtoms is an orientation problem, said against `orient`).
   if (!md.lattice.plain_fcc() && particles::orient_problem(md.lattice).empty()) {
-    particles::LatticeSpec unit = md.lattice;
-    unit.constant = 1.0;
-    const double atoms = static_cast<double>(particles::lattice_tile(unit).atoms) * md.cells * md.cells * md.cells;
+    const double tile = particles::lattice_tile_atoms(md.lattice);
+    const double atoms = tile * md.cells * md.cells * md.cells;
     s.check(atoms <= kMaxAtomsPerPoint, "cells",
-            fmt::format("gives {:.0f} atoms per point (a tile of this orientation holds {}); at most {} are allowed",
-                        atoms, particles::lattice_tile(unit).atoms, kMaxAtomsPerPoint));
+            fmt::format("gives {:.0f} atoms per point (a tile of this orientation holds {:.0f}); at most {:.0f} are "
+                        "allowed",
+                        atoms, tile, kMaxAtomsPerPoint));
     if (!(atoms <= kMaxAtomsPerPoint)) md.lattice = particles::LatticeSpec{};
   } else if (!md.lattice.plain_fcc()) {
     md.lattice = particles::LatticeSpec{};  // the orientation's problem is said; read on with fcc
@@ -168,25 +188,25 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   share.non_negative("tolerance", md.share.tolerance);
   md.share.audit = share.integer_int("audit", md.share.audit, 0, 1000);
   md.share.seed = md.seed;
-  if (md::complete(md.potential)) {
+  // The crystal's constants from the potential, once every key of the deck is read (the
+  // reader's `later`). prepare = npt's NPT box is the run's to run (prepared()), not the
+  // reading's: a check states it, and a large prepare_steps holds up no check.
+  auto crystal = [r](Table& table) {
+    if (!md::complete(r->md.potential)) return;  // read_potential said why
     try {
-      const auto props = md_closure_properties(md.potential, md.units, md.lattice);
+      const auto props = md_closure_properties(r->md.potential, r->md.units, r->md.lattice);
       r->rho = props.density;
       r->c11 = props.modulus;
       r->a0 = props.equilibrium.lattice_constant;
-      // prepare = npt: the one NPT box runs here, so that the points carry the prepared
-      // crystal's density (the same numbers on every rank and at every reading).
-      if (md.prepare == BoxPrepare::npt && md.temperature > 0) {
-        md.prepared = prepare_npt(md::Potential(md.potential), md, r->a0);
-        r->rho *= std::pow(r->a0 / md.prepared->lattice_constant, 3);
-      }
       // its atoms per A^3 (the budget takes another crystal as the fcc box of its atoms)
-      r->number_density = static_cast<double>(md.atoms_per_point()) / box_volume(md, r->a0);
+      r->number_density = static_cast<double>(r->md.atoms_per_point()) / box_volume(r->md, r->a0);
       r->cutoff = props.cutoff;
     } catch (const std::exception& e) {
-      m.check(false, "potential", e.what());
+      table.check(false, "potential", e.what());
     }
-  }
+  };
+  if (ctx.later) ctx.later(crystal);
+  else crystal(m);
   return r;
 }
 

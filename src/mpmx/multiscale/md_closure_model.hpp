@@ -31,8 +31,12 @@ struct MdClosureModel final : material::Model {
   // a box being advanced are per thread (scratch_bytes).
   material::PointCost point_cost(double dt) const override;
   double measured_rate() const;
+  double atoms_per_point() const override { return md.atoms_per_point(); }
+  // prepare = npt: the law with the NPT box run (md.prepared) and the points' density that
+  // crystal's. The deck's reading leaves it to the run, before the points' boxes.
+  std::shared_ptr<const material::Model> prepared() const override;
   std::string build_note() const override;
-  // The boxes' crystal and, with prepare = npt, the NPT run before the points' boxes.
+  // The boxes' crystal and, with prepare = npt, the NPT run the run starts with.
   std::vector<std::string> check_notes() const override;
   std::unique_ptr<material::Material<1>> make1() const override;
   std::unique_ptr<material::Material<2>> make2() const override;

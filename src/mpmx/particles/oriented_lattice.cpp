@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <numeric>
 #include <tuple>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -69,6 +70,18 @@ V3 edge_translation(const std::array<int, 3>& d, const Cell& cell) {
   return {2 * half[0], 2 * half[1], 2 * half[2]};
 }
 
+// The tile's three edges in fractions of the cell, and the cells its volume holds (the
+// edges are orthogonal: their determinant).
+std::array<V3, 3> tile_edges(const LatticeSpec& spec, const Cell& cell) {
+  return {edge_translation(spec.orient[0], cell), edge_translation(spec.orient[1], cell),
+          edge_translation(spec.orient[2], cell)};
+}
+double cells_in(const std::array<V3, 3>& t) {
+  return std::abs(t[0][0] * (t[1][1] * t[2][2] - t[1][2] * t[2][1]) -
+                  t[0][1] * (t[1][0] * t[2][2] - t[1][2] * t[2][0]) +
+                  t[0][2] * (t[1][0] * t[2][1] - t[1][1] * t[2][0]));
+}
+
 }  // namespace
 
 LatticeStyle lattice_style(const std::string& name) {
@@ -112,7 +125,18 @@ std::string orient_problem(const LatticeSpec& spec) {
   if (det < 0)
     return fmt::format("{} x {} is opposite to {}: the set is left-handed (reverse one direction)", row_text(o[0]),
                        row_text(o[1]), row_text(o[2]));
+  if (const double atoms = lattice_tile_atoms(spec); !(atoms <= static_cast<double>(kMaxTileAtoms)))
+    return fmt::format("{}, {} and {} repeat in a periodic tile of {:.0f} atoms, more than the {} a tile may hold "
+                       "(smaller Miller indices tile a smaller box)",
+                       row_text(o[0]), row_text(o[1]), row_text(o[2]), atoms, kMaxTileAtoms);
   return {};
+}
+
+double lattice_tile_atoms(const LatticeSpec& spec) {
+  for (const auto& d : spec.orient)
+    if (d == std::array<int, 3>{0, 0, 0}) return 0.0;
+  const Cell cell = conventional_cell(spec.style);
+  return std::round(cells_in(tile_edges(spec, cell)) * static_cast<double>(cell.sites.size()));
 }
 
 double nearest_neighbour_ratio(const LatticeSpec& spec) {
@@ -132,19 +156,15 @@ LatticeTile lattice_tile(const LatticeSpec& spec) {
                                  spec.constant, spec.c_over_a));
   const Cell cell = conventional_cell(spec.style);
   const V3 L = cell_lengths(spec);
-  V3 t[3];  // the tile's edges in fractions of the cell
+  const std::array<V3, 3> t = tile_edges(spec, cell);  // in fractions of the cell
   LatticeTile tile;
   for (int d = 0; d < 3; ++d) {
-    t[d] = edge_translation(spec.orient[d], cell);
     double sq = 0;
     for (int k = 0; k < 3; ++k) sq += t[d][k] * L[k] * t[d][k] * L[k];
     tile.length[d] = std::sqrt(sq);
   }
-  // Cells the tile's volume holds, times the sites of each (the edges are orthogonal).
-  const double det = t[0][0] * (t[1][1] * t[2][2] - t[1][2] * t[2][1]) -
-                     t[0][1] * (t[1][0] * t[2][2] - t[1][2] * t[2][0]) +
-                     t[0][2] * (t[1][0] * t[2][1] - t[1][1] * t[2][0]);
-  tile.atoms = std::llround(std::abs(det) * static_cast<double>(cell.sites.size()));
+  // Cells the tile's volume holds, times the sites of each (orient_problem bounds it).
+  tile.atoms = std::llround(lattice_tile_atoms(spec));
   // Every site of the cells that overlap the tile, kept where its tile coordinates lie in
   // [0, 1); a coordinate within 1e-9 of a whole number is that number, so that a site on
   // a face is kept on one side only.
@@ -169,10 +189,32 @@ LatticeTile lattice_tile(const LatticeSpec& spec) {
     int kind;
   };
   std::vector<Site> found;
+  found.reserve(static_cast<std::size_t>(tile.atoms));
+  // A long skewed tile's bounding box holds thousands of times the tile's cells: along the
+  // third cell axis only the cells whose sites can lie in the tile are visited (each tile
+  // coordinate is linear in k; a cell's margin each side covers the rounding).
+  auto k_range = [&](double i, double j, const V3& b) {
+    int k0 = lo[2], k1 = hi[2];
+    for (int d = 0; d < 3 && k0 <= k1; ++d) {
+      const double base = ((i + b[0]) * L[0] * t[d][0] * L[0] + (j + b[1]) * L[1] * t[d][1] * L[1] +
+                           b[2] * L[2] * t[d][2] * L[2]) / tt[d];
+      const double slope = L[2] * t[d][2] * L[2] / tt[d];
+      if (slope == 0) {
+        if (base < -1e-6 || base > 1 + 1e-6) k1 = k0 - 1;
+        continue;
+      }
+      double a = -base / slope, e = (1 - base) / slope;
+      if (a > e) std::swap(a, e);
+      k0 = std::max(k0, static_cast<int>(std::clamp(std::floor(a) - 1, double(lo[2]), double(hi[2]) + 1)));
+      k1 = std::min(k1, static_cast<int>(std::clamp(std::ceil(e) + 1, double(lo[2]) - 1, double(hi[2]))));
+    }
+    return std::pair<int, int>{k0, k1};
+  };
   for (int i = lo[0]; i <= hi[0]; ++i)
     for (int j = lo[1]; j <= hi[1]; ++j)
-      for (int k = lo[2]; k <= hi[2]; ++k)
-        for (std::size_t site = 0; site < cell.sites.size(); ++site) {
+      for (std::size_t site = 0; site < cell.sites.size(); ++site) {
+        const auto [k0, k1] = k_range(i, j, cell.sites[site]);
+        for (int k = k0; k <= k1; ++k) {
           const V3& b = cell.sites[site];
           const V3 p = {i + b[0], j + b[1], k + b[2]};
           V3 f;
@@ -186,6 +228,7 @@ LatticeTile lattice_tile(const LatticeSpec& spec) {
           }
           if (inside) found.push_back({f, cell.kinds.empty() ? 0 : cell.kinds[site]});
         }
+      }
   std::sort(found.begin(), found.end(), [](const Site& u, const Site& v) {
     return std::tie(u.f[2], u.f[1], u.f[0]) < std::tie(v.f[2], v.f[1], v.f[0]);
   });

@@ -38,9 +38,20 @@ struct LatticeSpec {
 LatticeStyle lattice_style(const std::string& name);  // "fcc", "bcc", "hcp", "b2"
 const char* lattice_name(LatticeStyle s);
 
+// The most atoms a periodic tile may hold. Large Miller indices make huge tiles ([1,1,1000]
+// with its partners holds about 1e9 atoms): a tile past a material point's largest box
+// is no orientation anyone means, and building it would take the machine's memory.
+inline constexpr std::int64_t kMaxTileAtoms = 1'000'000;
+
 // "" when the orientation tiles a periodic box; else why not (a zero vector, vectors not
-// orthogonal, a left-handed set, an hcp direction off the cell's axes), naming the vectors.
+// orthogonal, a left-handed set, an hcp direction off the cell's axes, a tile of more than
+// kMaxTileAtoms atoms), naming the vectors.
 std::string orient_problem(const LatticeSpec& spec);
+
+// The atoms of the orientation's periodic tile, from its edges alone (nothing is built):
+// the tile's volume over the volume per atom. The orientation must be orthogonal and
+// nonzero (orient_problem's first checks); the count does not depend on the constant.
+double lattice_tile_atoms(const LatticeSpec& spec);
 
 // The smallest periodic box of the oriented crystal: edge lengths (Angstrom) and atoms.
 struct LatticeTile {
@@ -52,7 +63,8 @@ struct LatticeTile {
   std::vector<int> kinds;
 };
 
-// Throws InputError when orient_problem is not "" or the constant is not positive.
+// Throws InputError when orient_problem is not "" (a tile past kMaxTileAtoms among its
+// reasons: refused before anything is allocated) or the constant is not positive.
 LatticeTile lattice_tile(const LatticeSpec& spec);
 
 // The nearest-neighbour distance in units of a: 1/sqrt 2 (fcc), sqrt 3 / 2 (bcc), and

@@ -187,7 +187,7 @@ TEST(GaugeDeck, UnknownBodyIsRefusedWithTheNames) {
 }
 
 TEST(GaugeDeck, BodyNamesAreUnique) {
-  EXPECT_HAS(deck_error(replace(kPlate2d, "name = \"target\"", "name = \"flyer\"")), "body 1 is called flyer too");
+  EXPECT_HAS(deck_error(replace(kPlate2d, "name = \"target\"", "name = \"flyer\"")), "[[body]] 0 is called flyer too");
 }
 
 TEST(GaugeDeck, SeveralBodiesNeedTheBodyNamed) {

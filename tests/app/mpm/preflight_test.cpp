@@ -55,13 +55,13 @@ std::string mpm_refusal(const std::string& text, std::uint64_t memory = 0) {
 
 TEST(MpmPreflight, PolygonOfZeroAreaIsRefused) {
   EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"polygon\"\nvertices = [0.1, 0.1, 0.5, 0.5, 0.9, 0.9]\n"),
-             "body 1: polygon has zero area");
+             "[[body]] 0: polygon has zero area");
 }
 
 TEST(MpmPreflight, SelfCrossingPolygonNamesItsEdges) {
   const std::string e = mpm_refusal(k2d + "[[body]]\nshape = \"polygon\"\n"
                                           "vertices = [0.1, 0.1, 0.9, 0.9, 0.9, 0.1, 0.1, 0.9]\n");
-  EXPECT_HAS(e, "body 1: polygon edges 1 (0.1, 0.1)-(0.9, 0.9) and 3 (0.9, 0.1)-(0.1, 0.9) cross");
+  EXPECT_HAS(e, "[[body]] 0: polygon edges 1 (0.1, 0.1)-(0.9, 0.9) and 3 (0.9, 0.1)-(0.1, 0.9) cross");
   // A simple one with a notch (concave) is fine.
   EXPECT_EQ(mpm_refusal(k2d + "[[body]]\nshape = \"polygon\"\n"
                               "vertices = [0.1, 0.1, 0.9, 0.1, 0.9, 0.9, 0.5, 0.4, 0.1, 0.9]\n"),
@@ -70,9 +70,9 @@ TEST(MpmPreflight, SelfCrossingPolygonNamesItsEdges) {
 
 TEST(MpmPreflight, OverflowingCoordinatesAreRefused) {
   EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"polygon\"\nvertices = [0.0, 0.0, 1e308, 0.0, 0.0, 1e308]\n"),
-             "body 1: 1e+308 is beyond 1e+100 in magnitude");
+             "[[body]] 0: 1e+308 is beyond 1e+100 in magnitude");
   EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"circle\"\ncenter = [0.5, 0.5]\nradius = 1e200\n"),
-             "body 1: 1e+200 is beyond");
+             "[[body]] 0: 1e+200 is beyond");
   EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [-1e300, 0.0]\nupper = [1e300, 1.0]\n"), "beyond");
   std::string wide = k2d;
   wide.replace(wide.find("lower = [0.0, 0.0]"), 18, "lower = [-1.7e308, 0.0]");
@@ -82,19 +82,19 @@ TEST(MpmPreflight, OverflowingCoordinatesAreRefused) {
 
 TEST(MpmPreflight, BodiesThatPlaceNoPointAreNamed) {
   EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [5.0, 5.0]\nupper = [6.0, 6.0]\n"),
-             "body 1: holds no point: it lies wholly off the grid");
+             "[[body]] 0: holds no point: it lies wholly off the grid");
   EXPECT_HAS(mpm_refusal(k3d + "[[body]]\nshape = \"sphere\"\ncenter = [5.0, 5.0, 5.0]\nradius = 0.5\n"),
-             "body 1: holds no point: it lies wholly off the grid");
+             "[[body]] 0: holds no point: it lies wholly off the grid");
   EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"circle\"\ncenter = [0.5, 0.5]\nradius = 0.01\n"),
-             "body 1: holds no point: it lies between the grid's points");
+             "[[body]] 0: holds no point: it lies between the grid's points");
   EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [0.0, 0.0]\nupper = [1.0, 1.0]\n"
                                "[[body]]\nshape = \"box\"\nremove = true\nlower = [-1.0, -1.0]\nupper = [2.0, 2.0]\n"),
-             "body 1: places no point: each of the 400 points it holds is removed");
+             "[[body]] 0: places no point: each of the 400 points it holds is removed");
   EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"box\"\nremove = true\nlower = [0.2, 0.2]\nupper = [0.4, 0.4]\n"),
-             "body 1: removes points, but no body adds any");
+             "[[body]] 0: removes points, but no body adds any");
   EXPECT_HAS(mpm_refusal(k2d + "[[body]]\nshape = \"box\"\nlower = [0.0, 0.0]\nupper = [0.5, 1.0]\n"
                                "[[body]]\nshape = \"box\"\nremove = true\nlower = [0.7, 0.2]\nupper = [0.9, 0.4]\n"),
-             "body 2: removes no point: it overlaps no adding body");
+             "[[body]] 1: removes no point: it overlaps no adding body");
 }
 
 TEST(MpmPreflight, OverlappingBodiesOfDifferentMotionAreRefused) {
@@ -103,7 +103,7 @@ TEST(MpmPreflight, OverlappingBodiesOfDifferentMotionAreRefused) {
   std::string moving = two;
   moving.replace(moving.find('V'), 1, "0.1");
   EXPECT_HAS(mpm_refusal(moving),
-             "bodies 1 and 2 overlap (16 points lie in both) with different velocities or materials");
+             "[[body]] 0 and [[body]] 1 overlap (16 points lie in both) with different velocities or materials");
   std::string same = two;
   same.replace(same.find('V'), 1, "0.0");
   EXPECT_EQ(mpm_refusal(same), "");  // one solid given as two boxes
@@ -192,11 +192,11 @@ TEST(MpmPreflight, CheckAndRunAgree) {
                                       k2d + "[[body]]\nshape = \"box\"\nlower = [5.0, 5.0]\nupper = [6.0, 6.0]\n");
   const auto check = test::run_cli("check " + bad.string());
   EXPECT_EQ(check.status, 2) << check.output;
-  EXPECT_HAS(check.output, "body 1: holds no point");
+  EXPECT_HAS(check.output, "[[body]] 0: holds no point");
   const auto out = test::scratch_root() / "preflight_off_grid_out";
   const auto run = test::run_cli("run " + bad.string() + " --quiet --no-plot --out " + out.string());
   EXPECT_EQ(run.status, 2) << run.output;
-  EXPECT_HAS(run.output, "body 1: holds no point");
+  EXPECT_HAS(run.output, "[[body]] 0: holds no point");
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

@@ -204,7 +204,7 @@ void check_bodies(const MpmConfig& c) {
   std::vector<std::string> errors;
   const std::string where = c.deck_path.empty() ? "deck" : c.deck_path;
   auto say = [&](std::size_t b, const std::string& what) {
-    errors.push_back(fmt::format("{}: body {}: {}", where, b + 1, what));
+    errors.push_back(fmt::format("{}: [[body]] {}: {}", where, b, what));  // from 0, as run.json numbers them
   };
   const bool any_adds = std::any_of(c.bodies.begin(), c.bodies.end(), [](const Body& b) { return !b.remove; });
   for (std::size_t b = 0; b < nb; ++b) {
@@ -234,9 +234,9 @@ void check_bodies(const MpmConfig& c) {
   }
   for (const auto& [pair, n] : shared)
     errors.push_back(fmt::format(
-        "{}: bodies {} and {} overlap ({} points lie in both) with different velocities or materials: the points "
-        "would take body {}'s; make the bodies disjoint",
-        where, pair.first + 1, pair.second + 1, n, pair.first + 1));
+        "{}: [[body]] {} and [[body]] {} overlap ({} points lie in both) with different velocities or materials: "
+        "the points would take [[body]] {}'s; make the bodies disjoint",
+        where, pair.first, pair.second, n, pair.first));
   if (errors.empty() && kept == 0) errors.push_back(fmt::format("{}: the bodies place no material point", where));
   if (errors.empty()) return;
   std::string all;

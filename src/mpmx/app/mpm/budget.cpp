@@ -117,6 +117,11 @@ MpmBudget estimate_mpm(const MpmConfig& c, int ranks) {
     if (const double rate = measure_point_steps_per_second(c, l0.points, l0.subpoints, l0.nodes); rate > 0)
       b = estimate_levels(c, ranks, cost, rate);
   }
+  // A law's work before the points are built (md_closure's NPT box): once, on every rank.
+  if (cost.prepare_atom_steps > 0) {
+    b.md_atom_steps += cost.prepare_atom_steps;
+    b.seconds += cost.prepare_atom_steps / std::max(b.md_rate, 1.0);
+  }
   return b;
 }
 

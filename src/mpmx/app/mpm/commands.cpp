@@ -63,9 +63,13 @@ void check_continuum(const std::string& deck, bool force, int ranks) {
   } else {
     std::vector<int> cells(cfg.cells_all.begin(), cfg.cells_all.begin() + cfg.dim),
         per(cfg.per_cell_all.begin(), cfg.per_cell_all.begin() + cfg.dim);
-    fmt::print("{}: ok (case {}, {}-D, {} cells, {} points per cell, {} bodies, {} steps, scheme {}, material {})\n",
-               deck, cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), cfg.bodies.size(),
-               steps, mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
+    const std::size_t nb = cfg.bodies.size();
+    const std::string bodies = nb == 0   ? std::string("no [[body]]: the grid filled")
+                               : nb == 1 ? std::string("1 body")
+                                         : fmt::format("{} bodies", nb);
+    fmt::print("{}: ok (case {}, {}-D, {} cells, {} points per cell, {}, {} steps, scheme {}, material {})\n", deck,
+               cfg.id, cfg.dim, fmt::join(cells, " x "), fmt::join(per, " x "), bodies, steps,
+               mpm::scheme_name(cfg.scheme.scheme), cfg.material.model);
   }
   fmt::print("  estimate: about {} of memory, {:.3g} hours of work on one core{}{}{}\n", format_bytes(budget.bytes),
              budget.seconds / 3600.0,
@@ -180,7 +184,11 @@ void add_mpm_commands(CLI::App& app) {
                                     args->deck, out));
     }
     if (!ranks::root()) return;
-    fmt::print("{}: {} steps in {:.3f} s -> {}/run.json\n", cfg.id, r.steps, r.wall_seconds, out);
+    // After --resume the steps and the time are the whole run's: say this invocation's steps too.
+    const std::string now =
+        r.steps_now == r.steps ? std::string() : fmt::format(" ({} of them now, after --resume)", r.steps_now);
+    fmt::print("{}: {} step{}{} in {:.3f} s -> {}/run.json\n", cfg.id, r.steps, r.steps == 1 ? "" : "s", now,
+               r.wall_seconds, out);
     for (const auto& [f, e] : r.errors)
       fmt::print("  error {:<12} l1 {:.3e}  l2 {:.3e}  peak {:.3e}\n", f, e.l1, e.l2, e.peak);
     for (const auto& [f, order] : r.convergence_order)

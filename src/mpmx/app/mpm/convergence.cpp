@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "mpmx/app/mpm/prepare.hpp"
 #include "mpmx/core/error.hpp"
 #include "mpmx/io/plot.hpp"
 #include "mpmx/io/run_record.hpp"
@@ -41,9 +42,10 @@ ConvergenceStudy run_convergence(const MpmConfig& c, const RunOptions& o) {
   if (o.resume) throw InputError("a convergence study (convergence.levels > 1) does not resume: run it afresh");
   ConvergenceStudy study;
   const auto start = std::chrono::steady_clock::now();
+  const MpmConfig prepared = prepared_for_run(c);  // once for every level (prepare.hpp)
   for (int k = 0; k < c.convergence_levels; ++k) {
     ConvergenceLevel level;
-    const MpmConfig ck = refined(c, k);
+    const MpmConfig ck = refined(prepared, k);
     RunOptions ok = o;
     if (!o.out_dir.empty()) ok.out_dir = fmt::format("{}/level_{}", o.out_dir, k);
     ok.checkpoint_every = 0;

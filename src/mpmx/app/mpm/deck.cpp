@@ -4,8 +4,10 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -17,6 +19,8 @@
 #include "mpmx/app/mpm/bodies.hpp"
 #include "mpmx/app/mpm/materials.hpp"
 #include "mpmx/app/mpm/references.hpp"
+#include "mpmx/app/mpm/signal_speed.hpp"
+#include "mpmx/app/mpm/unit_slips.hpp"
 #include "mpmx/io/deck.hpp"
 #include "mpmx/md/lammps_dump.hpp"
 
@@ -30,6 +34,20 @@ using io::Deck;
 using io::Section;
 using mpm::BoundarySide;
 using mpm::Profile;
+
+constexpr std::size_t kMaxGaugeName = 100;  // gauge_<name>.csv stays well inside a file name's 255 bytes
+
+// The laws' work left until every key is read (material::Context::later), with the table
+// each was read from.
+using LaterWork = std::vector<std::pair<Section, std::function<void(Table&)>>>;
+
+// The reader's context for the law of `table`, its later work kept in `later`.
+material::Context law_context(const Section& table, const MpmConfig& c, const std::string& deck_dir,
+                              LaterWork& later) {
+  material::Context ctx = material_context(c.dim, deck_dir, c.units);
+  ctx.later = [&later, table](std::function<void(Table&)> work) { later.emplace_back(table, std::move(work)); };
+  return ctx;
+}
 
 // A step or tanh front must lie on the grid, along the profile's normal (outside it the
 // profile is a uniform state, surely not what the deck meant).
@@ -165,8 +183,10 @@ std::array<double, 3> read_vector(Section& s, std::string_view key, int dim, std
   return r;
 }
 
-// `number`: the body's place among the deck's [[body]] tables, from 1 (messages).
-Body read_body(Section s, int dim, const material::Context& ctx, std::size_t number) {
+// `index`: the body's place among the deck's [[body]] tables, from 0 (as run.json and the
+// points' `body` field number it).
+Body read_body(Section s, const MpmConfig& c, const std::string& deck_dir, LaterWork& later, std::size_t index) {
+  const int dim = c.dim;
   Body b;
   const std::vector<std::string> shapes =
       dim == 2 ? std::vector<std::string>{"box", "circle", "polygon"} : std::vector<std::string>{"box", "sphere"};
@@ -194,7 +214,7 @@ Body read_body(Section s, int dim, const material::Context& ctx, std::size_t num
   }
   if (const std::string why = geometry_problem(b, dim); !why.empty())
     s.check(false, b.shape == Body::Shape::polygon ? "vertices" : b.shape == Body::Shape::box ? "upper" : "radius",
-            fmt::format("body {}: {}", number, why));
+            fmt::format("[[body]] {}: {}", index, why));
   if (!b.remove) b.velocity = read_vector(s, "velocity", dim, {}, false);
   else if (s.has("velocity")) s.check(false, "velocity", "a region that removes points has no velocity");
   if (s.has("angular_velocity")) {
@@ -205,7 +225,7 @@ Body read_body(Section s, int dim, const material::Context& ctx, std::size_t num
   if (s.has("material")) {  // its own law; otherwise the deck's [material]
     s.check(!b.remove, "material", "a region that removes points has no material");
     Section m = s.table("material");
-    if (!b.remove) b.material = read_material(m, ctx);
+    if (!b.remove) b.material = read_material(m, law_context(m, c, deck_dir, later));
   }
   return b;
 }
@@ -246,10 +266,11 @@ void read_grid(Section& root, MpmConfig& c) {
   }
 }
 
-// [particles]: per cell along each axis, and whether they move.
+// [particles]: per cell along each axis, and whether they move (every key has a default:
+// the table may be left out).
 void read_particles(Section& root, MpmConfig& c) {
   const int dim = c.dim;
-  Section pt = root.table("particles");
+  Section pt = root.optional_table("particles");
   if (dim == 1 || !pt.has("per_cell") || pt.value_text("per_cell").find('[') == std::string::npos) {
     const int n = pt.integer_int("per_cell", 2, 1, 1'000'000);
     c.per_cell_all = {n, dim > 1 ? n : 1, dim > 2 ? n : 1};
@@ -263,14 +284,15 @@ void read_particles(Section& root, MpmConfig& c) {
 }
 
 // [[body]] regions (2-D, 3-D).
-void read_bodies(Section& root, MpmConfig& c, const std::string& deck_dir) {
+void read_bodies(Section& root, MpmConfig& c, const std::string& deck_dir, LaterWork& later) {
   const int dim = c.dim;
   if (dim > 1)
     for (auto& b : root.tables("body")) {
-      c.bodies.push_back(read_body(b, dim, material_context(dim, deck_dir, c.units), c.bodies.size() + 1));
+      c.bodies.push_back(read_body(b, c, deck_dir, later, c.bodies.size()));
       const std::string& name = c.bodies.back().name;  // what a gauge calls it: one body's
       for (std::size_t k = 0; !name.empty() && k + 1 < c.bodies.size(); ++k)
-        if (c.bodies[k].name == name) b.check(false, "name", fmt::format("body {} is called {} too", k + 1, name));
+        if (c.bodies[k].name == name)
+          b.check(false, "name", fmt::format("[[body]] {} is called {} too", k, escape_controls(name)));
     }
   else if (root.has("body"))
     root.check(false, "body", "1-D decks fill the grid; [[body]] regions are for 2-D and 3-D");
@@ -310,8 +332,7 @@ void read_scheme(Section& root, MpmConfig& c) {
 }
 
 // [material], and each body's own: one kind (solid or gas) for the whole deck.
-void read_materials(Section& root, MpmConfig& c, const std::string& deck_dir) {
-  const int dim = c.dim;
+void read_materials(Section& root, MpmConfig& c, const std::string& deck_dir, LaterWork& later) {
   // [material] is every point's law unless its body names its own; it may be left out
   // when every body does.
   const bool bodies_own = !c.bodies.empty() && std::all_of(c.bodies.begin(), c.bodies.end(), [](const Body& b) {
@@ -327,7 +348,7 @@ void read_materials(Section& root, MpmConfig& c, const std::string& deck_dir) {
   } else {
     Section m = root.table("material");
     mat.small_strain = m.boolean("small_strain", false);
-    mat.spec = read_material(m, material_context(dim, deck_dir, c.units));
+    mat.spec = read_material(m, law_context(m, c, deck_dir, later));
   }
   for (const auto& b : c.bodies) {
     if (!b.material || !mat.spec) continue;
@@ -338,8 +359,14 @@ void read_materials(Section& root, MpmConfig& c, const std::string& deck_dir) {
       root.check(false, "body",
                  fmt::format("{} is the deck's [material] only: a body does not take it", b.material->name()));
   }
+  if (mat.spec) mat.model = mat.spec->name();
+}
+
+// The figures of the deck's [material] the references and messages read, once its law is
+// complete (after the reading's later work).
+void material_figures(MpmConfig& c) {
+  auto& mat = c.material;
   if (mat.spec) {
-    mat.model = mat.spec->name();
     mat.density = mat.spec->density();
     mat.density_unstrained = mat.spec->density_of_unstrained();
     if (const double m = mat.spec->uniaxial_modulus(); m > 0) mat.youngs_modulus = m;
@@ -404,8 +431,14 @@ void read_gauges(Section& root, MpmConfig& c) {
       return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-';
     });
     s.check(plain, "name", "names the file gauge_<name>.csv: letters, digits, _ and - only");
+    // A file name of more than 255 bytes is refused by the file system only when the run
+    // first writes it.
+    s.check(g.name.size() <= kMaxGaugeName, "name",
+            fmt::format("is {} characters long: at most {} (it names the file gauge_<name>.csv)", g.name.size(),
+                        kMaxGaugeName));
     for (const auto& other : c.gauges)
-      if (other.name == g.name) s.check(false, "name", fmt::format("another [[gauge]] is called {}", g.name));
+      if (other.name == g.name)
+        s.check(false, "name", fmt::format("another [[gauge]] is called {}", escape_controls(g.name)));
     g.every = s.integer("every", 1, 1, std::numeric_limits<std::int64_t>::max());
     g.kind = s.choice("type", {"point", "free_surface"}, "point") == "point" ? GaugeConfig::Kind::point
                                                                              : GaugeConfig::Kind::free_surface;
@@ -445,7 +478,8 @@ void read_gauges(Section& root, MpmConfig& c) {
         if (g.body < 0)
           s.check(false, "body",
                   names.empty() ? std::string("names a [[body]] by its name, and no body has one (name = \"...\")")
-                                : fmt::format("no [[body]] is called {}: the deck's are {}", body, fmt::join(names, ", ")));
+                                : fmt::format("no [[body]] is called {}: the deck's are {}", escape_controls(body),
+                                              escape_controls(fmt::format("{}", fmt::join(names, ", ")))));
       } else if (c.bodies.size() > 1) {
         s.check(false, "body", "a deck of several bodies says whose face it is: body = \"<its name>\"");
       }
@@ -532,9 +566,9 @@ void read_output(Section& root, MpmConfig& c) {
   // the output: the `particle` column, the `id` array) as LAMMPS dumps OVITO reads.
   Section d = o.optional_table("md_dump");
   if (d.present()) {
-    const bool boxes = c.material.spec && c.material.spec->point_cost(1.0).atoms > 0;
+    const bool boxes = c.material.spec && c.material.spec->atoms_per_point() > 0;
     bool any = boxes;
-    for (const auto& b : c.bodies) any = any || (b.material && b.material->point_cost(1.0).atoms > 0);
+    for (const auto& b : c.bodies) any = any || (b.material && b.material->atoms_per_point() > 0);
     if (!any) d.error("no law of this deck runs MD boxes in its points (material.model = \"md_closure\")");
     const std::int64_t n = count_points(c);
     for (std::int64_t q : d.integers("points", 0, std::numeric_limits<std::int64_t>::max())) {
@@ -600,40 +634,22 @@ void read_reference(Section& root, MpmConfig& c, const std::string& deck_dir) {
 
 // The checks that need several tables: the CFL limit, whole steps, the law's own.
 void check_time_step(Section& t, MpmConfig& c, double cfl_limit) {
-  const int dim = c.dim;
   const auto& mat = c.material;
-  // Checks that need several sections.
-  double dx_min = c.dx();
-  for (int d = 1; d < dim; ++d) dx_min = std::min(dx_min, (c.upper_all[d] - c.lower_all[d]) / c.cells_all[d]);
+  const double dx_min = smallest_cell(c);
   if (c.upper > c.lower && c.cells >= 1 && (c.dt > 0.0 || c.cfl_dt) && mat.density > 0.0 && mat.spec) {
-    // The largest wave speed over the initial pressure profile, plus in 2-D/3-D the
-    // largest initial speed of a body.
-    double pmax = 0.0;
-    const double L = c.upper - c.lower;
-    if (!mat.solid())
-      for (int i = 0; i <= 4 * c.cells; ++i)
-        pmax = std::max(pmax, c.pressure(c.lower + L * i / (4.0 * c.cells), c.lower, L, c.dx()));
-    double cs_max = mat.spec->wave_speed(dim, mat.density, pmax);
-    for (const auto& body : c.bodies)
-      if (body.material) cs_max = std::max(cs_max, body.material->wave_speed(dim, body.material->density(), pmax));
-    // A body's fastest point: its velocity plus its spin times its radius (|omega| r_max).
-    double vmax = 0.0;
-    for (const auto& body : c.bodies) {
-      double v2 = 0.0;
-      for (int d = 0; d < dim; ++d) v2 += body.velocity[d] * body.velocity[d];
-      vmax = std::max(vmax, std::sqrt(v2) + std::abs(body.angular_velocity) * body.radius);
-    }
-    for (int f = 0; f < 2 * dim; ++f)  // a piston moves its nodes at its speed
-      if (c.boundary.face[f].type == BoundarySide::Type::piston)
-        for (double v : c.boundary.face[f].piston.speeds) vmax = std::max(vmax, std::abs(v));
-    cs_max += vmax;
+    const double cs_max = initial_signal_speed(c);
     const double limit = cfl_limit * dx_min / cs_max;
-    if (c.cfl_dt) c.dt = c.cfl * dx_min / cs_max;  // the first step's; later ones follow the state
-    if (std::isfinite(limit) && !c.cfl_dt)
-      t.check(c.dt <= limit, "dt",
+    if (c.cfl_dt) c.dt = first_cfl_step(c);  // the first step's; later ones follow the state
+    if (std::isfinite(limit) && !c.cfl_dt && !(c.dt <= limit)) {
+      // A speed typed in the wrong unit is the usual cause: its hint goes with the error.
+      std::string hints;
+      for (const std::string& slip : velocity_slips(c)) hints += "; " + slip;
+      t.check(false, "dt",
               fmt::format("exceeds the CFL limit cfl_limit * dx / (c + v) = {} * {} / {} = {} (c the wave speed, v "
-                          "the fastest point's speed: a body's velocity plus |angular_velocity| x radius)",
-                          cfl_limit, dx_min, cs_max, limit));
+                          "the fastest point's speed: a body's velocity plus |angular_velocity| x radius, or a "
+                          "piston's or a velocity face's){}",
+                          cfl_limit, dx_min, cs_max, limit, hints));
+    }
     // A count the run's step counter holds, before anything rounds it (1e300 / dt wrapped
     // to -9223372036854775808 steps); with dt = "cfl" the first step's dt gives its size.
     const double steps = c.end / c.dt;
@@ -657,9 +673,10 @@ MpmConfig read(Deck& deck) {
   read_case(root, c);
   read_grid(root, c);
   read_particles(root, c);
-  read_bodies(root, c, deck_dir);
+  LaterWork later;
+  read_bodies(root, c, deck_dir, later);
   read_scheme(root, c);
-  read_materials(root, c, deck_dir);
+  read_materials(root, c, deck_dir, later);
   Section in = root.optional_table("initial");
   read_initial(in, c);
   read_viscosity(root, c);
@@ -673,7 +690,13 @@ MpmConfig read(Deck& deck) {
   if (Section o = root.optional_table("output"); c.dim == 3 && c.convergence_levels <= 1 && o.has("plot") && c.plot)
     o.check(false, "plot",
             "a 3-D run draws no figures but a convergence study's (open particles.pvd in ParaView; or plot = false)");
-  check_time_step(t, c, cfl_limit);
+  // Every key read and its range checked: now the laws' expensive work, unless the deck
+  // is refused already (its errors come at once; the checks that need the laws wait).
+  const bool laws_complete = later.empty() || deck.errors().empty();
+  if (laws_complete)
+    for (auto& [table, work] : later) work(table);
+  material_figures(c);
+  if (laws_complete) check_time_step(t, c, cfl_limit);
   deck.finish();
   return c;
 }

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "mpmx/core/file_text.hpp"
 #include "mpmx/mpm/bcs.hpp"
 
 namespace mpmx::app {
@@ -63,7 +64,7 @@ std::vector<std::string> describe_pistons_and_gauges(const MpmConfig& c) {
     } else {
       const std::string face = g.face < 2 && c.dim == 1 ? (g.face == 0 ? "left" : "right") : mpm::face_name(g.face);
       what = fmt::format("free-surface velocity: the mean of the outermost points of {}'s {} face",
-                         g.body >= 0 ? c.bodies[g.body].name : std::string("the material"), face);
+                         g.body >= 0 ? escape_controls(c.bodies[g.body].name) : std::string("the material"), face);
     }
     lines.push_back(fmt::format("gauge {}: {}, every {} step{} -> gauge_{}.csv", g.name, what, g.every,
                                 g.every == 1 ? "" : "s", g.name));

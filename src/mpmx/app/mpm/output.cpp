@@ -46,8 +46,10 @@ Output::Output(const std::string& dir, bool nodes, bool particles, Marks resume,
 Output::~Output() {
   for (std::FILE* f : {nodes_, particles_, energy_, front_})
     if (f) std::fclose(f);
-  for (auto& [name, f] : tables_)
-    if (f) std::fclose(f);
+  try {  // a run stopped by an error: what its tables hold so far, as closing a file would
+    flush_rows();
+  } catch (const std::exception&) {
+  }
 }
 
 std::FILE* Output::open(const std::string& name, const char* header) {
@@ -78,8 +80,8 @@ void Output::emit(std::FILE* f, std::string_view bytes, bool flush) {
 }
 
 void Output::close() {
+  flush_rows();
   std::vector<std::FILE**> files = {&nodes_, &particles_, &energy_, &front_};
-  for (auto& [name, f] : tables_) files.push_back(&f);
   for (std::FILE** f : files) {
     if (!*f) continue;
     const std::string name = names_[*f];
@@ -168,15 +170,48 @@ void Output::front(double t, double x, double ref_x) {
 }
 
 void Output::row(const std::string& table, std::string_view header, const std::vector<double>& values) {
-  std::FILE*& f = tables_[table];
-  if (!f) f = open(table, std::string(header).c_str());
+  auto [it, made] = tables_.try_emplace(table);
+  RowTable& t = it->second;
+  if (made) {
+    if (auto r = resume_.find(table); r != resume_.end()) {  // cut back to its checkpoint's length
+      const std::string path = dir_ + "/" + table;
+      std::error_code ec;
+      std::filesystem::resize_file(path, static_cast<std::uintmax_t>(r->second), ec);
+      if (ec) throw SystemError(fmt::format("cannot resume {}: {}", path, ec.message()));
+      t.written = r->second;
+      t.fresh = false;
+    } else {
+      t.pending.assign(header);
+    }
+  }
+  const std::size_t before = t.pending.size();
   buf_.clear();
   for (std::size_t k = 0; k < values.size(); ++k) {
     if (k) buf_.push_back(',');
     put(buf_, values[k], 12);
   }
   buf_.push_back('\n');
-  emit(f, {buf_.data(), buf_.size()});
+  t.pending.append(buf_.data(), buf_.size());
+  pending_bytes_ += t.pending.size() - before;
+  if (pending_bytes_ > kPendingBytes) flush_rows();
+}
+
+void Output::flush_rows() {
+  for (auto& [name, t] : tables_) {
+    if (t.pending.empty()) continue;
+    const std::string path = dir_ + "/" + name;
+    std::FILE* f = std::fopen(path.c_str(), t.fresh ? "w" : "a");
+    if (!f) throw SystemError(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+    const bool wrote = std::fwrite(t.pending.data(), 1, t.pending.size(), f) == t.pending.size();
+    const int err = errno;
+    const bool closed = std::fclose(f) == 0;
+    if (!wrote || !closed) throw SystemError(fmt::format("writing {}: {}", path, std::strerror(wrote ? errno : err)));
+    t.written += static_cast<std::int64_t>(t.pending.size());
+    t.fresh = false;
+    pending_bytes_ -= t.pending.size();
+    t.pending.clear();
+    t.pending.shrink_to_fit();  // thousands of tables: each keeps no buffer between flushes
+  }
 }
 
 Output::Marks Output::marks() {
@@ -191,10 +226,8 @@ Output::Marks Output::marks() {
     emit(f, {}, true);
     m[name] = static_cast<std::int64_t>(std::ftell(f));
   }
-  for (const auto& [name, f] : tables_) {
-    emit(f, {}, true);
-    m[name] = static_cast<std::int64_t>(std::ftell(f));
-  }
+  flush_rows();
+  for (const auto& [name, t] : tables_) m[name] = t.written;
   return m;
 }
 

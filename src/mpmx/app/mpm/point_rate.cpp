@@ -40,7 +40,7 @@ double time_steps(const MpmConfig& c) {
 }  // namespace
 
 double measure_point_steps_per_second(const MpmConfig& c, double points, double subpoints, double nodes) {
-  if (c.material.spec && c.material.spec->point_cost(c.dt).atoms > 0) return 0.0;
+  if (c.material.spec && c.material.spec->atoms_per_point() > 0) return 0.0;
   MpmConfig r = c;
   r.convergence_levels = 1;
   // Coarser cells over the same domain and bodies: a few thousand integration points of the

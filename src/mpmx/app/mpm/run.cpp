@@ -17,6 +17,7 @@
 #include "mpmx/app/mpm/convergence.hpp"
 #include "mpmx/app/mpm/gauges.hpp"
 #include "mpmx/app/mpm/output.hpp"
+#include "mpmx/app/mpm/prepare.hpp"
 #include "mpmx/app/mpm/run_checkpoint.hpp"
 #include "mpmx/app/mpm/run_summary.hpp"
 #include "mpmx/app/mpm/setup.hpp"
@@ -66,12 +67,10 @@ struct Schedule {
 template <int Dim>
 class ContinuumRun {
  public:
-  ContinuumRun(const MpmConfig& c, const RunOptions& o, RunResultOf<Dim>& r)
-      : c_(c), o_(o), r_(r), s_(r.state), folder_(o.out_dir, o.resume, o.owner), schedule_(c), book_(rec_),
-        comparison_(make_comparison<Dim>(c)) {
-    if (!o.resume && !o.quiet && ranks::root() && c.material.spec)
-      if (const std::string note = c.material.spec->build_note(); !note.empty())
-        fmt::print(stderr, "{}: {}\n", c.id, note);
+  ContinuumRun(const MpmConfig& deck, const RunOptions& o, RunResultOf<Dim>& r)
+      : o_(o), r_(r), s_(r.state), folder_(o.out_dir, o.resume, o.owner), c_(prepare(deck)), schedule_(c_),
+        book_(rec_), comparison_(make_comparison<Dim>(c_)) {
+    const MpmConfig& c = c_;
     {
       // Ctrl-C while the MD boxes are built ends the run cleanly (md_closure stops there).
       InterruptGuard building(folder_.checkpoints);
@@ -117,6 +116,7 @@ class ContinuumRun {
     Progress progress(fmt::format("{} {}", c_.id, scheme_name(c_.scheme.scheme)), schedule_.steps,
                       o_.quiet || !ranks::root(), s_.step);
     t0_ = std::chrono::steady_clock::now();
+    first_step_ = s_.step;
     InterruptGuard guard(folder_.checkpoints);
     try {
       if (!o_.resume) {
@@ -157,6 +157,22 @@ class ContinuumRun {
   }
 
  private:
+  // The deck with its laws' preparation done (md_closure's NPT box: prepare.hpp), before
+  // anything is built, its note said first; Ctrl-C there ends the run as while the boxes
+  // are built.
+  MpmConfig prepare(const MpmConfig& deck) {
+    if (!o_.resume && !o_.quiet && ranks::root() && deck.material.spec)
+      if (const std::string note = deck.material.spec->build_note(); !note.empty())
+        fmt::print(stderr, "{}: {}\n", deck.id, note);
+    InterruptGuard preparing(folder_.checkpoints);
+    MpmConfig c;
+    ranks::together([&] { c = prepared_for_run(deck); });  // alike on every rank (one thread each)
+    if (InterruptGuard::interrupted())
+      throw Interrupted("while the run was being prepared (md_closure's NPT box, before the points' boxes): nothing "
+                        "was written and there is nothing to resume; start the run again");
+    return c;
+  }
+
   bool done(std::int64_t n) const { return c_.cfl_dt ? !(s_.time < c_.end) : n > schedule_.steps; }
 
   // Step n: dt from the deck, or (dt = "cfl") from the state, shortened to land on the
@@ -339,6 +355,7 @@ class ContinuumRun {
   void finish() {
     r_.wall_seconds = wall();
     r_.steps = s_.step;
+    r_.steps_now = s_.step - first_step_;
     const material::Subscale* sub = s_.material->subscale();
     if (sub) r_.md_atom_steps = sub->steps();
     // The slowest rank's MD time over the mean (1 on one rank).
@@ -413,11 +430,11 @@ class ContinuumRun {
     if (!c_.gauges.empty() || xt_) io::run_plot_script("gauges.py", fmt::format("--quiet '{}'", o_.out_dir));
   }
 
-  const MpmConfig& c_;
   const RunOptions& o_;
   RunResultOf<Dim>& r_;
   State<Dim>& s_;
   RunFolder folder_;
+  const MpmConfig c_;  // the deck, its laws prepared
   Schedule schedule_;
   io::RunRecord rec_;
   ErrorBook book_;
@@ -431,6 +448,7 @@ class ContinuumRun {
   std::string failure_;
   std::chrono::steady_clock::time_point t0_;
   double last_checkpoint_ = 0.0;
+  std::int64_t first_step_ = 0;  // where this invocation started
 };
 
 }  // namespace
@@ -455,6 +473,7 @@ RunSummary run_any(const MpmConfig& c, const RunOptions& o) {
   auto summary = [](const auto& r) {
     RunSummary s;
     s.steps = r.steps;
+    s.steps_now = r.steps_now;
     s.wall_seconds = r.wall_seconds;
     s.particles = r.state.particles.size();
     s.interrupted = r.interrupted;

@@ -39,6 +39,7 @@ struct RunOptions {
 template <int Dim>
 struct RunResultOf {
   std::int64_t steps = 0;
+  std::int64_t steps_now = 0;  // of them, this invocation's (after a resume, fewer)
   double wall_seconds = 0.0;
   std::map<std::string, FieldError> errors;   // by field; also "energy", "front_speed"
   double front_speed = 0.0;                   // shock_front cases
@@ -94,6 +95,7 @@ RunResult run_mpm(const MpmConfig& c, const RunOptions& o);
 // What the CLI reports of a run of any dimension.
 struct RunSummary {
   std::int64_t steps = 0;
+  std::int64_t steps_now = 0;  // as RunResultOf's
   double wall_seconds = 0.0;
   std::size_t particles = 0;
   bool interrupted = false;
