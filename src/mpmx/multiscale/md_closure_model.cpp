@@ -10,6 +10,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/md/budget.hpp"
 #include "mpmx/md/declared_lattice.hpp"
+#include "mpmx/md/elastic_constants.hpp"
 #include "mpmx/md/equilibrium.hpp"
 #include "mpmx/md/potential/registry.hpp"
 #include "mpmx/particles/lattice_keys.hpp"
@@ -99,6 +100,10 @@ std::vector<std::string> MdClosureModel::check_notes() const {
       "each point's box: {} tiles of {} ({} atoms), x [{}], y [{}], z [{}], at {:.6f} A (the potential's 0 K lattice)",
       md.cells, particles::lattice_name(md.lattice.style), md.atoms_per_point(), fmt::join(o[0], " "),
       fmt::join(o[1], " "), fmt::join(o[2], " "), a0)};
+  r.push_back(fmt::format("the boxes' 0 K constants (box frame, {}): C11 = {:.6g}, C12 = {:.6g}, C44 = {:.6g}, "
+                          "density {:.6g}; lattice: {}",
+                          md.units.name, c11, c12, c44, rho, lattice_from));
+  for (const std::string& w : warnings) r.push_back("warning: " + w);
   if (md.prepare == BoxPrepare::npt && md.prepared)
     r.push_back(fmt::format("prepared by NPT: one box at {} K and 0 GPa for {} steps (Nose-Hoover, Tdamp 0.1 ps, "
                             "isotropic Pdamp 1 ps): every box is built at its mean lattice constant over "
@@ -114,6 +119,15 @@ std::vector<std::string> MdClosureModel::check_notes() const {
                             md.temperature, md.prepare_steps,
                             static_cast<double>(md.atoms_per_point()) * static_cast<double>(md.prepare_steps), rho));
   return r;
+}
+
+std::vector<std::pair<std::string, double>> MdClosureModel::constants() const {
+  return {{"c11", c11}, {"c12", c12}, {"c44", c44}, {"density", rho}, {"lattice_constant_A", a0}};
+}
+
+std::string MdClosureModel::constants_source() const {
+  return fmt::format("the 0 K {} crystal of the closure's potential in the box frame (lattice: {})",
+                     particles::lattice_name(md.lattice.style), lattice_from);
 }
 
 std::shared_ptr<const Model> MdClosureModel::prepared() const {
@@ -141,7 +155,10 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   md.potential = md::read_potential(*m.sub("potential"), ctx.deck_dir);
   auto md_table = m.sub("md");
   Table& s = *md_table;
-  // The crystal: md decks' [lattice] keys (lattice for their type), `cells` tiles per axis.
+  // The crystal: md decks' [lattice] keys (lattice for their type), `cells` tiles per axis;
+  // with neither lattice nor orient given, the lattice the potential's file declares.
+  const bool named = s.has("lattice") || s.has("orient");
+  if (s.has("lattice")) r->lattice_from = "the deck's";
   particles::read_crystal_keys(s, "lattice", md.lattice);
   s.check(md.lattice.style != particles::LatticeStyle::b2, "lattice",
           "b2 needs two elements on one lattice; a closure's box is of one element (use fcc, bcc or hcp)");
@@ -191,13 +208,35 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   // The crystal's constants from the potential, once every key of the deck is read (the
   // reader's `later`). prepare = npt's NPT box is the run's to run (prepared()), not the
   // reading's: a check states it, and a large prepare_steps holds up no check.
-  auto crystal = [r](Table& table) {
+  auto crystal = [r, named](Table& table) {
     if (!md::complete(r->md.potential)) return;  // read_potential said why
     try {
+      const md::Potential pot(r->md.potential);
+      if (!named)
+        if (const auto d = md::declared_lattice(pot, 0)) {
+          r->md.lattice.style = d->style;
+          r->lattice_from = "the one the potential's file declares";
+        }
+      if (named)
+        if (const std::string w = md::lattice_contradiction(pot, 0, r->md.lattice.style, 0.0); !w.empty())
+          r->warnings.push_back(w);
       const auto props = md_closure_properties(r->md.potential, r->md.units, r->md.lattice);
       r->rho = props.density;
       r->c11 = props.modulus;
+      r->c12 = props.c12;
+      r->c44 = props.c44;
       r->a0 = props.equilibrium.lattice_constant;
+      // A crystal the potential does not hold together gives boxes that fall apart: its
+      // full tensor at 0 K must be Born-stable (md/elastic_constants.hpp).
+      particles::LatticeSpec at = r->md.lattice;
+      at.constant = r->a0;
+      const md::ElasticTensor t = md::elastic_tensor(pot, at, md::equilibrium_tiles(at));
+      const auto& k = t.crystal;
+      table.check(md::born_stable(t.crystal), "md",
+                  fmt::format("its {} crystal (lattice: {}) is not Born-stable under this potential: C11 = {:.4g}, "
+                              "C12 = {:.4g}, C44 = {:.4g} GPa in the crystal's axes at a = {:.6f} A; name "
+                              "material.md.lattice as the element's crystal",
+                              particles::lattice_name(at.style), r->lattice_from, k[0][0], k[0][1], k[3][3], r->a0));
       // its atoms per A^3 (the budget takes another crystal as the fcc box of its atoms)
       r->number_density = static_cast<double>(r->md.atoms_per_point()) / box_volume(r->md, r->a0);
       r->cutoff = props.cutoff;

@@ -15,6 +15,9 @@ struct MdClosureModel final : material::Model {
   double rho = 1.0, c11 = 1.0;   // the unstrained crystal's, continuum units
   double a0 = 3.615, cutoff = 8.0;  // its lattice constant and the potential's cutoff, Angstrom
   double number_density = 4.0 / (3.615 * 3.615 * 3.615);  // its atoms per A^3
+  double c12 = 0.0, c44 = 0.0;      // the box frame's d sigma_yy / d e_xx and shear, continuum units
+  std::string lattice_from = "fcc, the default";  // where the boxes' lattice comes from
+  std::vector<std::string> warnings;              // what the potential's file contradicts
 
   std::string name() const override { return "md_closure"; }
   double density() const override { return rho; }
@@ -38,6 +41,8 @@ struct MdClosureModel final : material::Model {
   std::string build_note() const override;
   // The boxes' crystal and, with prepare = npt, the NPT run the run starts with.
   std::vector<std::string> check_notes() const override;
+  std::vector<std::pair<std::string, double>> constants() const override;
+  std::string constants_source() const override;
   std::unique_ptr<material::Material<1>> make1() const override;
   std::unique_ptr<material::Material<2>> make2() const override;
   std::unique_ptr<material::Material<3>> make3() const override;
