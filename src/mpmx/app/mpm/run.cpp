@@ -485,6 +485,7 @@ RunSummary run_any(const MpmConfig& c, const RunOptions& o) {
     s.stress_vs_direct_md = r.stress_vs_direct_md;
     s.energy_growth = r.energy_growth;
     s.energy_grew = r.energy_grew;
+    s.energy_balance_error = r.energy_scale() > 0 ? r.energy_error() / r.energy_scale() : 0.0;
     return s;
   };
   if (c.convergence_levels > 1) {

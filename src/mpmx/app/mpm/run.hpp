@@ -106,6 +106,7 @@ struct RunSummary {
   double stress_vs_direct_md = std::nan("");
   double energy_growth = std::nan("");  // as RunResultOf's
   bool energy_grew = false;
+  double energy_balance_error = 0.0;    // run.json's conservation.energy.relative_error
   std::map<std::string, double> convergence_order;  // a convergence study's L2 order by field
 };
 // Runs a deck of any dimension (a convergence study when convergence.levels > 1).
