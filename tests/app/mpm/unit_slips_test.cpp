@@ -32,7 +32,32 @@ youngs_modulus = 233.0
 density = 8.9
 [boundary]
 left = { type = "piston", velocity = 0.5 }
-right = { type = "velocity", value = 0.0 }
+[time]
+dt = 1e-4
+end = 1e-3
+)";
+
+// A piston carries the grid, and the face across from it must be free: a velocity face
+// goes on the other axis.
+const char* kPiston2d = R"(
+[case]
+id = "slips_2d_piston"
+units = "nm_ps_GPa"
+[grid]
+dim = 2
+lower = [0.0, 0.0]
+upper = [10.0, 0.1]
+cells = [100, 1]
+[scheme]
+name = "mpm"
+[material]
+model = "linear_elastic"
+youngs_modulus = 233.0
+density = 8.9
+[boundary]
+x_lower = { type = "piston", velocity = 0.5 }
+y_lower = { type = "roller" }
+y_upper = { type = "velocity", value = [0.0, 0.0] }
 [time]
 dt = 1e-4
 end = 1e-3
@@ -91,19 +116,34 @@ std::string deck_file(const std::string& name, const std::string& text) {
 }  // namespace
 
 TEST(UnitSlips, APistonsAndAVelocityFacesSpeedsAreJudged) {
-  const auto right = mpmx::app::read_mpm_deck_text(kPiston1d, "p.toml");
-  EXPECT_EQ(all(mpmx::app::unit_slips(right)), "");
+  // 1-D: a piston on the left, or a velocity face on the right.
+  const std::string velocity1d = replace(kPiston1d, "left = { type = \"piston\", velocity = 0.5 }",
+                                         "right = { type = \"velocity\", value = 0.0 }");
+  for (const std::string& deck : {std::string(kPiston1d), velocity1d})
+    EXPECT_EQ(all(mpmx::app::unit_slips(mpmx::app::read_mpm_deck_text(deck, "p.toml"))), "") << deck;
   // 500 m/s typed for 0.5 km/s; its travel kept on the grid by a shorter run.
-  const auto slip = mpmx::app::read_mpm_deck_text(
-      replace(replace(replace(kPiston1d, "velocity = 0.5 }", "velocity = 500.0 }"), "value = 0.0 }",
-                      "value = 0.0, amplitude = 2000.0, omega = 1.0 }"),
-              "dt = 1e-4\nend = 1e-3", "dt = 1e-7\nend = 1e-6"),
-      "p.toml");
-  const std::string w = all(mpmx::app::unit_slips(slip));
-  EXPECT_HAS(w, "boundary.left.velocity = 500 in nm_ps_GPa is 5e+05 m/s, far above the range for a speed of a solid "
-                "(0 to 50000 m/s): m/s typed for km/s? (0.5 would be 500 m/s)");
-  EXPECT_HAS(w, "boundary.right.amplitude = 2000 in nm_ps_GPa is 2e+06 m/s");
-  EXPECT_EQ(mpmx::test::count(w, "\n"), 2u) << w;
+  const auto shorter = [](const std::string& deck) {
+    return replace(deck, "dt = 1e-4\nend = 1e-3", "dt = 1e-7\nend = 1e-6");
+  };
+  const std::string piston = all(mpmx::app::unit_slips(
+      mpmx::app::read_mpm_deck_text(shorter(replace(kPiston1d, "velocity = 0.5 }", "velocity = 500.0 }")), "p.toml")));
+  EXPECT_HAS(piston,
+             "boundary.left.velocity = 500 in nm_ps_GPa is 5e+05 m/s, far above the range for a speed of a solid "
+             "(0 to 50000 m/s): m/s typed for km/s? (0.5 would be 500 m/s)");
+  EXPECT_EQ(mpmx::test::count(piston, "\n"), 1u) << piston;
+  const std::string face = all(mpmx::app::unit_slips(mpmx::app::read_mpm_deck_text(
+      shorter(replace(velocity1d, "value = 0.0 }", "value = 0.0, amplitude = 2000.0, omega = 1.0 }")), "v.toml")));
+  EXPECT_HAS(face, "boundary.right.amplitude = 2000 in nm_ps_GPa is 2e+06 m/s");
+  EXPECT_EQ(mpmx::test::count(face, "\n"), 1u) << face;
+  // 2-D: both in one deck, each named by its face.
+  EXPECT_EQ(all(mpmx::app::unit_slips(mpmx::app::read_mpm_deck_text(kPiston2d, "p2.toml"))), "");
+  const std::string both = all(mpmx::app::unit_slips(mpmx::app::read_mpm_deck_text(
+      shorter(replace(replace(kPiston2d, "velocity = 0.5 }", "velocity = 500.0 }"), "value = [0.0, 0.0] }",
+                      "value = [0.0, 0.0], amplitude = [2000.0, 0.0], omega = 1.0 }")),
+      "p2.toml")));
+  EXPECT_HAS(both, "boundary.x_lower.velocity = 500 in nm_ps_GPa is 5e+05 m/s");
+  EXPECT_HAS(both, "boundary.y_upper.amplitude = 2000 in nm_ps_GPa is 2e+06 m/s");
+  EXPECT_EQ(mpmx::test::count(both, "\n"), 2u) << both;
 }
 
 TEST(UnitSlips, BodiesAreNamedFromZeroAsRunJsonNumbersThem) {

@@ -52,7 +52,7 @@ struct RunResultOf {
   double kinetic_initial = 0.0, kinetic_final = 0.0, stress_work = 0.0, boundary_work = 0.0;
   double body_work = 0.0;                     // a manufactured solution's body force's
   double stored_initial = 0.0, stored_final = 0.0;  // the materials' stored energy
-  double max_kinetic = 0.0;
+  double max_kinetic = 0.0;                   // in the lab or the grid's frame (a piston carries it)
   double stress_vs_direct_md = std::nan("");  // eq. 7.12 over the compared times (direct_md)
   std::int64_t md_atom_steps = 0;             // md_closure: atoms x MD steps, relaxation included
   int threads = 1;                            // per rank
@@ -70,10 +70,10 @@ struct RunResultOf {
   std::vector<GaugeTrace> gauges;
   mpm::State<Dim> state;                      // the final state
   double energy_error() const { return std::abs(kinetic_final - kinetic_initial + stress_work - boundary_work); }
-  // Its scale, the energy in play: the largest kinetic energy seen, or the boundary's
-  // work where larger. A piston's is: half of what it puts in is the bar's kinetic
-  // energy, half is stored behind the shock, where a bar sent onto a wall brings all of
-  // it as kinetic energy; over this scale the two runs' errors read the same.
+  // Its scale, the energy in play: the largest kinetic energy seen (in the lab or in the
+  // grid's frame, where a piston is the wall and the bar runs at -u_p onto it: the wall
+  // run's scale from the first step), or the boundary's work where larger (half of a
+  // piston's work is the bar's kinetic energy, half is stored behind the shock).
   double energy_scale() const { return std::max(max_kinetic, std::abs(boundary_work)); }
   double momentum_error() const {
     double e2 = 0.0;
