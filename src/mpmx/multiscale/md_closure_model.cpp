@@ -122,7 +122,7 @@ std::vector<std::string> MdClosureModel::check_notes() const {
 }
 
 std::vector<std::pair<std::string, double>> MdClosureModel::constants() const {
-  return {{"c11", c11}, {"c12", c12}, {"c44", c44}, {"density", rho}, {"lattice_constant_A", a0}};
+  return {{"c11", c11}, {"c12", c12}, {"c44", c44}, {"density", rho}, {"zero_kelvin_lattice_constant_A", a0}};
 }
 
 std::string MdClosureModel::constants_source() const {

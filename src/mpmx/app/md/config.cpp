@@ -446,6 +446,21 @@ MdConfig read_md_config(io::Deck& deck) {
   }
   auto rod = root.optional_table("rod");
   if (rod.present()) read_rod(root, rod, bar.present() || jet.present(), c);
+  // A sample ([bar], [jet], [rod]) runs its own set-up: the periodic box's keys would be
+  // read and do nothing there, so each is refused with why.
+  if (bar.present() || jet.present() || rod.present()) {
+    const std::string sample = bar.present() ? "[bar]" : jet.present() ? "[jet]" : "[rod]";
+    const std::string box_only = fmt::format("has no use in a {} run: it applies to the periodic box", sample);
+    for (const char* key : {"strain_rate_per_s", "velocity_gradient_per_ps", "streaming_start", "deformation"})
+      run.check(!run.has(key), key, box_only + " (a sample is not deformed as a whole)");
+    th.check(!th.has("relax_steps"), "relax_steps",
+             box_only + (rod.present() ? " (a rod's target equilibrates by rod.equilibrate_steps)" : ""));
+    lat.check(!lat.has("strain_x"), "strain_x",
+              box_only + (bar.present() ? " (a bar's strain is bar.strain_left)" : ""));
+    if (bar.present())
+      for (const char* key : {"dump_every", "dump_fields"})
+        run.check(!run.has(key), key, "has no use in a [bar] run: it writes bar_stress.csv, no dump frames");
+  }
   // The run counts its steps from the start, relaxation or equilibration included.
   th.check(checked_sum(c.relax_steps, c.steps).has_value(), "relax_steps",
            "plus run.steps is more steps than a run can count (2^63 - 1)");
