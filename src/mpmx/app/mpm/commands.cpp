@@ -212,8 +212,8 @@ void add_mpm_commands(CLI::App& app) {
     if (r.energy_balance_error > kEnergyBalanceTolerance)
       fmt::print("  warning: the kinetic energy's change misses the work of the stresses and the boundaries by "
                  "{:.1f}% of the energy in play (run.json's conservation.energy.relative_error; the tolerance is "
-                 "{:.0f}%): the transfers between points and grid dissipated it, which a finer grid, more points "
-                 "per cell or a smaller time.dt lower (docs/guide.md, \"Energy\")\n",
+                 "{:.0f}%): the scheme's transfers between points and grid did not conserve it, which a finer grid, "
+                 "more points per cell, a smaller time.dt or another scheme lower (docs/guide.md, \"Energy\")\n",
                  100.0 * r.energy_balance_error, 100.0 * kEnergyBalanceTolerance);
   });
 
