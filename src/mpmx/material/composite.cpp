@@ -17,6 +17,7 @@ Points<Dim> block(const Points<Dim>& p, std::size_t begin, std::size_t n) {
   for (auto& a : b.viscous)
     if (a) a += begin;
   if (b.stress_zz) b.stress_zz += begin;
+  if (b.viscous_pressure) b.viscous_pressure += begin;
   b.mass += begin;
   b.volume += begin;
   b.volume0 += begin;

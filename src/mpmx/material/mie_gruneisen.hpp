@@ -24,11 +24,12 @@
 //   e^{n+1} = e^n - (p^n + p^{n+1}) / 2 (v^{n+1} - v^n) + dt v^{n+1/2} (s^n + s^{n+1}) / 2 : D
 // with v = V / m the specific volume of the point's actual volumes (so the spherical work
 // is the -p dv the EOS sees, and one step across a jump satisfies the Rankine-Hugoniot
-// energy condition exactly). The deviatoric work (elastic and plastic) is included. The
-// artificial viscosity's work is NOT: the engine deposits it with add_viscous_work (a
-// smeared shock left without it ends near the isentrope, not on the Hugoniot: copper
-// compressed smoothly to the Hugoniot's eta at up = 1.25 km/s reaches a pressure 5.5%
-// below rho0 Us up).
+// energy condition exactly). The deviatoric work (elastic and plastic) is included, and
+// the linear viscosity's q the step's forces used, -q (v^{n+1} - v^n). The tensor
+// viscosity's work is deposited by the engine with add_viscous_work (a smeared shock
+// left without it ends near the isentrope, not on the Hugoniot: copper compressed
+// smoothly to the Hugoniot's eta at up = 1.25 km/s reaches a pressure 5.5% below
+// rho0 Us up).
 #include <array>
 #include <memory>
 #include <vector>

@@ -18,6 +18,7 @@
 #include "mpmx/core/error.hpp"
 #include "mpmx/core/binary.hpp"
 #include "mpmx/core/interrupt.hpp"
+#include "mpmx/core/units.hpp"
 #include "mpmx/md/lammps_dump.hpp"
 #include "mpmx/md/nose_hoover.hpp"
 #include "mpmx/particles/lattice.hpp"
@@ -44,8 +45,16 @@ MdClosureProperties properties(const md::FccEquilibrium& eq, const units::UnitSy
 }
 
 // The record a group's box returns to every rank: its stress (GPa), its box, its
-// neighbour-list builds and eq. 7.11's energy in and short.
-constexpr int kGroupRecord = 20;
+// neighbour-list builds, eq. 7.11's energy in and short, its temperature, what it owes
+// and its energy per unit mass.
+constexpr int kGroupRecord = 21;
+
+// A box's energy (potential plus kinetic about its mean velocity) per unit mass, eV/amu.
+double specific_energy(const md::System& box) {
+  double mass = 0.0;
+  for (const int t : box.atoms().type) mass += box.type_mass()[static_cast<std::size_t>(t)];
+  return (box.potential_energy() + box.thermal_kinetic_energy()) / mass;
+}
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -244,6 +253,7 @@ void MdClosure<Dim>::initialize(const Points<Dim>& p) {
     if (boxes_[g]) stress_[g] = boxes_[g]->stress_gpa();
   shape_.assign(G, {});
   temperature_.assign(G, 0.0);
+  energy_.assign(G, 0.0);
   owed_.assign(G, 0.0);
   group_seconds_.assign(G, 0.0);
   rotation_.assign(n, as_array(Mat3d::Identity()));
@@ -277,6 +287,7 @@ void MdClosure<Dim>::apply_split(const BoxGroups::Split& split) {
   stress_.resize(G);
   shape_.resize(G);
   temperature_.resize(G);
+  energy_.resize(G);
   owed_.resize(G, 0.0);
   group_seconds_.resize(G, 0.0);
   for (const auto& c : split.clones) {  // a new group runs where its parent did, from a copy
@@ -284,31 +295,33 @@ void MdClosure<Dim>::apply_split(const BoxGroups::Split& split) {
     stress_[c.to] = stress_[c.from];
     shape_[c.to] = shape_[c.from];
     temperature_[c.to] = temperature_[c.from];
+    energy_[c.to] = energy_[c.from];
     owed_[c.to] = owed_[c.from];  // a copy of the box, so of what it owes
     if (mine(c.from)) boxes_[c.to] = std::make_unique<md::System>(*boxes_[c.from]);
   }
 }
 
 template <int Dim>
-double MdClosure<Dim>::power_of(const Points<Dim>& p, std::size_t q, const md::Mat3& box_stress) const {
-  // The stress the continuum used this step on the point (the box's turned by R, plus
-  // the tensor viscous stress where it is on, less the linear viscosity's q on each
-  // normal stress; GPa) over the rate of deformation. The viscosity's work is the shock's
-  // entropy (von Neumann-Richtmyer): left out, a shocked box gets none of it.
+typename MdClosure<Dim>::Power MdClosure<Dim>::power_of(const Points<Dim>& p, std::size_t q) const {
+  // The continuum's rate of deformation seen in the box's frame, R^T D R (the box's
+  // stress is turned by R before the continuum uses it), and the power of the viscous
+  // stresses the step's forces used: the tensor viscosity's, less the linear viscosity's q
+  // on each normal stress (GPa/ps). The viscosity's work is the shock's entropy (von
+  // Neumann-Richtmyer): left out, a shocked box gets none of it.
   const Mat3d R = as_matrix(rotation_[q]);
-  Mat3d sigma = R * as_matrix(box_stress) * R.transpose();
-  Mat3d L = Mat3d::Zero();
+  Mat3d L = Mat3d::Zero(), viscous = Mat3d::Zero();
   for (int a = 0; a < Dim; ++a)
     for (int b = 0; b < Dim; ++b) {
-      if (p.viscous[a * Dim + b]) sigma(a, b) += p.viscous[a * Dim + b][q] * cfg_.units.stress_GPa;
-      if (a == b && p.viscous_pressure) sigma(a, b) -= p.viscous_pressure[q] * cfg_.units.stress_GPa;
+      if (p.viscous[a * Dim + b]) viscous(a, b) += p.viscous[a * Dim + b][q] * cfg_.units.stress_GPa;
+      if (a == b && p.viscous_pressure) viscous(a, b) -= p.viscous_pressure[q] * cfg_.units.stress_GPa;
       L(a, b) = p.L(q, a, b) / cfg_.units.time_ps;
     }
-  return (sigma.array() * (0.5 * (L + L.transpose())).array()).sum();  // GPa/ps
+  const Mat3d D = 0.5 * (L + L.transpose());
+  return {as_array(R.transpose() * D * R), (viscous.array() * D.array()).sum()};
 }
 
 template <int Dim>
-std::pair<double, double> MdClosure<Dim>::advance(md::System& box, const md::Mat3& L, double power, int steps,
+std::pair<double, double> MdClosure<Dim>::advance(md::System& box, const md::Mat3& L, const Power& power, int steps,
                                                   md::Mat3& stress, double& owed) {
   if (!consistent()) {
     multiscale::advance_box(box, L, steps, cfg_.dt, cfg_.sample, stress);
@@ -317,18 +330,29 @@ std::pair<double, double> MdClosure<Dim>::advance(md::System& box, const md::Mat
   }
   // Eq. 7.11: the continuum's work on the box over the step against its own energy change.
   constexpr double GPa_A3_in_eV = 1.0 / 160.21766208;  // 1 GPa x 1 A^3 in eV
+  auto stress_power = [&] {
+    double w = 0.0;
+    for (int c = 0; c < 9; ++c) w += stress[c] * power.rate[c];
+    return w;
+  };
   const double dt_ps = steps * cfg_.dt;
   const double e0 = box.potential_energy() + box.thermal_kinetic_energy(), v0 = box.box().volume();
+  const double before = stress_power();  // the stress of the last sample, sigma^n
   multiscale::advance_box(box, L, steps, cfg_.dt, cfg_.sample, stress);
-  const double work = 0.5 * (v0 + box.box().volume()) * power * dt_ps * GPa_A3_in_eV;
+  // The box's stress over the step, time-centred: the mean of its samples at the step's
+  // ends, or the step's own average where that is sampled. The forces' lagged sigma^n
+  // alone under-counts a compression by (sigma^{n+1} - sigma^n) : D dt / 2 a step, an error
+  // of the order of the step that left the 1-D bar at 2.5 km/s with 86% of the jump
+  // conditions' energy at dt = 0.01 ps and 95% at 0.002 (docs/theory.md).
+  const double box_power = cfg_.sample == multiscale::StressSample::average ? stress_power()
+                                                                             : 0.5 * (before + stress_power());
+  const double work = 0.5 * (v0 + box.box().volume()) * (box_power + power.viscous) * dt_ps * GPa_A3_in_eV;
   // What the box is owed this step, and what it still owes from earlier ones. The work
-  // uses the stress of the previous sample, the box's own change its stress now: over a
-  // shock's rise the difference swings both ways by far more than a cold box's thermal
-  // energy, which is all a removal can take. Dropping the removal it cannot take would
-  // keep every positive swing and lose the negative ones, a ratchet that heats the box
-  // more the more macro steps the rise takes (3,495 K at dt 0.01 ps, 11,758 K at 0.002 in
-  // the 1-D bar at 2.5 km/s): the excess is carried into the next steps instead, so that
-  // the box's energy is always the continuum's work to within what it owes.
+  // and the box's own change differ by the viscous heat and by the sampled stress's noise;
+  // a removal is at most half the thermal energy a cold box has, and the rest is carried
+  // into the next steps, never dropped: dropping it would keep every positive swing and
+  // lose the negative ones, a ratchet that heats the box more the shorter the step
+  // (3,495 K at dt 0.01 ps, 11,758 K at 0.002 in the 1-D bar at 2.5 km/s).
   double add = work - (box.potential_energy() + box.thermal_kinetic_energy() - e0) + owed;
   // At most half the thermal energy a step: taking it all would leave a box at 0 K.
   const double room = 0.5 * box.thermal_kinetic_energy();
@@ -362,22 +386,29 @@ void MdClosure<Dim>::update_stress(const Points<Dim>& p, double dt) {
   std::vector<std::size_t> todo;
   for (std::size_t g = 0; g < G; ++g)
     if (mine(g)) todo.push_back(g);
-  std::vector<double> power(G, 0.0);
-  std::map<std::size_t, double> audit_power;
+  std::vector<Power> power(G);
+  std::map<std::size_t, Power> audit_power;
   if (consistent()) {
     for (std::size_t g : todo) {
-      double sum = 0.0;
-      for (std::size_t q : groups_.members(g)) sum += power_of(p, q, stress_[g]);
-      power[g] = sum / static_cast<double>(groups_.members(g).size());
+      Power sum;
+      for (std::size_t q : groups_.members(g)) {
+        const Power one = power_of(p, q);
+        for (int c = 0; c < 9; ++c) sum.rate[c] += one.rate[c];
+        sum.viscous += one.viscous;
+      }
+      const double m = static_cast<double>(groups_.members(g).size());
+      for (int c = 0; c < 9; ++c) power[g].rate[c] = sum.rate[c] / m;
+      power[g].viscous = sum.viscous / m;
     }
   }
   std::vector<std::pair<std::size_t, md::System*>> audited;
+  std::vector<md::Mat3> audit_stress;  // each auditor's last sample, then its new one
   for (auto& [q, box] : audits_) {
     audited.emplace_back(q, &box);
-    if (consistent()) audit_power[q] = power_of(p, q, audit_stress_.at(q));
+    audit_stress.push_back(audit_stress_.at(q));
+    if (consistent()) audit_power[q] = power_of(p, q);
   }
   std::vector<double> injected(G, 0.0), short_of(G, 0.0);
-  std::vector<md::Mat3> audit_stress(audited.size());
   std::optional<ranks::Failure> failed;
   const auto t0 = std::chrono::steady_clock::now();
   try {
@@ -395,7 +426,7 @@ void MdClosure<Dim>::update_stress(const Points<Dim>& p, double dt) {
     for (std::size_t k = 0; k < todo.size(); ++k) group_seconds_[todo[k]] += seconds[k];
     batch_.each_box(audited.size(), 0, nullptr, [&](std::size_t k) {
       const std::size_t q = audited[k].first;
-      advance(*audited[k].second, L[q], consistent() ? audit_power[q] : 0.0, steps, audit_stress[k],
+      advance(*audited[k].second, L[q], consistent() ? audit_power[q] : Power{}, steps, audit_stress[k],
               audit_owed_.at(q));
     });
   } catch (const std::exception& e) {
@@ -478,6 +509,7 @@ void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure>
     out.push_back(short_of.empty() ? 0.0 : short_of[g]);
     out.push_back(boxes_[g]->temperature());
     out.push_back(owed_[g]);
+    out.push_back(specific_energy(*boxes_[g]));
     for (int c = 0; c < 9; ++c)
       if (!std::isfinite(stress_[g][c]))
         failed = ranks::Failure{ranks::Failure::run,
@@ -512,6 +544,7 @@ void MdClosure<Dim>::publish(const Points<Dim>& p, std::optional<ranks::Failure>
       injected_ev_ += rec[16];
       temperature_[g] = rec[18];
       owed_[g] = rec[19];
+      energy_[g] = rec[20];
     }
     for (std::size_t q = 0; q < groups_.points() && strain; ++q) {
       if (!groups_.auditor(q) || owner_[groups_.group_of(q)] != r) continue;
@@ -546,7 +579,13 @@ std::vector<material::PointField> MdClosure<Dim>::point_fields(const Points<Dim>
   const std::size_t n = groups_.points();
   material::PointField T{"temperature", std::vector<double>(n)};
   for (std::size_t q = 0; q < n; ++q) T.values[q] = temperature_[groups_.group_of(q)];
-  std::vector<material::PointField> f{std::move(T)};
+  // The box's energy per unit mass above the 0 K crystal at rest (continuum units, as
+  // mie_gruneisen's): what the jump conditions' (V0 - V) sigma / 2 is compared with.
+  const double to_continuum = 1.0 / (units::mvv2e * std::pow(cfg_.units.velocity_A_per_ps(), 2));
+  const double cold = props_.equilibrium.energy_per_atom / pot_.mass(0);
+  material::PointField e{"internal_energy", std::vector<double>(n)};
+  for (std::size_t q = 0; q < n; ++q) e.values[q] = (energy_[groups_.group_of(q)] - cold) * to_continuum;
+  std::vector<material::PointField> f{std::move(T), std::move(e)};
   if constexpr (Dim == 1) {
     // The box's lateral stresses, which the 1-D points keep no array for (continuum units).
     material::PointField yy{"stress_yy", std::vector<double>(n)}, zz{"stress_zz", std::vector<double>(n)};
@@ -692,12 +731,14 @@ void MdClosure<Dim>::load(std::istream& in) {
   boxes_.clear();
   boxes_.resize(G);
   temperature_.assign(G, 0.0);
+  energy_.assign(G, 0.0);
   // Every box is read (the run's own figures follow them); this rank keeps its own.
   for (std::size_t g = 0; g < G; ++g) {
     try {
       md::System box = md::System::load(in, pot_, box_options());
       box.compact();  // as the run keeps it between macro steps
       temperature_[g] = box.temperature();
+      energy_[g] = specific_energy(box);
       if (mine(g)) boxes_[g] = std::make_unique<md::System>(std::move(box));
     } catch (const RunError& e) {  // a box the file describes that no run makes
       throw InputError(fmt::format("the MD box of group {} (point {}): {}", g, groups_.members(g).front(), e.what()));

@@ -193,10 +193,16 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   void start_audits(const std::vector<std::size_t>& points);
   // Advances group g's box (or auditor q's, with `audit`) by steps under gradient L;
   // returns what eq. 7.11 put in and could not take out.
-  std::pair<double, double> advance(md::System& box, const md::Mat3& L, double power, int steps, md::Mat3& stress,
-                                    double& owed);
-  // The stress power (GPa/ps) of the stress the continuum used on point q this step.
-  double power_of(const Points<Dim>& p, std::size_t q, const md::Mat3& box_stress) const;
+  // Eq. 7.11's power on a box: the rate of deformation in the box's frame (1/ps), which
+  // its own stress works against, and the viscous stresses' power (GPa/ps); a group's is
+  // its members' mean.
+  struct Power {
+    md::Mat3 rate{};
+    double viscous = 0.0;
+  };
+  std::pair<double, double> advance(md::System& box, const md::Mat3& L, const Power& power, int steps,
+                                    md::Mat3& stress, double& owed);
+  Power power_of(const Points<Dim>& p, std::size_t q) const;
   // Every rank's results into the groups and the points, after the ranks agree on the
   // first failure, if any.
   void publish(const Points<Dim>& p, std::optional<ranks::Failure> failed, bool strain, double dt,
@@ -217,6 +223,7 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   std::vector<md::Mat3> stress_;                     // by group, box frame, GPa (every rank)
   std::vector<std::array<double, 7>> shape_;         // by group: lx, ly, lz, xy, xz, yz, neighbour builds
   std::vector<double> temperature_;                  // by group, K (every rank)
+  std::vector<double> energy_;                       // by group, eV/amu, potential + thermal (every rank)
   // Eq. 7.11's removal a box could not take yet (eV, <= 0; by group, every rank; and by
   // auditor): carried into its next macro steps, never dropped (md_closure.cpp, advance).
   std::vector<double> owed_;
