@@ -40,9 +40,9 @@ void Progress::show(std::int64_t done, double frac, bool estimated) {
   const double rate = done > from_ ? (done - from_) / elapsed : 0.0;
   const double eta = rate > 0 ? (total - done) / rate : 0.0;
   const std::string shown_rate = unit_.empty() ? "" : fmt::format("  {:.3g} {}/s", items_ * rate, unit_);
-  fmt::print(stderr, "{}{}: {:5.1f}%  step {}/{}{}{}  elapsed {}  ETA {}{}", terminal_ ? "\r" : "", label_,
-             100.0 * frac, done, estimated ? "~" : "", total, shown_rate, format_duration(elapsed),
-             format_duration(eta), terminal_ ? "   " : "\n");
+  fmt::print(stderr, "{}{}: {:5.1f}%  step {}/{}{}{}{}  elapsed {}  ETA {}{}", terminal_ ? "\r" : "", label_,
+             100.0 * frac, done, estimated ? "~" : "", total, note_.empty() ? "" : "  " + note_, shown_rate,
+             format_duration(elapsed), format_duration(eta), terminal_ ? "   " : "\n");
   std::fflush(stderr);
 }
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 namespace mpmx {
 
@@ -19,6 +20,8 @@ class Progress {
   // (its time over its end time); the line shows the steps run and "~" the total
   // estimated from the fraction, and finish(done) says the steps actually run.
   void update(std::int64_t done, double fraction);
+  // A few words shown after the step count (dt = "cfl": the last step and what set it).
+  void note(std::string text) { note_ = std::move(text); }
   void finish();
   // A run that stopped early (a state gone non-finite): the steps it did.
   void finish(std::int64_t done);
@@ -29,7 +32,7 @@ class Progress {
   std::string label_;
   std::int64_t total_, from_;
   double items_ = 0;
-  std::string unit_;
+  std::string unit_, note_;
   bool active_, terminal_;
   clock::time_point start_, last_;
 };

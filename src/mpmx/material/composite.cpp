@@ -68,6 +68,12 @@ double Composite<Dim>::sound_speed(const Points<Dim>& p, std::size_t q) const {
 }
 
 template <int Dim>
+double Composite<Dim>::signal_speed(const Points<Dim>& p, std::size_t q) const {
+  const Part& part = part_of(q);
+  return part.law->signal_speed(block(p, part.begin, part.count), q - part.begin);
+}
+
+template <int Dim>
 double Composite<Dim>::stored_energy(const Points<Dim>& p, std::size_t q) const {
   const Part& part = part_of(q);
   return part.law->stored_energy(block(p, part.begin, part.count), q - part.begin);

@@ -28,6 +28,7 @@ class Composite final : public Material<Dim> {
   void initialize(const Points<Dim>& p) override;
   void update_stress(const Points<Dim>& p, double dt) override;
   double sound_speed(const Points<Dim>& p, std::size_t q) const override;
+  double signal_speed(const Points<Dim>& p, std::size_t q) const override;
   double stored_energy(const Points<Dim>& p, std::size_t q) const override;
   bool keeps_energy_account() const override {
     for (const auto& part : parts_)

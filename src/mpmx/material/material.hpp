@@ -54,8 +54,13 @@ class Material {
   // Stress at t^{n+1} from the velocity gradient grad_v (eq. 4.10) and the updated
   // volume; dt is the continuum step. A closure may keep per-point state (md_closure).
   virtual void update_stress(const Points<Dim>& p, double dt) = 0;
-  // Longitudinal sound speed of point q (for the CFL limit and artificial viscosity).
+  // Longitudinal sound speed of point q (for the artificial viscosity; the CFL limit's
+  // unless signal_speed says otherwise).
   virtual double sound_speed(const Points<Dim>& p, std::size_t q) const = 0;
+  // The fastest wave of point q at its current state, for the stable step (mpm/step_limit):
+  // the sound speed, unless the law's own stiffness grows with its compression beyond what
+  // sound_speed says (md_closure: its crystal's tangent modulus at the point's J).
+  virtual double signal_speed(const Points<Dim>& p, std::size_t q) const { return sound_speed(p, q); }
   // Energy stored in point q (elastic strain energy, or internal energy), for the
   // energy balance of run.json; zero where the law keeps no such account.
   virtual double stored_energy(const Points<Dim>&, std::size_t) const { return 0.0; }

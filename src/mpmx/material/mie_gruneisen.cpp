@@ -207,6 +207,11 @@ double MieGruneisenModel::wave_speed(int, double density, double pressure) const
   const double e = B > 0.0 ? (pressure - eos.reference_pressure(eta)) / B : 0.0;
   return std::sqrt(std::max(m.wave_modulus(eta, e), 0.0) / density);
 }
+Model::Shocked MieGruneisenModel::shocked(int dim, double up) const {
+  const auto& eos = m.eos;
+  const double us = eos.c0 + eos.s * std::abs(up), J = 1.0 - std::abs(up) / us;
+  return {J, wave_speed(dim, eos.rho0 / J, eos.rho0 * us * std::abs(up)), true};
+}
 std::unique_ptr<Material<1>> MieGruneisenModel::make1() const { return std::make_unique<MieGruneisen<1>>(m); }
 std::unique_ptr<Material<2>> MieGruneisenModel::make2() const { return std::make_unique<MieGruneisen<2>>(m); }
 std::unique_ptr<Material<3>> MieGruneisenModel::make3() const { return std::make_unique<MieGruneisen<3>>(m); }

@@ -171,6 +171,8 @@ struct MieGruneisenModel final : Model {
   // At density rho and pressure p: e from p = A(eta) + Gamma0 rho0 e (e = 0 if Gamma0 = 0),
   // then sqrt((K + 4 G / 3) / rho), the same in every dimension; NaN past eta = 1 / s.
   double wave_speed(int dim, double density, double pressure) const override;
+  // The linear Us = c0 + s up Hugoniot's state and the wave speed there.
+  Shocked shocked(int dim, double up) const override;
   std::unique_ptr<Material<1>> make1() const override;
   std::unique_ptr<Material<2>> make2() const override;
   std::unique_ptr<Material<3>> make3() const override;

@@ -85,6 +85,17 @@ class Model {
   virtual bool per_body() const { return true; }
   // Why a continuum step of dt does not suit the law ("" when it does).
   virtual std::string time_step_problem(double /*dt*/) const { return ""; }
+  // The step every continuum step must be a whole number of (md_closure: its MD step, in
+  // continuum units); 0 where any step does.
+  virtual double time_quantum() const { return 0.0; }
+  // The state a planar shock driven at particle speed `up` into the law at rest reaches:
+  // its J = V / V0 and its fastest wave speed there (`mpmx check` sets a fixed dt against
+  // it). Where the law has no Hugoniot of its own, J = 1 and the wave speed at rest.
+  struct Shocked {
+    double J = 1.0, wave_speed = 0.0;
+    bool from_hugoniot = false;
+  };
+  virtual Shocked shocked(int dim, double /*up*/) const { return {1.0, wave_speed(dim, density(), 0.0), false}; }
   // What each point costs beyond the continuum's arrays, for a continuum step of dt
   // (md_closure times one of its boxes for it: not for the deck's reading).
   virtual PointCost point_cost(double /*dt*/) const { return {}; }

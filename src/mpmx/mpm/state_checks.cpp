@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 
 #include "mpmx/core/error.hpp"
-#include "mpmx/mpm/boundary_speed.hpp"
 #include "mpmx/mpm/points.hpp"
 
 namespace mpmx::mpm {
@@ -37,35 +36,6 @@ void check_finite(const State<Dim>& s) {
   throw RunError(fmt::format("non-finite stress work in step {} (t = {})", s.step, s.time));
 }
 
-// The CFL step of the current state: cfl x the smallest cell side / max over points of
-// (sound speed + speed), the boundary's speed over the step among the speeds (a piston's
-// or a velocity face's: its neighbours take it in the step, at the largest sound speed);
-// maxima, so the same for any thread count.
-template <int Dim>
-double stable_dt(const State<Dim>& s, double cfl) {
-  const auto& p = s.particles;
-  const auto view = points(p);
-  double dx = s.grid.dx[0], fastest = 0.0, loudest = 0.0;
-  for (int d = 1; d < Dim; ++d) dx = std::min(dx, s.grid.dx[d]);
-  const std::size_t n = p.size();
-#pragma omp parallel for schedule(static) reduction(max : fastest, loudest) num_threads(s.threads) if (s.threads > 1)
-  for (std::size_t q = 0; q < n; ++q) {
-    double v2 = 0.0;
-    for (int a = 0; a < Dim; ++a) v2 += p.v[a][q] * p.v[a][q];
-    const double c = s.material->sound_speed(view, q);
-    fastest = std::max(fastest, c + std::sqrt(v2));
-    loudest = std::max(loudest, c);
-  }
-  if (!(fastest > 0.0) || !std::isfinite(fastest))
-    throw RunError(fmt::format("dt = \"cfl\": no finite wave speed in step {} (t = {})", s.step, s.time));
-  // The boundary's largest speed over the step the points alone allow (a piston's table
-  // may rise within it); the step it then allows is shorter, so its speeds were counted.
-  const double h = cfl * dx / fastest;
-  const double wall = boundary_speed(s.boundary, Dim, s.time, s.time + h);
-  if (!(wall > 0.0)) return h;
-  return cfl * dx / std::max(fastest, loudest + wall);
-}
-
 // A particle whose volume is no longer positive has failed (tension or compression
 // instability): checked where the volumes are read anyway, at the records.
 template <int Dim>
@@ -80,7 +50,6 @@ void check_volumes(const State<Dim>& s) {
 
 #define MPMX_STATE_CHECKS(D)                              \
   template void check_finite<D>(const State<D>&);         \
-  template double stable_dt<D>(const State<D>&, double);  \
   template void check_volumes<D>(const State<D>&);
 MPMX_STATE_CHECKS(1)
 MPMX_STATE_CHECKS(2)

@@ -98,6 +98,26 @@ Eigen::Matrix<double, Dim, Dim> tensor_viscosity_of(const Eigen::Matrix<double, 
   }
 }
 
+// The kinematic coefficient nu (q ~ rho nu D) of the tensor viscosity at gradient L, length
+// l, sound speed a: l (tau0 c_L a + c_q l |lambda_min|) where D has a negative eigenvalue,
+// else 0. Its explicit limit is the step's (mpm/step_limit.hpp).
+template <int Dim>
+double tensor_viscosity_coefficient(const Eigen::Matrix<double, Dim, Dim>& L, double l, double a, double c_L,
+                                    double c_q) {
+  using Mat = Eigen::Matrix<double, Dim, Dim>;
+  if constexpr (Dim == 1) return L(0, 0) < 0.0 ? l * (c_L * a - c_q * l * L(0, 0)) : 0.0;
+  const Mat D = 0.5 * (L + L.transpose());
+  Eigen::SelfAdjointEigenSolver<Mat> eig;
+  eig.computeDirect(D, Eigen::EigenvaluesOnly);
+  const double lambda = eig.eigenvalues().minCoeff();
+  if (!(lambda < 0.0)) return 0.0;
+  Eigen::SelfAdjointEigenSolver<Mat> sq;
+  sq.computeDirect(L * L.transpose(), Eigen::EigenvaluesOnly);
+  const double norm = std::sqrt(std::max(sq.eigenvalues().maxCoeff(), 0.0));
+  const double tau0 = norm > 0.0 ? std::abs(L.trace()) / norm : 0.0;
+  return l * (tau0 * c_L * a - c_q * l * lambda);
+}
+
 // Writes the viscous stress of every point into q (row-major [a * Dim + b], overwritten).
 // The caller adds it to the Cauchy stress where the internal force is formed; it never
 // goes into p.stress, which the laws read back as their state. Call it after

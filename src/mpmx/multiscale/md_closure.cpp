@@ -104,6 +104,14 @@ MdClosureProperties md_closure_properties(const md::PotentialSpec& spec, const u
   return r;
 }
 
+std::shared_ptr<const md::CompressionModuli> md_closure_stiffness(const md::Potential& pot,
+                                                                  const particles::LatticeSpec& lattice,
+                                                                  double a0) {
+  particles::LatticeSpec at = lattice;
+  at.constant = a0;
+  return std::make_shared<const md::CompressionModuli>(md::compression_moduli(pot, at));
+}
+
 int MdClosureConfig::atoms_per_point() const {
   if (lattice.plain_fcc()) return 4 * cells * cells * cells;
   particles::LatticeSpec unit = lattice;
@@ -162,7 +170,9 @@ int MdClosureConfig::md_steps(double dt_continuum) const {
 template <int Dim>
 MdClosure<Dim>::MdClosure(const MdClosureConfig& config)
     : cfg_(config), pot_(config.potential), props_(properties(equilibrium_of(pot_, config.lattice), config.units)),
-      batch_(config.threads) {}
+      batch_(config.threads) {
+  if (!cfg_.stiffness) cfg_.stiffness = md_closure_stiffness(pot_, cfg_.lattice, props_.equilibrium.lattice_constant);
+}
 
 template <int Dim>
 md::SystemOptions MdClosure<Dim>::box_options() const {
@@ -622,6 +632,13 @@ std::string MdClosure<Dim>::point_model_dump(std::size_t q, std::int64_t step,
 template <int Dim>
 double MdClosure<Dim>::sound_speed(const Points<Dim>& p, std::size_t q) const {
   return std::sqrt(modulus() / p.density(q));
+}
+
+template <int Dim>
+double MdClosure<Dim>::signal_speed(const Points<Dim>& p, std::size_t q) const {
+  const double rho = p.density(q);
+  const double m = cfg_.stiffness->modulus_at(props_.density / rho) / cfg_.units.stress_GPa;
+  return std::sqrt(std::max(m, modulus()) / rho);
 }
 
 namespace {

@@ -35,6 +35,7 @@
 #include "mpmx/core/ranks.hpp"
 #include "mpmx/core/units.hpp"
 #include "mpmx/material/material.hpp"
+#include "mpmx/md/compression_moduli.hpp"
 #include "mpmx/md/equilibrium.hpp"
 #include "mpmx/md/system.hpp"
 #include "mpmx/multiscale/batch.hpp"
@@ -77,6 +78,9 @@ struct MdClosureConfig {
   int threads = 0;                 // 0: OpenMP default
   int energy_consistency = -1;     // eq. 7.11: 1 on, 0 off, -1 the default (on in 2-D and 3-D)
   ShareOptions share;              // [material.md.share]: boxes shared by history
+  // The 0 K crystal's tangent moduli against its compression (md/compression_moduli.hpp),
+  // the points' stiffness for the stable step; made by the deck's reading, else by the law.
+  std::shared_ptr<const md::CompressionModuli> stiffness;
 
   // The atoms of one tile times cells^3 (4 cells^3 for fcc along the axes).
   int atoms_per_point() const;
@@ -93,6 +97,10 @@ struct MdClosureProperties {
   double cutoff = 0.0;          // the potential's, Angstrom
 };
 // Of fcc along the axes unless `lattice` names another crystal (its box-frame constants).
+// The compression table (md/compression_moduli.hpp) of the same crystal at its 0 K constant.
+std::shared_ptr<const md::CompressionModuli> md_closure_stiffness(const md::Potential& pot,
+                                                                  const particles::LatticeSpec& lattice,
+                                                                  double a0);
 MdClosureProperties md_closure_properties(const md::PotentialSpec& potential, const units::UnitSystem& u,
                                           const particles::LatticeSpec& lattice = {});
 
@@ -133,6 +141,9 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   bool runs_point_model(std::size_t) const override { return true; }
   // sqrt(C11 / rho): the 0 K uniaxial-strain wave speed, for the viscosity.
   double sound_speed(const Points<Dim>& p, std::size_t q) const override;
+  // sqrt(M(J) / rho) for the stable step: M the crystal's largest tangent modulus at the
+  // point's J (the 0 K crystal's density over its own), never below C11.
+  double signal_speed(const Points<Dim>& p, std::size_t q) const override;
   // The groups and every rank's boxes in group order, written by rank 0 alone: the file
   // is the single-process one. load keeps this rank's share, so any rank count resumes it.
   void save(std::ostream& out) const override;

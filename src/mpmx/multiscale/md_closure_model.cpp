@@ -44,6 +44,19 @@ std::string MdClosureModel::time_step_problem(double dt) const {
                      md.dt);
 }
 
+material::Model::Shocked MdClosureModel::shocked(int dim, double up) const {
+  Shocked r{1.0, wave_speed(dim, rho, 0.0), false};
+  if (!md.stiffness || !(up != 0.0)) return r;
+  for (int a = 0; a < dim; ++a) {
+    const double J = md.stiffness->shock_compression(a, std::abs(up), rho, md.units.stress_GPa);
+    if (!std::isfinite(J)) continue;
+    // The points' density is the 0 K crystal's; J is against it.
+    const double c = std::sqrt(std::max(md.stiffness->modulus_at(J) / md.units.stress_GPa, c11) * J / rho);
+    if (!r.from_hugoniot || c > r.wave_speed) r = {J, c, true};
+  }
+  return r;
+}
+
 material::PointCost MdClosureModel::point_cost(double dt) const {
   material::PointCost c;
   const double n[3] = {double(md.cells), double(md.cells), double(md.cells)};
@@ -240,6 +253,7 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
       // its atoms per A^3 (the budget takes another crystal as the fcc box of its atoms)
       r->number_density = static_cast<double>(r->md.atoms_per_point()) / box_volume(r->md, r->a0);
       r->cutoff = props.cutoff;
+      r->md.stiffness = md_closure_stiffness(pot, r->md.lattice, r->a0);
     } catch (const std::exception& e) {
       table.check(false, "potential", e.what());
     }

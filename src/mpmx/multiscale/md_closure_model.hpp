@@ -28,6 +28,10 @@ struct MdClosureModel final : material::Model {
   double uniaxial_modulus() const override { return c11; }
   // A continuum step must be a whole number of MD steps.
   std::string time_step_problem(double dt) const override;
+  double time_quantum() const override { return md.dt / md.units.time_ps; }
+  // From the crystal's uniaxial curve and the Rayleigh line (md/compression_moduli.hpp),
+  // along whichever of the dim axes gives the fastest wave.
+  Shocked shocked(int dim, double up) const override;
   // The box of a point as it is kept between macro steps (md/budget's kept box), the
   // closure's own records of the point, and its atom-steps: one box per point, the most
   // sharing can cost (it cannot know the groups before the run). The lists and buffers of

@@ -15,6 +15,7 @@
 #include "mpmx/app/mpm/setup.hpp"
 #include "mpmx/mpm/points.hpp"
 #include "mpmx/mpm/state_checks.hpp"
+#include "mpmx/mpm/step_limit.hpp"
 #include "mpmx/mpm/step.hpp"
 
 namespace {

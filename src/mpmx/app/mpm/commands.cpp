@@ -17,6 +17,7 @@
 #include "mpmx/core/ranks.hpp"
 #include "mpmx/app/mpm/deck.hpp"
 #include "mpmx/app/mpm/describe.hpp"
+#include "mpmx/app/mpm/step_notes.hpp"
 #include "mpmx/app/mpm/preflight.hpp"
 #include "mpmx/app/mpm/run.hpp"
 #include "mpmx/app/mpm/unit_slips.hpp"
@@ -100,6 +101,7 @@ void check_continuum(const std::string& deck, bool force, int ranks) {
   if (cfg.material.spec)
     for (const std::string& line : cfg.material.spec->check_notes()) fmt::print("  {}\n", line);
   for (const std::string& line : describe_pistons_and_gauges(cfg)) fmt::print("  {}\n", line);
+  for (const std::string& line : describe_time_step(cfg)) fmt::print("  {}\n", line);
   if (!pre.pending.empty()) fmt::print("  {}\n", pre.pending);
   for (const std::string& slip : unit_slips(cfg)) fmt::print("  warning: {}\n", slip);
   if (!(budget.seconds <= kWorkLimitSeconds) && !force)
@@ -194,6 +196,7 @@ void add_mpm_commands(CLI::App& app) {
         r.steps_now == r.steps ? std::string() : fmt::format(" ({} of them now, after --resume)", r.steps_now);
     fmt::print("{}: {} step{}{} in {:.3f} s -> {}/run.json\n", cfg.id, r.steps, r.steps == 1 ? "" : "s", now,
                r.wall_seconds, out);
+    if (!r.time_steps.empty()) fmt::print("  time: {}\n", r.time_steps);
     for (const auto& [f, e] : r.errors)
       fmt::print("  error {:<12} l1 {:.3e}  l2 {:.3e}  peak {:.3e}\n", f, e.l1, e.l2, e.peak);
     for (const auto& [f, order] : r.convergence_order)

@@ -121,6 +121,10 @@ struct MpmConfig {
   double dt = 0.0, end = 0.0;
   bool cfl_dt = false;
   double cfl = 0.5;
+  // dt = "cfl": the most any point's volume may change in one step (|tr L| dt, L the last
+  // step's velocity gradient; mpm/step_limit.hpp)
+  double max_volume_strain = 0.1;
+  double cfl_limit = 1.0;  // a number dt: the largest Courant number its initial state may take
   // [time] energy_growth: the growth of the total energy (kinetic + stored, less the
   // boundary's work) over the initial scale that ends a run with status "energy_growth"
   // and a warning; energy_growth_stop: the growth that stops it at once (laws that keep

@@ -517,15 +517,21 @@ double read_time(Section& t, MpmConfig& c) {
     c.cfl_dt = t.choice("dt", {"cfl"}) == "cfl";
     c.cfl = t.number("cfl", 0.5);
     t.check(c.cfl > 0.0 && c.cfl <= 1.0, "cfl", "must lie in (0, 1]");
+    c.max_volume_strain = t.number("max_volume_strain", c.max_volume_strain);
+    t.check(c.max_volume_strain > 0.0 && c.max_volume_strain < 1.0, "max_volume_strain",
+            "must lie in (0, 1): the most a point's volume may change in one step");
   } else {
     c.dt = t.number("dt");
     t.positive("dt", c.dt);
-    if (t.has("cfl")) t.check(false, "cfl", "only dt = \"cfl\" (2-D, 3-D) reads it; a fixed dt is checked by cfl_limit");
+    for (const char* key : {"cfl", "max_volume_strain"})
+      if (t.has(key))
+        t.check(false, key, "only dt = \"cfl\" (2-D, 3-D) reads it; a fixed dt is checked by cfl_limit");
   }
   c.end = t.number("end");
   t.positive("end", c.end);
   const double cfl_limit = t.number("cfl_limit", 1.0);
   t.positive("cfl_limit", cfl_limit);
+  c.cfl_limit = cfl_limit;
   c.energy_growth = t.number("energy_growth", 0.1);
   t.positive("energy_growth", c.energy_growth);
   c.energy_growth_stop = t.number("energy_growth_stop", std::max(1.0, c.energy_growth));
@@ -659,9 +665,32 @@ void check_time_step(Section& t, MpmConfig& c, double cfl_limit) {
                           c.cfl_dt ? " (the CFL condition's at the start)" : "", kMaxSteps));
     else if (!c.cfl_dt && std::abs(c.dt * static_cast<double>(c.steps()) - c.end) > 1e-9 * c.end)
       t.check(false, "end", fmt::format("is not a whole number of steps of dt = {}", c.dt));
-    if (const std::string why = mat.spec ? mat.spec->time_step_problem(c.dt) : ""; !why.empty())
+    // dt = "cfl" takes whole steps of the law's quantum (first_cfl_step): nothing to refuse.
+    if (const std::string why = mat.spec && !c.cfl_dt ? mat.spec->time_step_problem(c.dt) : ""; !why.empty())
       t.check(false, "dt", why);
   }
+}
+
+// dt = "cfl" with a law whose steps are whole numbers of a quantum (md_closure's MD step):
+// every step lands on the record times, so each must be a whole number of quanta too.
+void check_record_quanta(Section& root, Section& t, const MpmConfig& c) {
+  const double quantum = time_quantum(c);
+  if (!c.cfl_dt || !(quantum > 0.0)) return;
+  auto whole = [quantum](double t) {
+    const double k = t / quantum;
+    return std::abs(k - std::round(k)) <= 1e-6 * std::max(1.0, k);
+  };
+  const std::string why = fmt::format(
+      "is not a whole number of MD steps of material.md.dt ({:.6g} in the deck's time unit): with dt = \"cfl\" every "
+      "continuum step is a whole number of MD steps and lands on each record time",
+      quantum);
+  if (!whole(c.end)) t.check(false, "end", fmt::format("= {} {}", c.end, why));
+  Section o = root.optional_table("output");
+  for (double x : c.output_times)
+    if (!whole(x)) o.check(false, "times", fmt::format("holds {}, which {}", x, why));
+  Section r = root.optional_table("reference");
+  for (double x : c.reference.times)
+    if (!whole(x)) r.check(false, "times", fmt::format("holds {}, which {}", x, why));
 }
 
 MpmConfig read(Deck& deck) {
@@ -696,7 +725,10 @@ MpmConfig read(Deck& deck) {
   if (laws_complete)
     for (auto& [table, work] : later) work(table);
   material_figures(c);
-  if (laws_complete) check_time_step(t, c, cfl_limit);
+  if (laws_complete) {
+    check_time_step(t, c, cfl_limit);
+    check_record_quanta(root, t, c);
+  }
   deck.finish();
   return c;
 }

@@ -6,7 +6,7 @@
 #include <exception>
 
 #include "mpmx/app/mpm/setup.hpp"
-#include "mpmx/mpm/state_checks.hpp"
+#include "mpmx/mpm/step_limit.hpp"
 #include "mpmx/mpm/step.hpp"
 
 namespace mpmx::app {
@@ -24,7 +24,7 @@ double time_steps(const MpmConfig& c) {
   mpm::State<Dim> s = make_state<Dim>(c, true, 1);
   const double points = static_cast<double>(s.particles.size());
   if (!(points > 0)) return 0.0;
-  const auto dt = [&] { return c.cfl_dt ? mpm::stable_dt(s, c.cfl) : c.dt; };
+  const auto dt = [&] { return c.cfl_dt ? mpm::step_limit(s, {c.cfl, c.max_volume_strain}).dt : c.dt; };
   mpm::step(s, dt());  // the first step sizes the scratch arrays: not timed
   const auto t0 = std::chrono::steady_clock::now();
   double seconds = 0;

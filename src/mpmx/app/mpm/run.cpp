@@ -21,6 +21,7 @@
 #include "mpmx/app/mpm/run_checkpoint.hpp"
 #include "mpmx/app/mpm/run_summary.hpp"
 #include "mpmx/app/mpm/setup.hpp"
+#include "mpmx/app/mpm/signal_speed.hpp"
 #include "mpmx/app/mpm/vtk_output.hpp"
 #include "mpmx/app/mpm/xt_diagram.hpp"
 #include "mpmx/app/run_folder.hpp"
@@ -33,6 +34,7 @@
 #include "mpmx/mpm/nodal_fields.hpp"
 #include "mpmx/mpm/piston_grid.hpp"
 #include "mpmx/mpm/state_checks.hpp"
+#include "mpmx/mpm/step_limit.hpp"
 #include "mpmx/mpm/step.hpp"
 #include "mpmx/mpm/sums.hpp"
 
@@ -48,7 +50,7 @@ struct Schedule {
   std::int64_t steps;
   std::set<std::int64_t> record_steps, compare_steps;
   std::int64_t energy_every;
-  std::vector<double> record_times;
+  std::vector<double> record_times, compare_times;
 
   explicit Schedule(const MpmConfig& c) : steps(c.steps()), record_steps{0, steps} {
     for (double t : c.output_times) record_steps.insert(std::llround(t / c.dt));
@@ -58,8 +60,17 @@ struct Schedule {
     }
     energy_every = std::max<std::int64_t>(1, steps / 2000);
     record_times.assign(c.output_times.begin(), c.output_times.end());
+    record_times.insert(record_times.end(), c.reference.times.begin(), c.reference.times.end());
     record_times.push_back(c.end);
     std::sort(record_times.begin(), record_times.end());
+    compare_times = c.reference.times;
+  }
+
+  // dt = "cfl": whether the step that landed at t landed on a reference time.
+  bool compares_at(double t) const {
+    for (double r : compare_times)
+      if (std::abs(t - r) <= 1e-12 * std::max(1.0, r)) return true;
+    return false;
   }
 };
 
@@ -88,7 +99,7 @@ class ContinuumRun {
     // A resumed run takes these from its checkpoint, and its law's per-point state is not
     // loaded yet: nothing is summed before the load.
     const Sums s0 = o.resume ? Sums{} : sums(s_);
-    carry_ = {s0.momentum, s0.kinetic, s0.mass, s0.abs_momentum, s0.kinetic, s0.internal, 0.0};
+    carry_ = {s0.momentum, s0.kinetic, s0.mass, s0.abs_momentum, s0.kinetic, s0.internal, 0.0, StepLog{}};
     Output::Marks marks;
     // Every rank reads the checkpoint (and keeps its block of the laws' state).
     if (o.resume) ranks::together([&] {
@@ -132,15 +143,21 @@ class ContinuumRun {
         gauges_->sample(s_, out_.get());
         if (xt_) xt_->sample(s_, *out_);
         const bool last = c_.cfl_dt ? !(s_.time < c_.end) : n == schedule_.steps;
-        if (schedule_.compare_steps.count(n) && comparison_) comparison_->compare(s_, book_);
+        const bool compare =
+            c_.cfl_dt ? at_record_time && schedule_.compares_at(s_.time) : schedule_.compare_steps.count(n) > 0;
+        if (compare && comparison_) comparison_->compare(s_, book_);
         if (due_record(n, at_record_time)) record();
         if (dumps_ && c_.md_dump_every > 0 && n % c_.md_dump_every == 0) dumps_->write(s_);
         if (n % schedule_.energy_every == 0 || last) {
           check_volumes(s_);
           observe();
         }
-        if (c_.cfl_dt) progress.update(n, s_.time / c_.end);  // the steps ahead are not known
-        else progress.update(n);
+        if (c_.cfl_dt) {  // the steps ahead are not known
+          progress.note(carry_.steps.last());
+          progress.update(n, s_.time / c_.end);
+        } else {
+          progress.update(n);
+        }
         if (folder_.checkpoints && !last && checkpoint_or_stop(n)) {
           r_.interrupted = true;
           break;
@@ -176,8 +193,9 @@ class ContinuumRun {
 
   bool done(std::int64_t n) const { return c_.cfl_dt ? !(s_.time < c_.end) : n > schedule_.steps; }
 
-  // Step n: dt from the deck, or (dt = "cfl") from the state, shortened to land on the
-  // next record time. True when it landed on one.
+  // Step n: dt from the deck, or (dt = "cfl") from the state (mpm/step_limit.hpp), in
+  // whole quanta of the law's (md_closure: MD steps) and shortened to land on the next
+  // record time. True when it landed on one.
   bool advance(std::int64_t n) {
     if (!c_.cfl_dt) {
       step(s_, c_.dt);
@@ -188,11 +206,20 @@ class ContinuumRun {
     const double t0 = s_.time;
     const auto next = std::upper_bound(times.begin(), times.end(), t0 * (1.0 + 1e-12));
     const double t_next = next == times.end() ? c_.end : *next;
-    double h = stable_dt(s_, c_.cfl);
-    const bool lands = t0 + h >= t_next * (1.0 - 1e-12);
-    if (lands) h = t_next - t0;
+    const StepLimit limit = step_limit(s_, {c_.cfl, c_.max_volume_strain});
+    double h = whole_quanta(limit.dt, quantum_), t1 = t0 + h;
+    if (quantum_ > 0.0) {
+      // Times as whole quanta: the record times are (the deck's reading), and so is every
+      // step, so no sum of steps drifts off them.
+      const double k0 = std::round(t0 / quantum_), k = std::round(h / quantum_);
+      t1 = (k0 + k) * quantum_;
+    }
+    const double h_state = h;
+    const bool lands = t1 >= t_next * (1.0 - 1e-12);
+    if (lands) h = t_next - t0, t1 = t_next;
     step(s_, h);
-    s_.time = lands ? t_next : t0 + h;
+    s_.time = t1;
+    carry_.steps.add(n, t1, h, h < h_state ? StepLimiter::record_time : limit.by, limit);
     return lands;
   }
 
@@ -390,6 +417,10 @@ class ContinuumRun {
     r_.errors = book_.errors;
     r_.gauges = gauges_->traces();
     r_.front_speed = book_.front_speed;
+    if (c_.cfl_dt) {
+      rec_.set("time_steps", carry_.steps.record());
+      r_.time_steps = carry_.steps.summary();
+    }
     record_run(c_, r_, failure_, checkpoint_path(o_.out_dir), rec_);
     if (!o_.out_dir.empty() && ranks::root()) {
       if (out_) out_->close();  // before run.json: a table the disk cut short fails the run
@@ -463,6 +494,7 @@ class ContinuumRun {
   std::chrono::steady_clock::time_point t0_;
   double last_checkpoint_ = 0.0;
   std::int64_t first_step_ = 0;  // where this invocation started
+  const double quantum_ = time_quantum(c_);  // dt = "cfl": steps are whole numbers of it (0: any)
 };
 
 }  // namespace
@@ -500,6 +532,7 @@ RunSummary run_any(const MpmConfig& c, const RunOptions& o) {
     s.energy_growth = r.energy_growth;
     s.energy_grew = r.energy_grew;
     s.energy_balance_error = r.energy_scale() > 0 ? r.energy_error() / r.energy_scale() : 0.0;
+    s.time_steps = r.time_steps;
     return s;
   };
   if (c.convergence_levels > 1) {

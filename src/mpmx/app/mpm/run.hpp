@@ -60,6 +60,7 @@ struct RunResultOf {
   double rank_imbalance = 1.0;                // the slowest rank's MD time over the mean
   int rebalances = 0;                         // checkpoints at which boxes moved between ranks
   bool interrupted = false;                   // stopped by Ctrl-C (or stop_after): checkpoint written
+  std::string time_steps;                     // dt = "cfl": the steps' summary line (app/mpm/step_log.hpp)
   // The total energy's growth (kinetic + stored less the work put in, over the
   // initial scale) at the end or where the run stopped; NaN where the law keeps no
   // energy account. Past time.energy_growth the run's status is "energy_growth".
@@ -108,6 +109,7 @@ struct RunSummary {
   bool energy_grew = false;
   double energy_balance_error = 0.0;    // run.json's conservation.energy.relative_error
   std::map<std::string, double> convergence_order;  // a convergence study's L2 order by field
+  std::string time_steps;                           // as RunResultOf's
 };
 // Runs a deck of any dimension (a convergence study when convergence.levels > 1).
 RunSummary run_any(const MpmConfig& c, const RunOptions& o);

@@ -58,6 +58,7 @@ void save_run_checkpoint(const std::string& path, const MpmConfig& c, const mpm:
   table << rec.table();
   w.text(table.str());
   w.marks(marks);
+  carry.steps.save(w);
   if (file) file->commit();
 }
 
@@ -96,6 +97,7 @@ Output::Marks load_run_checkpoint(const std::string& path, const MpmConfig& c, m
     throw in.refuse(at_rec, fmt::format("its run record does not parse: {}", e.what()));
   }
   const Output::Marks marks = in.marks();
+  carry.steps.load(in);
   in.end();
   return marks;
 }

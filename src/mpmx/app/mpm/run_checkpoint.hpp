@@ -10,6 +10,7 @@
 #include "mpmx/app/mpm/comparison.hpp"
 #include "mpmx/app/mpm/config.hpp"
 #include "mpmx/app/mpm/output.hpp"
+#include "mpmx/app/mpm/step_log.hpp"
 #include "mpmx/io/run_record.hpp"
 #include "mpmx/mpm/state.hpp"
 
@@ -21,6 +22,7 @@ struct RunCarry {
   double kinetic_initial = 0.0, mass_particles = 0.0, momentum_scale = 0.0, max_kinetic = 0.0;
   double stored_initial = 0.0;
   double wall_before = 0.0;  // wall time of the earlier processes of a resumed run
+  StepLog steps;             // dt = "cfl": the steps taken so far
 };
 
 template <int Dim>

@@ -27,6 +27,11 @@ double initial_signal_speed(const MpmConfig& c) {
   double cs_max = mat.spec->wave_speed(dim, mat.density, pmax);
   for (const auto& body : c.bodies)
     if (body.material) cs_max = std::max(cs_max, body.material->wave_speed(dim, body.material->density(), pmax));
+  return cs_max + fastest_drive(c);
+}
+
+double fastest_drive(const MpmConfig& c) {
+  const int dim = c.dim;
   // A body's fastest point: its velocity plus its spin times its radius (|omega| r_max).
   double vmax = 0.0;
   for (const auto& body : c.bodies) {
@@ -38,10 +43,23 @@ double initial_signal_speed(const MpmConfig& c) {
   for (int f = 0; f < 2 * dim; ++f)
     if (c.boundary.face[f].type == BoundarySide::Type::piston)
       for (double v : c.boundary.face[f].piston.speeds) vmax = std::max(vmax, std::abs(v));
-  vmax = std::max(vmax, mpm::boundary_speed(c.boundary, dim, 0.0, 0.0));  // a velocity face's
-  return cs_max + vmax;
+  return std::max(vmax, mpm::boundary_speed(c.boundary, dim, 0.0, 0.0));  // a velocity face's
 }
 
-double first_cfl_step(const MpmConfig& c) { return c.cfl * smallest_cell(c) / initial_signal_speed(c); }
+double time_quantum(const MpmConfig& c) {
+  double q = c.material.spec ? c.material.spec->time_quantum() : 0.0;
+  for (const auto& body : c.bodies)
+    if (body.material) q = std::max(q, body.material->time_quantum());
+  return q;
+}
+
+double whole_quanta(double dt, double quantum) {
+  if (!(quantum > 0.0)) return dt;
+  return std::max(1.0, std::floor(dt / quantum * (1.0 + 1e-12))) * quantum;
+}
+
+double first_cfl_step(const MpmConfig& c) {
+  return whole_quanta(c.cfl * smallest_cell(c) / initial_signal_speed(c), time_quantum(c));
+}
 
 }  // namespace mpmx::app
