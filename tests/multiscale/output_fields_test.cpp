@@ -92,9 +92,10 @@ TEST(OutputFields, OneDMdBarWritesTheBoxesTemperatureAndLateralStressesAndDumpsC
   ASSERT_EQ(r.steps, 4);
 
   const CsvTable t = read_table(o.out_dir + "/particles.csv");
-  const std::vector<std::string> tail{"pressure", "body", "material", "temperature", "stress_yy", "stress_zz"};
-  ASSERT_GE(t.header.size(), 15u);
-  EXPECT_EQ(std::vector<std::string>(t.header.begin() + 9, t.header.begin() + 15), tail);
+  const std::vector<std::string> tail{"pressure",    "body",           "material", "temperature",
+                                      "internal_energy", "stress_yy", "stress_zz"};
+  ASSERT_GE(t.header.size(), 16u);
+  EXPECT_EQ(std::vector<std::string>(t.header.begin() + 9, t.header.begin() + 16), tail);
   const auto& closure = dynamic_cast<const multiscale::MdClosure<1>&>(*r.state.material);
   const double gpa = units::unit_system("nm_ps_GPa")->stress_GPa;
   const std::size_t n = r.state.particles.size();
@@ -105,6 +106,13 @@ TEST(OutputFields, OneDMdBarWritesTheBoxesTemperatureAndLateralStressesAndDumpsC
     const double T = std::stod(row.at("temperature")), yy = std::stod(row.at("stress_yy")),
                  zz = std::stod(row.at("stress_zz"));
     EXPECT_NEAR(T, box.temperature(), 1e-9 * box.temperature()) << q;
+    // The box's energy per unit mass above the 0 K crystal, in (km/s)^2 (1 eV/amu is
+    // 1 / mvv2e (A/ps)^2, 10 A/ps a km/s).
+    const double atoms = static_cast<double>(box.atoms().size()), m = box.type_mass()[0];
+    const double e = ((box.potential_energy() + box.thermal_kinetic_energy()) / atoms -
+                      closure.equilibrium().energy_per_atom) / m / (units::mvv2e * 100.0);
+    EXPECT_NEAR(std::stod(row.at("internal_energy")), e, 1e-9 * std::abs(e)) << q;
+    EXPECT_GT(e, 0.0) << q;
     EXPECT_GT(T, 50.0) << q;  // started at 2 x 300 K and relaxed: hot, not the 0 K lattice
     EXPECT_NEAR(yy, box.stress_gpa()[4] / gpa, 1e-9 * std::abs(yy) + 1e-12) << q;
     EXPECT_NEAR(zz, box.stress_gpa()[8] / gpa, 1e-9 * std::abs(zz) + 1e-12) << q;

@@ -230,9 +230,12 @@ TEST_P(ShippedDeck, RunsItsFirstSteps) {
   const double cpu0 = children_cpu_seconds();
   const auto r = mpmx::test::run_cli(args);
   const double cpu = children_cpu_seconds() - cpu0;
-  // "interrupted: step S of ...": S is N, or for md and dpd the first record at or past N.
-  const auto at = r.output.find("interrupted: step ");
-  const long long step = at == std::string::npos ? -1 : std::atoll(r.output.c_str() + at + 18);
+  // "interrupted: step S of ...": S is N, or for md and dpd the first record at or past N;
+  // a convergence study (which does not resume) says "..., at step S; it does not resume".
+  const auto at = r.output.find("interrupted: step "), level_at = r.output.find(", at step ");
+  const long long step = at != std::string::npos         ? std::atoll(r.output.c_str() + at + 18)
+                         : level_at != std::string::npos ? std::atoll(r.output.c_str() + level_at + 10)
+                                                         : -1;
   // A convergence study (N4) runs its levels in out/level_K; a stop ends it in the first.
   const fs::path run = fs::exists(out / "run.json") ? out : out / "level_0";
   const std::string json = mpmx::test::slurp(run / "run.json");

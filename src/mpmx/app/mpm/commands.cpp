@@ -186,6 +186,10 @@ void add_mpm_commands(CLI::App& app) {
     const auto r = run_any(cfg, o);
     if (r.interrupted) {
       ranks::mark_agreed();  // every rank stopped at the same step
+      if (cfg.convergence_levels > 1)  // its levels write under OUT/level_K and do not resume
+        throw Interrupted(fmt::format("a convergence study stopped in one of its {} levels, at step {}; it does not "
+                                      "resume: run it afresh (mpmx run {} --out {} --overwrite)",
+                                      cfg.convergence_levels, r.steps, args->deck, out));
       throw Interrupted(fmt::format("step {} of {}{} written to {}; continue with: mpmx run {} --out {} --resume",
                                     r.steps, cfg.cfl_dt ? "about " : "", cfg.steps(), checkpoint_path(out),
                                     args->deck, out));
