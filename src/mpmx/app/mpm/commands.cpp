@@ -190,9 +190,11 @@ void add_mpm_commands(CLI::App& app) {
         throw Interrupted(fmt::format("a convergence study stopped in one of its {} levels, at step {}; it does not "
                                       "resume: run it afresh (mpmx run {} --out {} --overwrite)",
                                       cfg.convergence_levels, r.steps, args->deck, out));
-      throw Interrupted(fmt::format("step {} of {}{} written to {}; continue with: mpmx run {} --out {} --resume",
-                                    r.steps, cfg.cfl_dt ? "about " : "", cfg.steps(), checkpoint_path(out),
-                                    args->deck, out));
+      // dt = "cfl": the step count is not known ahead (the first step's would mislead), the time is.
+      const std::string where = cfg.cfl_dt ? fmt::format("{} (t = {:.6g} of {})", r.steps, r.time, cfg.end)
+                                           : fmt::format("{} of {}", r.steps, cfg.steps());
+      throw Interrupted(fmt::format("step {} written to {}; continue with: mpmx run {} --out {} --resume", where,
+                                    checkpoint_path(out), args->deck, out));
     }
     if (!ranks::root()) return;
     // After --resume the steps and the time are the whole run's: say this invocation's steps too.

@@ -523,6 +523,7 @@ RunSummary run_any(const MpmConfig& c, const RunOptions& o) {
     s.wall_seconds = r.wall_seconds;
     s.particles = r.state.particles.size();
     s.interrupted = r.interrupted;
+    s.time = r.state.time;
     s.errors = r.errors;
     s.md_atom_steps = r.md_atom_steps;
     s.threads = r.threads;

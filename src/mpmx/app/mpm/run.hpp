@@ -110,6 +110,7 @@ struct RunSummary {
   double energy_balance_error = 0.0;    // run.json's conservation.energy.relative_error
   std::map<std::string, double> convergence_order;  // a convergence study's L2 order by field
   std::string time_steps;                           // as RunResultOf's
+  double time = 0.0;                                // where the run ended (stopped)
 };
 // Runs a deck of any dimension (a convergence study when convergence.levels > 1).
 RunSummary run_any(const MpmConfig& c, const RunOptions& o);
