@@ -112,4 +112,11 @@ TEST(MdClosureCfl, CheckStatesTheStepAndWarnsOfAFixedStepPastTheShockedLimit) {
   const std::string s = joined(app::describe_time_step(small));
   EXPECT_EQ(s.find("warning"), std::string::npos) << s;
   EXPECT_NE(s.find("is within it"), std::string::npos) << s;
+  // The tensor viscosity at a front one cell wide tightens the limit to about 0.02 ps
+  // (Q = 1.5 c + 2 up = 17 km/s): the same 0.05 is past it.
+  const auto viscous = app::read_mpm_deck_text(
+      flyer("[viscosity]\ntensor = true\n[time]\ndt = 0.05\nend = 0.35\n", "", 2.5), "viscous");
+  const std::string v = joined(app::describe_time_step(viscous));
+  EXPECT_NE(v.find("with the tensor viscosity at a front one cell wide"), std::string::npos) << v;
+  EXPECT_NE(v.find("warning: time.dt = 0.05 exceeds"), std::string::npos) << v;
 }

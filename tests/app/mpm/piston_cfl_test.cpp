@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <string>
 
 #include "mpm_deck_test_util.hpp"
@@ -17,6 +18,7 @@
 #include "mpmx/mpm/state_checks.hpp"
 #include "mpmx/mpm/step_limit.hpp"
 #include "mpmx/mpm/step.hpp"
+#include "multiscale/ms_test_util.hpp"
 
 namespace {
 
@@ -107,4 +109,36 @@ TEST(PistonCfl, ATableRisingWithinTheStepCountsItsEnd) {
   const double h = mpm::stable_dt(s, c.cfl);
   const double c0 = s.material->sound_speed(mpm::points(s.particles), 0);
   EXPECT_NEAR(h, c.cfl * s.grid.dx[1] / (c0 + 10.0), 1e-9 * h);  // the table's 10 km/s reached within h
+}
+
+// The x-t table of a dt = "cfl" run takes a row at each 1/400 of the run's time (and at
+// the start), however many steps the state makes: not every N steps with N estimated
+// from the first step.
+TEST(PistonCfl, XtRowsFollowTheRunsTimeNotItsFirstStep) {
+  std::string deck = mpmx::test::replace(kPiston2d, "cells = [40, 1]", "cells = [200, 1]");
+  deck = mpmx::test::replace(deck, "upper = [10.0, 0.25]", "upper = [10.0, 0.05]");
+  deck = mpmx::test::replace(deck, "velocity = 10.0 }", "velocity = 0.1 }");
+  deck = mpmx::test::replace(deck, "end = 0.1", "end = 3.5");
+  const auto c = app::read_mpm_deck_text(deck, "slow_piston.toml");
+  ASSERT_TRUE(c.write_xt);
+  app::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  o.out_dir = test::scratch_dir("piston_cfl_xt");
+  const auto r = app::run_mpm_dim<2>(c, o);
+  ASSERT_GT(r.steps, 500);  // more steps than rows: each row is a time's, not a step's
+  std::ifstream in(o.out_dir + "/xt_sigma_xx.csv");
+  std::string line;
+  std::getline(in, line);  // the header
+  std::vector<double> t;
+  while (std::getline(in, line)) t.push_back(std::stod(line.substr(0, line.find(','))));
+  ASSERT_EQ(t.size(), 401u);
+  EXPECT_EQ(t.front(), 0.0);
+  EXPECT_DOUBLE_EQ(t.back(), 3.5);
+  // Each row at the first step at or past its multiple of 3.5 / 400, within a step.
+  const double step = 3.5 / static_cast<double>(r.steps) * 2.0;
+  for (std::size_t k = 1; k < t.size(); ++k) {
+    EXPECT_GE(t[k], k * 3.5 / 400.0 * (1 - 1e-9)) << k;
+    EXPECT_LT(t[k] - k * 3.5 / 400.0, step) << k;
+  }
 }

@@ -22,6 +22,7 @@
 #include "mpmx/app/mpm/run_summary.hpp"
 #include "mpmx/app/mpm/setup.hpp"
 #include "mpmx/app/mpm/signal_speed.hpp"
+#include "mpmx/app/mpm/time_rows.hpp"
 #include "mpmx/app/mpm/vtk_output.hpp"
 #include "mpmx/app/mpm/xt_diagram.hpp"
 #include "mpmx/app/run_folder.hpp"
@@ -50,6 +51,7 @@ struct Schedule {
   std::int64_t steps;
   std::set<std::int64_t> record_steps, compare_steps;
   std::int64_t energy_every;
+  double energy_interval = 0.0;  // dt = "cfl": by time (time_rows.hpp)
   std::vector<double> record_times, compare_times;
 
   explicit Schedule(const MpmConfig& c) : steps(c.steps()), record_steps{0, steps} {
@@ -59,6 +61,7 @@ struct Schedule {
       record_steps.insert(std::llround(t / c.dt));
     }
     energy_every = std::max<std::int64_t>(1, steps / 2000);
+    if (c.cfl_dt) energy_interval = c.end / 2000.0;
     record_times.assign(c.output_times.begin(), c.output_times.end());
     record_times.insert(record_times.end(), c.reference.times.begin(), c.reference.times.end());
     record_times.push_back(c.end);
@@ -135,20 +138,24 @@ class ContinuumRun {
         record();
         observe();
         gauges_->sample(s_, out_.get());
-        if (xt_) xt_->sample(s_, *out_);
+        if (xt_) xt_->sample(s_, s_.time, *out_);
       }
       for (std::int64_t n = s_.step + 1; !done(n); ++n) {
+        const double t_before = s_.time;
         const bool at_record_time = advance(n);
         check_finite(s_);
         gauges_->sample(s_, out_.get());
-        if (xt_) xt_->sample(s_, *out_);
+        if (xt_) xt_->sample(s_, t_before, *out_);
         const bool last = c_.cfl_dt ? !(s_.time < c_.end) : n == schedule_.steps;
         const bool compare =
             c_.cfl_dt ? at_record_time && schedule_.compares_at(s_.time) : schedule_.compare_steps.count(n) > 0;
         if (compare && comparison_) comparison_->compare(s_, book_);
         if (due_record(n, at_record_time)) record();
         if (dumps_ && c_.md_dump_every > 0 && n % c_.md_dump_every == 0) dumps_->write(s_);
-        if (n % schedule_.energy_every == 0 || last) {
+        const bool observe_now = schedule_.energy_interval > 0.0
+                                     ? passes_multiple(t_before, s_.time, schedule_.energy_interval)
+                                     : n % schedule_.energy_every == 0;
+        if (observe_now || last) {
           check_volumes(s_);
           observe();
         }

@@ -41,12 +41,25 @@ std::vector<std::string> describe_time_step(const MpmConfig& c) {
   for (const material::Model* law : laws) {
     const material::Model::Shocked s = law->shocked(c.dim, drive);
     if (!s.from_hugoniot || !(s.wave_speed > 0.0)) continue;
-    const double limit = courant * h / (s.wave_speed + drive);
+    double limit = courant * h / (s.wave_speed + drive);
     lines.push_back(fmt::format("shocked: a planar shock at up = {:.4g} (the deck's fastest body or drive) takes {} "
                                 "to J = V/V0 = {:.4f}, where its fastest wave is {:.4g}: the step there is at most "
                                 "{:.3g} x h / (c + up) = {:.6g}{}",
                                 drive, law->name(), s.J, s.wave_speed, courant, limit,
                                 c.cfl_dt ? "" : " (the Courant number the smaller of cfl_limit and 1/sqrt(dim))"));
+    // The viscosity at the front tightens it (step_limit.hpp): Q = nu / h with the front one
+    // cell wide (the velocity falls by up over h), l the points' spacing along x and the
+    // viscosity's sound speed taken as the shocked wave speed (an upper bound).
+    const double l = smallest_cell(c) / std::max(1, c.per_cell_all[0]);
+    double Q = 0.0;
+    if (c.tensor_viscosity) Q = l * (c.c_L * s.wave_speed + c.c_q * l * drive / h) / h;
+    else if (c.viscosity > 0.0) Q = c.viscosity * s.wave_speed * l / h;
+    if (Q > 0.0) {
+      limit = courant * h / (drive + Q + std::sqrt(Q * Q + s.wave_speed * s.wave_speed));
+      lines.push_back(fmt::format("with the {} viscosity at a front one cell wide (its speed Q = {:.4g}, points {:.4g} "
+                                  "apart): at most {:.3g} x h / (up + Q + sqrt(Q^2 + c^2)) = {:.6g}",
+                                  c.tensor_viscosity ? "tensor" : "linear", Q, l, courant, limit));
+    }
     if (!c.cfl_dt && c.dt > limit)
       lines.push_back(fmt::format("warning: time.dt = {:.6g} exceeds that by {:.0f}% (Courant number {:.3f} in the "
                                   "shocked {}): the run may blow up at impact; a smaller dt, or dt = \"cfl\"",

@@ -6,12 +6,14 @@
 #include <fmt/format.h>
 
 #include "mpmx/app/mpm/output.hpp"
+#include "mpmx/app/mpm/time_rows.hpp"
 
 namespace mpmx::app {
 
 template <int Dim>
 XtDiagram<Dim>::XtDiagram(const MpmConfig& c, const mpm::Grid<Dim>& g)
-    : every_(c.xt_every > 0 ? c.xt_every : std::max<std::int64_t>(1, c.steps() / 400)) {  // dt = "cfl": the first step's
+    : every_(c.xt_every > 0 ? c.xt_every : std::max<std::int64_t>(1, c.steps() / 400)),
+      interval_(c.cfl_dt && c.xt_every == 0 ? c.end / 400.0 : 0.0) {
   header_ = "time";
   // The grid's cells where they were at t = 0: a piston carries the grid (piston_grid.hpp),
   // the table's columns stay where they are.
@@ -22,8 +24,8 @@ XtDiagram<Dim>::XtDiagram(const MpmConfig& c, const mpm::Grid<Dim>& g)
 }
 
 template <int Dim>
-void XtDiagram<Dim>::sample(const mpm::State<Dim>& s, Output& out) {
-  if (s.step % every_ != 0) return;
+void XtDiagram<Dim>::sample(const mpm::State<Dim>& s, double t_before, Output& out) {
+  if (interval_ > 0.0 ? s.step > 0 && !passes_multiple(t_before, s.time, interval_) : s.step % every_ != 0) return;
   const auto& g = s.grid;
   const auto& p = s.particles;
   std::fill(sum_.begin(), sum_.end(), 0.0);
