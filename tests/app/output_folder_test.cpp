@@ -335,7 +335,7 @@ TEST(OutputFolder, ACheckpointOfAnOlderFormatIsRefusedByItsVersion) {
   std::ofstream(cut / "checkpoint.bin", std::ios::binary | std::ios::trunc) << bytes;
   r = run_cli(fmt::format("run '{}' {} --out '{}' --resume", kWave, kRun, cut.string()));
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("format version 2, this mpmx reads version 5"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("format version 2, this mpmx reads version 6"), std::string::npos) << r.output;
 }
 
 }  // namespace output_folder_test

@@ -156,8 +156,9 @@ TEST(BoxGroups, SavedGroupsLoadWholeAndDamagedOnesAreRefused) {
   std::stringstream out;
   g.save(out);
   BoxGroups back;
-  back.load(out);
+  back.load(out, o);
   ASSERT_EQ(back.groups(), g.groups());
+  EXPECT_EQ(back.options().tolerance, 0.0);  // the deck's, not the default 1e-4
   for (std::size_t k = 0; k < g.groups(); ++k) {
     EXPECT_EQ(back.members(k), g.members(k));
     EXPECT_EQ(back.kept(k), g.kept(k));
@@ -168,5 +169,51 @@ TEST(BoxGroups, SavedGroupsLoadWholeAndDamagedOnesAreRefused) {
   }
   std::string bytes = out.str();
   std::stringstream cut(bytes.substr(0, bytes.size() / 2));
-  EXPECT_THROW(back.load(cut), InputError);
+  EXPECT_THROW(back.load(cut, o), InputError);
+}
+
+// By state: a group whose box reached an earlier group's state (shape within the room its
+// members have left, energy and stress within the noise bounds) is absorbed by the
+// earliest such group; its members carry the shapes' difference as deviation.
+TEST(BoxGroups, GroupsWhoseBoxesMeetInOneStateMerge) {
+  ShareOptions o;
+  o.tolerance = 1e-3;
+  o.by_state = true;
+  o.audit = 1;
+  BoxGroups g({0.5, 0.0, 8e-4, 0.0, 0.9, 0.9}, o);  // {0}, {1, 2, 3} (2 at 8e-4), {4, 5}
+  ASSERT_EQ(g.groups(), 3u);
+  EXPECT_EQ(g.draw_auditors(1).size(), 2u);  // one in each group of two or more
+  auto state = [](double lx, double e, double sxx) {
+    multiscale::BoxState s;
+    s.shape = {lx, 1.0, 1.0, 0.0, 0.0, 0.0};
+    s.energy = e, s.stress[0] = sxx;
+    return s;
+  };
+  // Group 1 is 5e-4 from group 0, past the room its member 2 has (1e-3 - 8e-4): it stays.
+  // Group 2 is 1e-4 from group 0 with its energy and stress within the bounds: absorbed.
+  std::vector<multiscale::BoxState> s{state(1.0, -3.5, -10.0), state(1.0005, -3.5, -10.0),
+                                      state(1.0001, -3.505, -10.9)};
+  auto m = g.merge(s);
+  ASSERT_EQ(g.groups(), 2u);
+  EXPECT_EQ(m.index, (std::vector<std::size_t>{0, 1, 0}));
+  ASSERT_EQ(m.absorbed.size(), 1u);
+  EXPECT_EQ(m.absorbed[0], (std::pair<std::size_t, std::size_t>{2, 0}));
+  EXPECT_EQ(m.size_before, (std::vector<std::size_t>{1, 3, 2}));
+  EXPECT_EQ(g.members(0), (std::vector<std::size_t>{0, 4, 5}));
+  EXPECT_EQ(g.members(1), (std::vector<std::size_t>{1, 2, 3}));
+  EXPECT_EQ(g.group_of(5), 0u);
+  EXPECT_NEAR(g.deviation(4), 1e-4, 1e-15);
+  EXPECT_EQ(m.dropped.size(), 1u);  // the absorbed group's auditor ends with its box
+  EXPECT_FALSE(g.auditor(4) || g.auditor(5));
+  // A stress past state_stress, or an energy past state_energy, keeps groups apart.
+  BoxGroups h({0.0, 0.5}, o);
+  EXPECT_TRUE(h.merge({state(1.0, -3.5, -10.0), state(1.0, -3.5, -11.1)}).absorbed.empty());
+  EXPECT_TRUE(h.merge({state(1.0, -3.5, -10.0), state(1.0, -3.52, -10.0)}).absorbed.empty());
+  EXPECT_EQ(h.merge({state(1.0, -3.5, -10.0), state(1.0, -3.5, -10.0)}).absorbed.size(), 1u);
+  // Without by_state nothing merges.
+  o.by_state = false;
+  BoxGroups off({0.0, 0.5}, o);
+  const auto none = off.merge({state(1.0, -3.5, -10.0), state(1.0, -3.5, -10.0)});
+  EXPECT_TRUE(none.absorbed.empty());
+  EXPECT_EQ(off.groups(), 2u);
 }

@@ -76,6 +76,40 @@ TEST(MdClosureCfl, WholeMdStepsLandingOnRecordsSameOnTwoThreadsAndResumed) {
     EXPECT_NE(json.find(key), std::string::npos) << key;
 }
 
+// Merges by state take part in the step like the splits: the same bytes on one and two
+// threads, and a run stopped and resumed goes on with the same groups and tallies.
+TEST(MdClosureCfl, MergesByStateSameOnTwoThreadsAndResumed) {
+  std::string text = flyer("[time]\ndt = \"cfl\"\ncfl = 0.3\nend = 0.4\n", "[output]\ntimes = [0.25]\n");
+  text.replace(text.find("[boundary]"), 10,
+               "[material.md.share]\ntolerance = 1e-3\nby_state = true\nstate_stress = 5.0\nstate_energy = 0.05\n"
+               "[boundary]");
+  const auto c = app::read_mpm_deck_text(text, "md_closure_merge");
+  const auto [one, two] = test::same_on_one_and_two_threads<2>(c, false);
+  const auto merges = std::get<std::int64_t>(test::closure_figure(one, "md.share.merges"));
+  EXPECT_GT(merges, 0);
+  EXPECT_EQ(std::get<std::int64_t>(test::closure_figure(two, "md.share.merges")), merges);
+  // Stopped before the first merge: the resumed run's groups take the deck's options (a
+  // resumed run builds no groups; they once came back with the defaults, tolerance 1e-4
+  // and no merging, and the run went on differently).
+  app::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  o.threads = 1;
+  o.out_dir = test::scratch_dir("md_closure_merge");
+  o.stop_after = 1;
+  ASSERT_TRUE(app::run_mpm_dim<2>(c, o).interrupted);
+  o.stop_after = 0;
+  o.resume = true;
+  const auto rest = app::run_mpm_dim<2>(c, o);
+  test::expect_same_particles(one.state.particles, rest.state.particles);
+  for (const char* key : {"md.share.merges", "md.share.merged_points", "md.atom_steps"})
+    EXPECT_EQ(std::get<std::int64_t>(test::closure_figure(rest, key)),
+              std::get<std::int64_t>(test::closure_figure(one, key)))
+        << key;
+  EXPECT_EQ(std::get<double>(test::closure_figure(rest, "md.share.merge_max_gpa")),
+            std::get<double>(test::closure_figure(one, "md.share.merge_max_gpa")));
+}
+
 TEST(MdClosureCfl, ARecordTimeOffTheMdStepsIsRefused) {
   try {
     app::read_mpm_deck_text(flyer("[time]\ndt = \"cfl\"\nend = 0.4\n", "[output]\ntimes = [0.2505]\n"), "off");

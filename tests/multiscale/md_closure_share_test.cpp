@@ -89,3 +89,37 @@ TEST(MdClosureShare, TheAuditMeasuresTheSharingsError) {
   EXPECT_NE(s[1], own1[0]);
   EXPECT_LT(std::abs(s[1] - own1[0]), 3.0 * m->audit_max_gpa() + 1e-12);
 }
+
+// By state: two points leave one group by different paths (past the tolerance) and come
+// back to one shape; at 0 K their boxes then hold one state and merge, and from there the
+// two points take one box's stress.
+TEST(MdClosureShare, PathsThatMeetAgainMergeByState) {
+  auto md = bar_config(true, 1e-3);
+  md.share.by_state = true;
+  // Apart by 0.08 / ps x 0.02 ps = 1.6e-3 a step: they part at the second step, the one
+  // compressed while the other expands, then the other way round until their boxes have
+  // one shape again (after five steps), then alike.
+  const double a = -0.05, b = 0.03;
+  History h(3, std::vector<double>{a, b});
+  for (int k = 0; k < 2; ++k) h.push_back({b, a});
+  for (int k = 0; k < 2; ++k) h.push_back({a, a});
+  multiscale::MdClosure<1>* m = nullptr;
+  const auto s = run_closure(md, h, {0.0, 0.0}, &m);
+  EXPECT_EQ(m->groups().groups_max(), 2u);
+  EXPECT_EQ(m->groups().groups(), 1u);
+  EXPECT_EQ(m->merges(), 1);
+  EXPECT_EQ(m->merged_points(), 1);
+  EXPECT_EQ(s[0], s[1]);
+  EXPECT_LT(m->atom_steps(), m->atom_steps_unshared());
+  // Without by_state they stay apart, each on its own box: the two paths leave the atoms
+  // in slightly different motion (0.2% apart in stress), and the merged pair takes the
+  // survivor's (point 0's box) to the last bit.
+  md.share.by_state = false;
+  multiscale::MdClosure<1>* apart = nullptr;
+  const auto u = run_closure(md, h, {0.0, 0.0}, &apart);
+  EXPECT_EQ(apart->groups().groups(), 2u);
+  EXPECT_EQ(apart->merges(), 0);
+  EXPECT_NE(u[0], u[1]);
+  EXPECT_NEAR(u[0], u[1], 0.01 * std::abs(u[0]));
+  EXPECT_EQ(s[0], u[0]);
+}

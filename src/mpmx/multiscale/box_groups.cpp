@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <istream>
 #include <iterator>
 #include <map>
@@ -125,6 +126,71 @@ BoxGroups::Split BoxGroups::split(const std::vector<Mat3>& L, double dt) {
   return out;
 }
 
+BoxGroups::Merge BoxGroups::merge(const std::vector<BoxState>& state) {
+  const std::size_t G = members_.size();
+  Merge out;
+  out.index.resize(G);
+  out.size_before.resize(G);
+  for (std::size_t g = 0; g < G; ++g) out.index[g] = g, out.size_before[g] = members_[g].size();
+  if (!opt_.enabled || !opt_.by_state || G < 2) return out;
+  constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> survivor(G, none);
+  std::multimap<double, std::size_t> live;  // the survivors by their box's lx strain
+  for (std::size_t h = 0; h < G; ++h) {
+    // The room the members have left: a merge moves them by the shapes' difference.
+    double used = 0.0;
+    for (std::size_t p : members_[h]) used = std::max(used, deviation_[p]);
+    const double room = opt_.tolerance - used;
+    const BoxState& a = state[h];
+    std::size_t best = none;
+    double moved = 0.0;
+    if (room > 0.0 && std::isfinite(a.shape[0])) {
+      for (auto it = live.lower_bound(a.shape[0] - room); it != live.end() && it->first <= a.shape[0] + room; ++it) {
+        const std::size_t g = it->second;
+        if (g > best) continue;  // the earliest survivor that fits
+        const BoxState& b = state[g];
+        double d = 0.0, ds = 0.0;
+        for (int k = 0; k < 6; ++k) d = std::max(d, std::abs(a.shape[k] - b.shape[k]));
+        for (int k = 0; k < 9; ++k) ds = std::max(ds, std::abs(a.stress[k] - b.stress[k]));
+        if (d <= room && ds <= opt_.state_stress && std::abs(a.energy - b.energy) <= opt_.state_energy)
+          best = g, moved = d;
+      }
+    }
+    if (best == none) {
+      live.emplace(a.shape[0], h);
+      continue;
+    }
+    survivor[h] = best;
+    out.absorbed.emplace_back(h, best);
+    for (std::size_t p : members_[h]) {
+      deviation_[p] += moved;
+      if (auditor_[p]) auditor_[p] = 0, out.dropped.push_back(p);
+    }
+  }
+  if (out.absorbed.empty()) return out;
+  std::sort(out.dropped.begin(), out.dropped.end());
+  std::vector<std::vector<std::size_t>> members;
+  std::vector<Mat3> kept;
+  for (std::size_t g = 0; g < G; ++g) {
+    if (survivor[g] != none) continue;
+    out.index[g] = members.size();
+    members.push_back(std::move(members_[g]));
+    kept.push_back(kept_[g]);
+  }
+  for (const auto& [h, g] : out.absorbed) {
+    out.index[h] = out.index[g];
+    auto& m = members[out.index[g]];
+    const std::size_t before = m.size();
+    m.insert(m.end(), members_[h].begin(), members_[h].end());
+    std::inplace_merge(m.begin(), m.begin() + static_cast<std::ptrdiff_t>(before), m.end());
+  }
+  members_ = std::move(members);
+  kept_ = std::move(kept);
+  for (std::size_t g = 0; g < members_.size(); ++g)
+    for (std::size_t p : members_[g]) group_of_[p] = g;
+  return out;
+}
+
 void BoxGroups::keep_means(const std::vector<Mat3>& L) {
   for (std::size_t g = 0; g < members_.size(); ++g) {
     Mat3 m{};
@@ -180,7 +246,8 @@ void BoxGroups::save(std::ostream& out) const {
   out.write(reinterpret_cast<const char*>(auditor_.data()), static_cast<std::streamsize>(auditor_.size()));
 }
 
-void BoxGroups::load(std::istream& in) {
+void BoxGroups::load(std::istream& in, const ShareOptions& options) {
+  opt_ = options;
   const std::uint64_t n = read_count(in, sizeof(double) + 1 + 8, "shared-box points");
   const std::uint64_t groups = read_count(in, 8 + 72, "shared-box groups");
   if (groups > n || (n > 0 && groups == 0)) throw InputError(fmt::format("checkpoint: {} groups of {} points", groups, n));

@@ -17,6 +17,14 @@
 // Groups never merge. Every decision reads only the gradients, the same on every rank
 // and thread: the groups are replicated, the boxes live where their group is run.
 //
+// By state (`by_state`): after the boxes step, a group whose box has reached the state of
+// an earlier group's box (shape within the members' room left under the tolerance, energy
+// per atom and stress within the boxes' noise, state_energy and state_stress) is absorbed
+// by it: its members go on with that box, each member's deviation grows by the shapes'
+// difference (so it still bounds how far the member's own history is from its box), and
+// its box ends. Behind a planar shock the points reach one state by different paths; by
+// history alone no two of them share again. Every decision reads the replicated states.
+//
 // Audits: up to `audit` members of every group of more than one point also run a private
 // box with their own gradient (not fed back); its stress against the group's is the
 // sharing's own error, measured while it runs. Auditors are drawn from the deck's seed.
@@ -32,6 +40,17 @@ struct ShareOptions {
   double tolerance = 1e-4;  // strain: the deviation a member may accumulate
   int audit = 4;            // members per group of more than one point on private boxes as well
   std::uint64_t seed = 1;   // draws the auditors
+  bool by_state = false;       // groups whose boxes reach one state merge
+  double state_stress = 1.0;   // GPa: the largest difference of a stress component in a merge
+  double state_energy = 0.01;  // eV per atom: the largest energy difference in a merge
+};
+
+// A group's box as a merge compares it: its shape (lx, ly, lz, xy, xz, yz) over the
+// unstrained box's edge, its energy per atom (eV) and its stress (GPa, box frame).
+struct BoxState {
+  std::array<double, 6> shape{};
+  double energy = 0.0;
+  std::array<double, 9> stress{};
 };
 
 class BoxGroups {
@@ -58,6 +77,18 @@ class BoxGroups {
   };
   // Steps 1-2 for this macro step's gradients (every point's, 1/ps) over dt (ps).
   Split split(const std::vector<Mat3>& L, double dt);
+  // What a merge by state changed: each old group's new index (an absorbed group's is
+  // its survivor's; the survivors keep their order), the absorbed groups with their
+  // survivors (old indices, in order), the auditors that left with their group.
+  struct Merge {
+    std::vector<std::size_t> index;
+    std::vector<std::pair<std::size_t, std::size_t>> absorbed;
+    std::vector<std::size_t> dropped;
+    std::vector<std::size_t> size_before;  // each old group's members
+  };
+  // Step 5 (by_state): groups whose boxes are in one state, `state` the boxes' after this
+  // macro step. Nothing changes without by_state (index the identity).
+  Merge merge(const std::vector<BoxState>& state);
   // Step 3: each group's mean gradient (its members' in point order), kept.
   void keep_means(const std::vector<Mat3>& L);
   // Step 4.
@@ -82,8 +113,9 @@ class BoxGroups {
   static double distance(const Mat3& a, const Mat3& b);
 
   void save(std::ostream& out) const;
-  // Throws InputError on a damaged or inconsistent record.
-  void load(std::istream& in);
+  // The groups of a saved run, under the deck's options (the record holds the groups, not
+  // the options). Throws InputError on a damaged or inconsistent record.
+  void load(std::istream& in, const ShareOptions& options);
 
  private:
   ShareOptions opt_;

@@ -179,6 +179,7 @@ md::SystemOptions MdClosure<Dim>::box_options() const {
   md::SystemOptions o;
   o.skin = cfg_.skin;
   o.mixed_precision = cfg_.mixed_precision;
+  o.deformation = cfg_.deformation;
   return o;
 }
 
@@ -466,6 +467,68 @@ void MdClosure<Dim>::update_stress(const Points<Dim>& p, double dt) {
   publish(p, failed, true, dt, injected, short_of, audit);
   atom_steps_ += (static_cast<std::int64_t>(G) + auditors) * atoms_per_point() * steps;
   atom_steps_unshared_ += static_cast<std::int64_t>(n) * atoms_per_point() * steps;
+  if (cfg_.share.by_state) apply_merge(groups_.merge(box_states()));
+}
+
+template <int Dim>
+std::vector<BoxState> MdClosure<Dim>::box_states() const {
+  const double l0 = cfg_.cells * box_lattice_constant(), m = pot_.mass(0);
+  std::vector<BoxState> s(groups_.groups());
+  for (std::size_t g = 0; g < s.size(); ++g) {
+    for (int k = 0; k < 6; ++k) s[g].shape[k] = shape_[g][k] / l0;
+    s[g].energy = energy_[g] * m;
+    s[g].stress = stress_[g];
+  }
+  return s;
+}
+
+template <int Dim>
+void MdClosure<Dim>::apply_merge(const BoxGroups::Merge& merge) {
+  if (merge.absorbed.empty()) return;
+  for (std::size_t q : merge.dropped) audits_.erase(q), audit_stress_.erase(q), audit_owed_.erase(q);
+  // Each survivor's box is owed what makes its energy (with what it owes) its members'
+  // mean over the merged boxes: the energy the continuum put into the absorbed ones is kept.
+  const double mass = atoms_per_point() * pot_.mass(0);  // amu
+  auto held = [&](std::size_t g) { return energy_[g] * mass + owed_[g]; };
+  std::map<std::size_t, std::pair<double, double>> mean;  // survivor -> (sum n E, sum n)
+  std::vector<std::uint8_t> absorbed(merge.index.size(), 0);
+  for (const auto& [h, g] : merge.absorbed) {
+    absorbed[h] = 1;
+    const double ng = static_cast<double>(merge.size_before[g]), nh = static_cast<double>(merge.size_before[h]);
+    auto& sum = mean.try_emplace(g, ng * held(g), ng).first->second;
+    sum.first += nh * held(h), sum.second += nh;
+    for (int c = 0; c < 9; ++c) {
+      const double d = stress_[h][c] - stress_[g][c];
+      merge_d2_ += d * d, merge_s2_ += stress_[g][c] * stress_[g][c];
+      merge_max_gpa_ = std::max(merge_max_gpa_, std::abs(d));
+    }
+    ++merges_;
+    merged_points_ += static_cast<std::int64_t>(merge.size_before[h]);
+    group_seconds_[g] += group_seconds_[h];
+  }
+  if (consistent() && !std::getenv("DBG_NO_OWED"))
+    for (const auto& [g, sum] : mean) owed_[g] += sum.first / sum.second - held(g);
+  const std::size_t S = groups_.groups();
+  std::vector<std::unique_ptr<md::System>> boxes(S);
+  std::vector<int> owner(S, 0);
+  std::vector<md::Mat3> stress(S);
+  std::vector<std::array<double, 7>> shape(S);
+  std::vector<double> temperature(S), energy(S), owed(S), seconds(S);
+  for (std::size_t g = 0; g < merge.index.size(); ++g) {
+    if (absorbed[g]) continue;  // its box ends here
+    const std::size_t k = merge.index[g];
+    boxes[k] = std::move(boxes_[g]);
+    owner[k] = owner_[g], stress[k] = stress_[g], shape[k] = shape_[g];
+    temperature[k] = temperature_[g], energy[k] = energy_[g], owed[k] = owed_[g], seconds[k] = group_seconds_[g];
+  }
+  boxes_ = std::move(boxes);
+  owner_ = std::move(owner);
+  stress_ = std::move(stress);
+  shape_ = std::move(shape);
+  temperature_ = std::move(temperature);
+  energy_ = std::move(energy);
+  owed_ = std::move(owed);
+  group_seconds_ = std::move(seconds);
 }
 
 // R <- C(W dt) R C(W' dt)^T: the crystal turns with the point's spin W, the box's with
@@ -720,6 +783,9 @@ void MdClosure<Dim>::save(std::ostream& out) const {
   // shape and last stress (the next step's sigma^n): the same on every rank.
   for (const double v : {injected_ev_, audit_d2_, audit_s2_, audit_max_gpa_}) write_raw(out, v);
   write_raw(out, audit_samples_);
+  for (const double v : {merge_d2_, merge_s2_, merge_max_gpa_}) write_raw(out, v);
+  write_raw(out, merges_);
+  write_raw(out, merged_points_);
   for (const auto& r : rotation_) out.write(reinterpret_cast<const char*>(r.data()), sizeof(double) * 9);
   for (const auto& s : stress_) out.write(reinterpret_cast<const char*>(s.data()), sizeof(double) * 9);
   for (const auto& s : shape_) out.write(reinterpret_cast<const char*>(s.data()), sizeof(double) * 7);
@@ -740,7 +806,7 @@ void MdClosure<Dim>::load(std::istream& in) {
   read_raw(in, atom_steps_unshared_);
   read_raw(in, macro_step_);
   if (!in) throw InputError("checkpoint: the MD boxes are truncated");
-  groups_.load(in);
+  groups_.load(in, cfg_.share);  // a resumed run has not built its groups: their options are the deck's
   if (groups_.points() != n)
     throw InputError(fmt::format("checkpoint: the groups hold {} points, the boxes {}", groups_.points(), n));
   const std::size_t G = groups_.groups();
@@ -780,6 +846,9 @@ void MdClosure<Dim>::load(std::istream& in) {
   }
   for (double* v : {&injected_ev_, &audit_d2_, &audit_s2_, &audit_max_gpa_}) read_raw(in, *v);
   read_raw(in, audit_samples_);
+  for (double* v : {&merge_d2_, &merge_s2_, &merge_max_gpa_}) read_raw(in, *v);
+  read_raw(in, merges_);
+  read_raw(in, merged_points_);
   rotation_.assign(n, md::Mat3{});
   stress_.assign(G, md::Mat3{});
   shape_.assign(G, {});
@@ -898,6 +967,14 @@ std::vector<material::Figure> MdClosure<Dim>::figures() const {
   if (audit_samples_ > 0) {
     f.emplace_back("md.share.audit_rel_rms", audit_rel_rms());
     f.emplace_back("md.share.audit_max_gpa", audit_max_gpa());
+  }
+  if (cfg_.share.by_state) {
+    f.emplace_back("md.share.merges", merges_);
+    f.emplace_back("md.share.merged_points", merged_points_);
+    if (merges_ > 0) {
+      f.emplace_back("md.share.merge_rel_rms", merge_s2_ > 0.0 ? std::sqrt(merge_d2_ / merge_s2_) : 0.0);
+      f.emplace_back("md.share.merge_max_gpa", merge_max_gpa_);
+    }
   }
   return f;
 }

@@ -74,6 +74,10 @@ struct MdClosureConfig {
   multiscale::StressSample sample = multiscale::StressSample::last;
   double skin = 1.0;               // Angstrom
   bool mixed_precision = false;
+  // How a box follows its gradient (md/system.hpp): the seed's boundary scheme (the images
+  // move, the atoms feel it through the faces) or affine (every atom's position remapped
+  // each step). At the jet's front rates the boundary scheme shocks the box from its faces.
+  md::Deformation deformation = md::Deformation::boundary;
   units::UnitSystem units{"nm_ps_GPa", 10.0, 1.0, 1.0};
   int threads = 0;                 // 0: OpenMP default
   int energy_consistency = -1;     // eq. 7.11: 1 on, 0 off, -1 the default (on in 2-D and 3-D)
@@ -184,13 +188,21 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   // and what could not be taken from a box with too little thermal energy.
   double energy_injected_ev() const { return injected_ev_; }
   // What the boxes still owe of eq. 7.11's removals (eV, >= 0): carried, not lost.
-  double energy_shortfall_ev() const { return -std::accumulate(owed_.begin(), owed_.end(), 0.0); }
+  // (A merge by state may owe a box energy too, put in at its next step: not counted.)
+  double energy_shortfall_ev() const {
+    return -std::accumulate(owed_.begin(), owed_.end(), 0.0, [](double s, double o) { return s + std::min(o, 0.0); });
+  }
   // Neighbour-list builds of every box since it was made (all ranks, at the last step).
   std::int64_t neighbor_builds() const { return neighbor_builds_; }
   // The audit: the auditors' private stress against their groups', relative RMS over
   // the run and the largest difference of a component (GPa); NaN before any.
   double audit_rel_rms() const;
   double audit_max_gpa() const { return audit_samples_ > 0 ? audit_max_gpa_ : std::nan(""); }
+  // Merges by state: how many groups were absorbed, how many points moved with them, and
+  // the absorbed boxes' stress against their survivors' at the merge (relative RMS, the
+  // largest component difference in GPa).
+  std::int64_t merges() const { return merges_; }
+  std::int64_t merged_points() const { return merged_points_; }
 
  private:
   md::SystemOptions box_options() const;
@@ -202,6 +214,11 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   // them), new auditors' private boxes, dropped ones ended.
   void apply_split(const BoxGroups::Split& split);
   void start_audits(const std::vector<std::size_t>& points);
+  // Step 5 (share.by_state): every group's box state, then the merge applied: the absorbed
+  // boxes end, each survivor owes its box the energy that makes it its members' mean
+  // (eq. 7.11's bookkeeping, carried into its next step), the per-group arrays compacted.
+  std::vector<BoxState> box_states() const;
+  void apply_merge(const BoxGroups::Merge& merge);
   // Advances group g's box (or auditor q's, with `audit`) by steps under gradient L;
   // returns what eq. 7.11 put in and could not take out.
   // Eq. 7.11's power on a box: the rate of deformation in the box's frame (1/ps), which
@@ -248,6 +265,8 @@ class MdClosure final : public Material<Dim>, public material::Subscale {
   std::int64_t neighbor_builds_ = 0;
   double audit_d2_ = 0.0, audit_s2_ = 0.0, audit_max_gpa_ = 0.0;
   std::int64_t audit_samples_ = 0;
+  std::int64_t merges_ = 0, merged_points_ = 0;
+  double merge_d2_ = 0.0, merge_s2_ = 0.0, merge_max_gpa_ = 0.0;
   std::optional<PreparedLattice> prepared_;          // prepare = npt, from initialize (or the checkpoint)
   // MPMX_TEST_NAN_POINT: the point whose stress comes back NaN (tests only).
   std::optional<std::size_t> nan_point_;

@@ -209,6 +209,8 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   md.skin = s.number("skin", 1.0);
   s.non_negative("skin", md.skin);
   md.mixed_precision = s.choice("precision", {"double", "mixed"}, "double") == "mixed";
+  md.deformation = s.choice("deformation", {"boundary", "affine"}, "boundary") == "affine" ? md::Deformation::affine
+                                                                                       : md::Deformation::boundary;
   if (s.has("energy_consistency")) md.energy_consistency = s.boolean("energy_consistency", true) ? 1 : 0;
   // [material.md.share]: boxes shared by history (multiscale/box_groups.hpp).
   auto share_table = s.optional_sub("share");
@@ -217,6 +219,11 @@ std::shared_ptr<const Model> MdClosureEntry::read(Table& m, const Context& ctx) 
   md.share.tolerance = share.number("tolerance", md.share.tolerance);
   share.non_negative("tolerance", md.share.tolerance);
   md.share.audit = share.integer_int("audit", md.share.audit, 0, 1000);
+  md.share.by_state = share.boolean("by_state", md.share.by_state);
+  md.share.state_stress = share.number("state_stress", md.share.state_stress);
+  share.positive("state_stress", md.share.state_stress);
+  md.share.state_energy = share.number("state_energy", md.share.state_energy);
+  share.positive("state_energy", md.share.state_energy);
   md.share.seed = md.seed;
   // The crystal's constants from the potential, once every key of the deck is read (the
   // reader's `later`). prepare = npt's NPT box is the run's to run (prepared()), not the

@@ -29,7 +29,8 @@ void each_array(Particles<Dim>& p, F&& f) {
 io::CheckedKind run_checkpoint_kind(const std::string& deck_text, std::size_t points) {
   // 2: sigma_zz in 2-D, the body force's work; 3: the input files' digests; 4: what each MD box owes of eq. 7.11;
   // 5: the steps' log (dt = "cfl")
-  return {"mpm_run", 5, io::text_hash(deck_text), points};
+  // 6: md_closure's merges by state (their tallies)
+  return {"mpm_run", 6, io::text_hash(deck_text), points};
 }
 
 template <int Dim>
