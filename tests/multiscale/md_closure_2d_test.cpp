@@ -136,12 +136,7 @@ TEST(MdClosure2d, SameParticlesOnOneAndTwoThreadsAndResumedBitForBit) {
     if (one.state.particles.x[0][q] < 0.9) v_flyer = std::max(v_flyer, one.state.particles.v[0][q]);
   EXPECT_LT(v_flyer, 0.5);
 
-  app::RunOptions o;
-  o.quiet = true;
-  o.plot = false;
-  o.threads = 2;
-  o.out_dir = test::scratch_dir("md_closure_2d_parts");
-  o.stop_after = 2;
+  app::RunOptions o = test::stopping_run("md_closure_2d_parts", 2, 2);
   const auto first = app::run_mpm_dim<2>(c, o);
   EXPECT_TRUE(first.interrupted);
   o.stop_after = 0;

@@ -53,12 +53,7 @@ TEST(MdClosureCfl, WholeMdStepsLandingOnRecordsSameOnTwoThreadsAndResumed) {
   EXPECT_EQ(one.time_steps, two.time_steps);
 
   // Records at 0.25 and 0.4 exactly; stopped after 3 steps and resumed, the same bits.
-  app::RunOptions o;
-  o.quiet = true;
-  o.plot = false;
-  o.threads = 1;
-  o.out_dir = test::scratch_dir("md_closure_cfl");
-  o.stop_after = 3;
+  app::RunOptions o = test::stopping_run("md_closure_cfl", 3);
   const auto first = app::run_mpm_dim<2>(c, o);
   ASSERT_TRUE(first.interrupted);
   o.stop_after = 0;
@@ -91,12 +86,7 @@ TEST(MdClosureCfl, MergesByStateSameOnTwoThreadsAndResumed) {
   // Stopped before the first merge: the resumed run's groups take the deck's options (a
   // resumed run builds no groups; they once came back with the defaults, tolerance 1e-4
   // and no merging, and the run went on differently).
-  app::RunOptions o;
-  o.quiet = true;
-  o.plot = false;
-  o.threads = 1;
-  o.out_dir = test::scratch_dir("md_closure_merge");
-  o.stop_after = 1;
+  app::RunOptions o = test::stopping_run("md_closure_merge", 1);
   ASSERT_TRUE(app::run_mpm_dim<2>(c, o).interrupted);
   o.stop_after = 0;
   o.resume = true;

@@ -113,6 +113,18 @@ inline std::string scratch_dir(const std::string& name) {
   return d.string();
 }
 
+// A quiet run without figures into a fresh scratch folder `name` on `threads` threads,
+// stopped with a checkpoint after `stop_after` steps (0: to the end).
+inline app::RunOptions stopping_run(const std::string& name, std::int64_t stop_after, int threads = 1) {
+  app::RunOptions o;
+  o.quiet = true;
+  o.plot = false;
+  o.threads = threads;
+  o.out_dir = scratch_dir(name);
+  o.stop_after = stop_after;
+  return o;
+}
+
 // A whole file as text ("" when absent).
 inline std::string read_file(const std::string& path) {
   std::ifstream f(path);

@@ -14,8 +14,9 @@
 //      member leaves, the first new group keeps the old box itself);
 //   3. each group's box steps with its members' mean gradient, which it keeps;
 //   4. every member accumulates its deviation D_p += |L_p - L_box| dt (a strain).
-// Groups never merge. Every decision reads only the gradients, the same on every rank
-// and thread: the groups are replicated, the boxes live where their group is run.
+// Without by_state groups never merge. Every decision reads replicated numbers (the
+// gradients, and with by_state the boxes' published states), the same on every rank and
+// thread: the groups are replicated, the boxes live where their group is run.
 //
 // By state (`by_state`): after the boxes step, a group whose box has reached the state of
 // an earlier group's box (shape within the members' room left under the tolerance, energy
