@@ -506,7 +506,7 @@ void MdClosure<Dim>::apply_merge(const BoxGroups::Merge& merge) {
     merged_points_ += static_cast<std::int64_t>(merge.size_before[h]);
     group_seconds_[g] += group_seconds_[h];
   }
-  if (consistent() && !std::getenv("DBG_NO_OWED"))
+  if (consistent())
     for (const auto& [g, sum] : mean) owed_[g] += sum.first / sum.second - held(g);
   const std::size_t S = groups_.groups();
   std::vector<std::unique_ptr<md::System>> boxes(S);
