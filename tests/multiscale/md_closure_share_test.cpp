@@ -123,3 +123,37 @@ TEST(MdClosureShare, PathsThatMeetAgainMergeByState) {
   EXPECT_NEAR(u[0], u[1], 0.01 * std::abs(u[0]));
   EXPECT_EQ(s[0], u[0]);
 }
+
+// A merge of hot boxes keeps their members' mean energy (eq. 7.11's books, 1-D with the
+// consistency on): two 300 K points part and meet again as above, their boxes now at
+// different energies (their paths heated them differently); the survivor is owed what
+// makes it their mean, and a macro step at rest puts exactly that into it.
+TEST(MdClosureShare, AMergeOfHotBoxesKeepsTheirMembersMeanEnergy) {
+  auto md = test::closure_config(test::tiny_bar(4, 2, 2, 300.0));
+  md.threads = 1;
+  md.share.tolerance = 1e-3;
+  md.share.audit = 0;
+  md.share.state_stress = 1e3;  // any state: the merge comes when the shapes meet
+  md.share.state_energy = 1e3;
+  md.energy_consistency = 1;
+  const double a = -0.05, b = 0.03;
+  History h(3, std::vector<double>{a, b});
+  for (int k = 0; k < 2; ++k) h.push_back({b, a});
+  auto energy = [](const md::System& box) { return box.potential_energy() + box.thermal_kinetic_energy(); };
+  // Apart: both boxes after the five steps, as the merging run has them before it merges.
+  multiscale::MdClosure<1>* apart = nullptr;
+  run_closure(md, h, {0.0, 0.0}, &apart);
+  ASSERT_EQ(apart->groups().groups(), 2u);
+  ASSERT_EQ(apart->energy_shortfall_ev(), 0.0);  // nothing owed: each box holds its energy
+  const double e0 = energy(*apart->box(0)), e1 = energy(*apart->box(1));
+  // Two paths, two energies (1.4e-3 eV apart in 111 eV), far beyond the check's 1e-9.
+  EXPECT_GT(std::abs(e0 - e1), 1e-5 * std::abs(e0));
+  // Merged at the fifth step's end, then a step at rest (no work): the survivor holds the mean.
+  md.share.by_state = true;
+  h.push_back({0.0, 0.0});
+  multiscale::MdClosure<1>* merged = nullptr;
+  run_closure(md, h, {0.0, 0.0}, &merged);
+  ASSERT_EQ(merged->merges(), 1);
+  ASSERT_EQ(merged->groups().groups(), 1u);
+  EXPECT_NEAR(energy(*merged->box(0)), 0.5 * (e0 + e1), 1e-9 * std::abs(e0));
+}

@@ -11,6 +11,7 @@
 #include <optional>
 #include <ostream>
 #include <sstream>
+#include <type_traits>
 
 #include <Eigen/Dense>
 #include <fmt/format.h>
@@ -508,27 +509,21 @@ void MdClosure<Dim>::apply_merge(const BoxGroups::Merge& merge) {
   }
   if (consistent())
     for (const auto& [g, sum] : mean) owed_[g] += sum.first / sum.second - held(g);
-  const std::size_t S = groups_.groups();
-  std::vector<std::unique_ptr<md::System>> boxes(S);
-  std::vector<int> owner(S, 0);
-  std::vector<md::Mat3> stress(S);
-  std::vector<std::array<double, 7>> shape(S);
-  std::vector<double> temperature(S), energy(S), owed(S), seconds(S);
-  for (std::size_t g = 0; g < merge.index.size(); ++g) {
-    if (absorbed[g]) continue;  // its box ends here
-    const std::size_t k = merge.index[g];
-    boxes[k] = std::move(boxes_[g]);
-    owner[k] = owner_[g], stress[k] = stress_[g], shape[k] = shape_[g];
-    temperature[k] = temperature_[g], energy[k] = energy_[g], owed[k] = owed_[g], seconds[k] = group_seconds_[g];
-  }
-  boxes_ = std::move(boxes);
-  owner_ = std::move(owner);
-  stress_ = std::move(stress);
-  shape_ = std::move(shape);
-  temperature_ = std::move(temperature);
-  energy_ = std::move(energy);
-  owed_ = std::move(owed);
-  group_seconds_ = std::move(seconds);
+  // Every per-group array keeps its survivors at their new indices (an absorbed box ends).
+  auto compact = [&](auto& v) {
+    std::remove_reference_t<decltype(v)> kept(groups_.groups());
+    for (std::size_t g = 0; g < merge.index.size(); ++g)
+      if (!absorbed[g]) kept[merge.index[g]] = std::move(v[g]);
+    v = std::move(kept);
+  };
+  compact(boxes_);
+  compact(owner_);
+  compact(stress_);
+  compact(shape_);
+  compact(temperature_);
+  compact(energy_);
+  compact(owed_);
+  compact(group_seconds_);
 }
 
 // R <- C(W dt) R C(W' dt)^T: the crystal turns with the point's spin W, the box's with

@@ -69,6 +69,12 @@ struct Schedule {
     compare_times = c.reference.times;
   }
 
+  // Whether step n, from t0 to t1, checks the energy and volumes: every energy_every
+  // steps, or with dt = "cfl" at each 1/2000 of the run's time.
+  bool observes(std::int64_t n, double t0, double t1) const {
+    return energy_interval > 0.0 ? passes_multiple(t0, t1, energy_interval) : n % energy_every == 0;
+  }
+
   // dt = "cfl": whether the step that landed at t landed on a reference time.
   bool compares_at(double t) const {
     for (double r : compare_times)
@@ -152,10 +158,7 @@ class ContinuumRun {
         if (compare && comparison_) comparison_->compare(s_, book_);
         if (due_record(n, at_record_time)) record();
         if (dumps_ && c_.md_dump_every > 0 && n % c_.md_dump_every == 0) dumps_->write(s_);
-        const bool observe_now = schedule_.energy_interval > 0.0
-                                     ? passes_multiple(t_before, s_.time, schedule_.energy_interval)
-                                     : n % schedule_.energy_every == 0;
-        if (observe_now || last) {
+        if (schedule_.observes(n, t_before, s_.time) || last) {
           check_volumes(s_);
           observe();
         }

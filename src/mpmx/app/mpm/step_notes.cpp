@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "mpmx/app/mpm/signal_speed.hpp"
+#include "mpmx/mpm/tensor_viscosity.hpp"
 
 namespace mpmx::app {
 
@@ -48,12 +49,15 @@ std::vector<std::string> describe_time_step(const MpmConfig& c) {
                                 drive, law->name(), s.J, s.wave_speed, courant, limit,
                                 c.cfl_dt ? "" : " (the Courant number the smaller of cfl_limit and 1/sqrt(dim))"));
     // The viscosity at the front tightens it (step_limit.hpp): Q = nu / h with the front one
-    // cell wide (the velocity falls by up over h), l the points' spacing along x and the
+    // cell wide (a uniaxial gradient -up / h), l the points' spacing along x and the
     // viscosity's sound speed taken as the shocked wave speed (an upper bound).
-    const double l = smallest_cell(c) / std::max(1, c.per_cell_all[0]);
+    const double l = h / std::max(1, c.per_cell_all[0]);
     double Q = 0.0;
-    if (c.tensor_viscosity) Q = l * (c.c_L * s.wave_speed + c.c_q * l * drive / h) / h;
-    else if (c.viscosity > 0.0) Q = c.viscosity * s.wave_speed * l / h;
+    if (c.tensor_viscosity)
+      Q = mpm::tensor_viscosity_coefficient<1>(Eigen::Matrix<double, 1, 1>(-drive / h), l, s.wave_speed, c.c_L,
+                                               c.c_q) / h;
+    else if (c.viscosity > 0.0)
+      Q = c.viscosity * s.wave_speed * l / h;  // the linear form's nu = coef a l
     if (Q > 0.0) {
       limit = courant * h / (drive + Q + std::sqrt(Q * Q + s.wave_speed * s.wave_speed));
       lines.push_back(fmt::format("with the {} viscosity at a front one cell wide (its speed Q = {:.4g}, points {:.4g} "
