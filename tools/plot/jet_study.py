@@ -40,7 +40,7 @@ import jet_compare  # noqa: E402
 
 # Table 7.1 (dissertation sec. 7.3): eq. 7.12 at t = 20 ps, percent.
 SEED = [24.7, 10.1, 9.8, 6.0, 5.6, None, None]
-SCALES = {"tiny": 0.05, "s0p1": 0.1, "full": 1.0}
+SCALES = {"tiny": 0.05, "s0p05": 0.05, "s0p1": 0.1, "s0p2": 0.2, "s0p5": 0.5, "full": 1.0}
 
 
 def fail(msg):
