@@ -50,7 +50,7 @@ demo: deps
 # -march=native for the code outside the vector kernels; the 1-D and MD kernels pick
 # their path at run time whatever the build, and their benches time each path this
 # machine has.
-# The copper-jet study (Table 7.1, docs/jet.md): make jet-study SCALE=s0p1 (or tiny, full).
+# The copper-jet study (Table 7.1, docs/jet.md): make jet-study SCALE=s0p1 (or tiny, s0p05, s0p2, s0p5, full).
 SCALE ?= s0p1
 jet-study: build
 	scripts/jet-study --scale $(SCALE) --build $(BUILD)

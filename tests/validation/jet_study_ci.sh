@@ -8,13 +8,16 @@
 # the DDMP-MD rows with fewer atom-steps than one box per point, and the figures written;
 # and every row's eq. 7.12 recomputed from its particle output and the direct MD's bins by
 # tools/check_eq712.py (not the run's code), agreeing with run.json to four digits; that
-# check is shown to fail on a figure 1e-3 off and on bins 1% off.
+# check is shown to fail on a figure 1e-3 off and on bins 1% off. Last, the direct MD's
+# reference pack (scripts/jet-reference-pack) at the rows' compared times gives every
+# row the same figures as the whole run, and a time without a record is refused with
+# nothing written.
 set -euo pipefail
 src=$1 build=$2 work=$3
 rm -rf "$work"
 mkdir -p "$work/scripts" "$work/tools"
 cp -r "$src/examples" "$work/examples"
-cp "$src/scripts/jet-study" "$work/scripts/"
+cp "$src/scripts/jet-study" "$src/scripts/jet-reference-pack" "$work/scripts/"
 cp -r "$src/tools/plot" "$work/tools/plot"
 cp "$src/tools/check_eq712.py" "$work/tools/"
 "$work/scripts/jet-study" --scale tiny --threads 2 --build "$build"
@@ -79,3 +82,18 @@ for f in "$md"/bins/*.csv; do
 done
 expect_fail "$row" "$bad/md" "bins with sxx 1% larger"
 echo "jet_study_ci: eq. 7.12 recomputed for every row; the check catches a perturbed figure and perturbed bins"
+pack=$work/data/J1_direct_md_tiny
+times=$(sed -n 's/^times = \[\(.*\)\]/\1/p' "$work"/examples/*_tiny.toml | tr ',' '\n' | tr -d ' ' | sort -gu)
+# shellcheck disable=SC2086
+"$work/scripts/jet-reference-pack" "$md" "$pack" $times
+[ "$(ls "$pack/bins" | wc -l)" = "$(wc -w <<<"$times")" ] || { echo "jet_study_ci: the pack's records" >&2; exit 1; }
+[ "$(head -1 "$(ls -d "$pack"/bins/*.csv | head -1)")" = "ix,iy,x_A,y_A,atoms,density_g_cm3,temperature_K,vx_km_s,vy_km_s,sxx_GPa" ] ||
+  { echo "jet_study_ci: the pack's columns" >&2; exit 1; }
+for row in "$study"/J[234]_*/; do
+  /usr/bin/python3 "$check" "${row%/}" --md "$pack" >/dev/null
+done
+rc=0
+"$work/scripts/jet-reference-pack" "$md" "$work/data/bad_pack" 0.5 0.77 2>/dev/null || rc=$?
+[ "$rc" = 2 ] && [ ! -e "$work/data/bad_pack" ] && [ -z "$(ls -d "$work"/data/bad_pack.staging.* 2>/dev/null)" ] ||
+  { echo "jet_study_ci: a pack at a time without a record: exit $rc, or something left" >&2; exit 1; }
+echo "jet_study_ci: the reference pack at $(echo $times) ps gives every row's eq. 7.12"
