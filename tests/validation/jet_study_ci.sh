@@ -97,3 +97,20 @@ rc=0
 [ "$rc" = 2 ] && [ ! -e "$work/data/bad_pack" ] && [ -z "$(ls -d "$work"/data/bad_pack.staging.* 2>/dev/null)" ] ||
   { echo "jet_study_ci: a pack at a time without a record: exit $rc, or something left" >&2; exit 1; }
 echo "jet_study_ci: the reference pack at $(echo $times) ps gives every row's eq. 7.12"
+# The scale study's tool (tools/plot/jet_scale.py) on the two 10 x 5 rows: a line each,
+# each front within 30% of the direct MD's at the scaled 10 ps (measured: +4.7% and
+# -16.9%), the figure, and the figure again from the table alone.
+scale=$work/jet_scale
+/usr/bin/python3 "$work/tools/plot/jet_scale.py" --out "$scale" "$study/J3_ddmp_md_10x5_1ppc:$md" \
+  "$study/J3_ddmp_md_10x5_4ppc:$md"
+/usr/bin/python3 - "$scale.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert [int(float(r["per_cell"])) for r in rows] == [1, 4], rows
+for r in rows:
+    ratio = float(r["front_row_nm"]) / float(r["front_md_nm"])
+    assert 0.7 < ratio < 1.3 and float(r["scale"]) == 0.05, r
+PY
+rm "$scale.png"
+/usr/bin/python3 "$work/tools/plot/jet_scale.py" --out "$scale" --replot "$scale.csv" >/dev/null
+[ -s "$scale.png" ] || { echo "jet_study_ci: jet_scale.py --replot wrote no figure" >&2; exit 1; }
