@@ -100,7 +100,7 @@ TEST(MpmBudget, MdBoxesBeyondTheMachineNameTheDeckAndTheRanks) {
   // The J2 jet at s = 0.1 with 20^3-cell boxes (32,000 atoms a point): 5e8 atoms.
   std::string t = test::slurp(test::example("J2_ddmp_md_100x50_4ppc_s0p1.toml"));
   t.replace(t.find("\ncells = 5"), 10, "\ncells = 20");
-  t.replace(t.find("\"../runs/"), 9, "\"" + std::string(MPMX_SOURCE_DIR) + "/runs/");
+  t.replace(t.find("\"../data/"), 9, "\"" + std::string(MPMX_SOURCE_DIR) + "/data/");
   const std::string d = test::scratch_file("md_mem.toml", t).string();
   const auto r = mpmx_outcome(fmt::format("check '{}'", d));
   EXPECT_EQ(r.code, 2) << r.err;
