@@ -58,7 +58,8 @@ TEST(JetReferencePack, TheCoarseRowsEq712FromTheCommittedBins) {
 TEST(JetReferencePack, EachScaleHasItsComparedTimes) {
   // The scaled 10 and 20 ps of Table 7.1 at each kept scale (s = 0.1 also the J2 row's 30).
   for (const auto& [name, s] : std::map<std::string, double>{
-           {"J1_direct_md_s0p05", 0.05}, {"J1_direct_md_s0p1", 0.1}, {"J1_direct_md_s0p2", 0.2}}) {
+           {"J1_direct_md_s0p05", 0.05}, {"J1_direct_md_s0p1", 0.1}, {"J1_direct_md_s0p2", 0.2},
+           {"J1_direct_md_s0p5", 0.5}}) {
     SCOPED_TRACE(name);
     const auto jet = reference::JetHistory::read((kData / name).string());
     EXPECT_TRUE(jet.has(10 * s));
