@@ -14,10 +14,10 @@
 // What the copy changes: a [reference] that names a file not in the checkout (a direct-MD
 // run under ../runs, which `mpmx run` refuses to start without: "reference.file ... is
 // not there yet") is dropped, the analytic references and the reference packs under
-// ../data stay; file names relative to examples/ are made absolute; the big MD decks record sooner (plans()), so that their first record,
-// where md stops, comes after a few steps; fit-dpd's isotherm samples fewer steps. run,
-// md and dpd get --force: the full-size decks' work estimates are over the day a run
-// takes without it. Each case prints its cost ("[   cost   ]": steps, CPU seconds);
+// ../data stay; file names relative to examples/ are made absolute; the big MD decks
+// record sooner (plans()), so that their first record, where md stops, comes after a few
+// steps; fit-dpd's isotherm samples fewer steps. run, md and dpd get --force: the
+// full-size decks' work estimates are over the day a run takes without it. Each case prints its cost ("[   cost   ]": steps, CPU seconds);
 // docs/validation.md has the table.
 #include <sys/resource.h>
 
