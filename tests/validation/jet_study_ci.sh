@@ -111,6 +111,26 @@ for r in rows:
     ratio = float(r["front_row_nm"]) / float(r["front_md_nm"])
     assert 0.7 < ratio < 1.3 and float(r["scale"]) == 0.05, r
 PY
+# The front on hand-made profiles: a wall column at rest before a noisy plateau (the front
+# read after it, at the half-plateau crossing between the columns at 4.75 and 5.25 nm), and one shocked to
+# its end (refused, not read at its last column).
+/usr/bin/python3 - "$work/tools/plot" <<'PY'
+import sys
+import numpy as np
+sys.path.insert(0, sys.argv[1])
+import jet_scale
+x = np.arange(0.25, 10.0, 0.5)
+rng = np.random.default_rng(7)
+sxx = np.where(x < 5.2, -170.0 + rng.normal(0.0, 8.0, x.size), -0.5)
+sxx[0] = 1.0
+front, plateau = jet_scale.front_of(x, sxx)
+assert 4.75 < front < 5.25 and abs(plateau + 170.0) < 10.0, (front, plateau)
+try:
+    jet_scale.front_of(x, np.full(x.size, -170.0))
+    sys.exit("jet_study_ci: a profile shocked to its end gave a front")
+except jet_scale.Bad:
+    pass
+PY
 rm "$scale.png"
 /usr/bin/python3 "$work/tools/plot/jet_scale.py" --out "$scale" --replot "$scale.csv" >/dev/null
 [ -s "$scale.png" ] || { echo "jet_study_ci: jet_scale.py --replot wrote no figure" >&2; exit 1; }

@@ -50,16 +50,16 @@ def front_of(x, sxx):
     shocked = np.nonzero(sxx < -50.0)[0]
     if len(shocked) == 0:
         raise Bad("no shocked column (sigma_xx < -50 GPa)")
-    first_rise = shocked[-1]
-    for k in range(len(sxx)):
-        if sxx[k] >= -50.0:
-            first_rise = k
-            break
-    x_rise = x[first_rise]
-    band = (x >= 0.25 * x_rise) & (x <= 0.75 * x_rise)
-    plateau = float(np.median(sxx[band])) if band.any() else float(sxx[0])
+    start = shocked[0]
+    rise = next((k for k in range(start, len(sxx)) if sxx[k] >= -50.0), None)
+    if rise is None:
+        raise Bad("the profile is shocked to its end: no front in it")
+    band = (x >= 0.25 * x[rise]) & (x <= 0.75 * x[rise])
+    if not band.any():
+        raise Bad(f"no column behind the front at {x[rise]:.3g} nm to take the plateau from")
+    plateau = float(np.median(sxx[band]))
     half = 0.5 * plateau
-    for k in range(len(sxx) - 1):
+    for k in range(start, len(sxx) - 1):
         if sxx[k] < half <= sxx[k + 1]:
             return x[k] + (half - sxx[k]) / (sxx[k + 1] - sxx[k]) * (x[k + 1] - x[k]), plateau
     raise Bad("the profile does not cross half its plateau")
