@@ -112,8 +112,8 @@ for r in rows:
     assert 0.7 < ratio < 1.3 and float(r["scale"]) == 0.05, r
 PY
 # The front on hand-made profiles: a wall column at rest before a noisy plateau (the front
-# read after it, at the half-plateau crossing between the columns at 4.75 and 5.25 nm), and one shocked to
-# its end (refused, not read at its last column).
+# read after it, at the half-plateau crossing between the columns at 4.75 and 5.25 nm),
+# and one shocked to its end (refused, not read at its last column).
 /usr/bin/python3 - "$work/tools/plot" <<'PY'
 import sys
 import numpy as np
